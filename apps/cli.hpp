@@ -1,0 +1,29 @@
+#pragma once
+/// @file cli.hpp
+/// Shared plumbing of the wattswath command-line tool: command registration, output, errors.
+/// Each subcommand lives in its own apps/cmd_*.cpp and exposes a register function.
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+namespace wattswath::apps {
+
+/// Prints `j` as one JSON object on stdout (the --json contract).
+void printJson(const nlohmann::json& j);
+
+/// Adds the common `--vehicle FILE` option (required) to `cmd`, storing into `path`.
+CLI::Option* addVehicleOption(CLI::App* cmd, std::string& path);
+
+/// Adds the common `--json` flag to `cmd`.
+CLI::Option* addJsonFlag(CLI::App* cmd, bool& json);
+
+/// Prints a progress line on stderr (never on stdout, which --json owns).
+void progress(const std::string& message);
+
+// Register functions: one per apps/cmd_*.cpp. main.cpp calls each.
+void registerEnergyCommands(CLI::App& app);  ///< hover, vopt, leg, turns (cmd_energy.cpp)
+
+}  // namespace wattswath::apps

@@ -1,0 +1,234 @@
+#include "wattswath/energy/vehicle.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace wattswath::energy {
+namespace {
+
+using nlohmann::json;
+
+std::string prefix(const std::string& source) { return source.empty() ? "" : source + ": "; }
+
+std::string fmt(double x) {
+  std::ostringstream os;
+  os.precision(10);
+  os << x;
+  return os.str();
+}
+
+void requireRange(const std::string& source, const char* field, double value, double lo, bool lo_open,
+                  double hi, bool hi_open, const char* expected) {
+  const bool ok = std::isfinite(value) && (lo_open ? value > lo : value >= lo) &&
+                  (hi_open ? value < hi : value <= hi);
+  if (!ok) {
+    throw std::invalid_argument(prefix(source) + "field '" + field + "' = " + fmt(value) +
+                                ", expected " + expected);
+  }
+}
+
+const std::set<std::string>& knownVehicleKeys() {
+  static const std::set<std::string> keys = {
+      "name", "description", "source", "mass_kg", "rotor_count", "rotor_diameter_m", "disk_area_m2",
+      "motor_efficiency", "propeller_efficiency", "drag_area_m2", "max_acceleration_mps2",
+      "max_yaw_rate_radps", "max_speed_mps", "air_density_kgpm3", "gravity_mps2", "battery",
+      "extensions"};
+  return keys;
+}
+
+const std::set<std::string>& knownBatteryKeys() {
+  static const std::set<std::string> keys = {
+      "capacity_ah", "rated_discharge_time_s", "voltage_full_v", "voltage_standard_v", "mass_kg",
+      "usable_fraction", "peukert_exponent", "series", "parallel", "description"};
+  return keys;
+}
+
+void rejectUnknown(const json& j, const std::set<std::string>& known, const std::string& source,
+                   const std::string& where) {
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (!known.count(it.key())) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw std::invalid_argument(prefix(source) + "unknown field '" + where + it.key() +
+                                  "', expected one of: " + list);
+    }
+  }
+}
+
+double number(const json& j, const char* key, const std::string& source, const std::string& where,
+              std::optional<double> fallback = std::nullopt) {
+  if (!j.contains(key)) {
+    if (fallback) return *fallback;
+    throw std::invalid_argument(prefix(source) + "missing field '" + where + key + "' (a number)");
+  }
+  const json& v = j.at(key);
+  if (!v.is_number()) {
+    throw std::invalid_argument(prefix(source) + "field '" + where + key + "' = " + v.dump() +
+                                ", expected a number");
+  }
+  return v.get<double>();
+}
+
+int integer(const json& j, const char* key, const std::string& source, const std::string& where,
+            std::optional<int> fallback = std::nullopt) {
+  if (!j.contains(key)) {
+    if (fallback) return *fallback;
+    throw std::invalid_argument(prefix(source) + "missing field '" + where + key + "' (an integer)");
+  }
+  const json& v = j.at(key);
+  if (!v.is_number_integer()) {
+    throw std::invalid_argument(prefix(source) + "field '" + where + key + "' = " + v.dump() +
+                                ", expected an integer");
+  }
+  return v.get<int>();
+}
+
+}  // namespace
+
+void validate(const Vehicle& v, const std::string& source) {
+  requireRange(source, "mass_kg", v.mass_kg, 0.0, true, 1e4, false, "a mass in (0, 10000] kg");
+  if (v.rotor_count < 1 || v.rotor_count > 64) {
+    throw std::invalid_argument(prefix(source) + "field 'rotor_count' = " + std::to_string(v.rotor_count) +
+                                ", expected an integer in [1, 64]");
+  }
+  requireRange(source, "rotor_diameter_m", v.rotor_diameter_m, 0.0, true, 20.0, false,
+               "a diameter in (0, 20] m");
+  requireRange(source, "disk_area_m2", v.disk_area_m2, 0.0, true, 1e3, false, "an area in (0, 1000] m^2");
+  requireRange(source, "motor_efficiency", v.motor_efficiency, 0.0, true, 1.0, false, "an efficiency in (0, 1]");
+  requireRange(source, "propeller_efficiency", v.propeller_efficiency, 0.0, true, 1.0, false,
+               "an efficiency in (0, 1]");
+  requireRange(source, "drag_area_m2", v.drag_area_m2, 0.0, false, 100.0, false, "an area in [0, 100] m^2");
+  requireRange(source, "max_acceleration_mps2", v.max_acceleration_mps2, 0.0, true, 100.0, false,
+               "an acceleration in (0, 100] m/s^2");
+  requireRange(source, "max_yaw_rate_radps", v.max_yaw_rate_radps, 0.0, true, 100.0, false,
+               "a yaw rate in (0, 100] rad/s");
+  requireRange(source, "max_speed_mps", v.max_speed_mps, 0.0, true, 200.0, false, "a speed in (0, 200] m/s");
+  requireRange(source, "air_density_kgpm3", v.air_density_kgpm3, 0.0, true, 5.0, false,
+               "an air density in (0, 5] kg/m^3");
+  requireRange(source, "gravity_mps2", v.gravity_mps2, 0.0, true, 30.0, false, "a gravity in (0, 30] m/s^2");
+  if (v.battery) {
+    const auto& b = *v.battery;
+    const auto& p = b.pack;
+    requireRange(source, "battery.capacity_ah", p.capacity_ah, 0.0, true, 1e4, false, "a capacity in (0, 10000] A h");
+    requireRange(source, "battery.rated_discharge_time_s", p.rated_discharge_time_s, 0.0, true, 1e7, false,
+                 "a time in (0, 1e7] s");
+    requireRange(source, "battery.voltage_full_v", p.voltage_full_v, 0.0, true, 1e4, false,
+                 "a voltage in (0, 10000] V");
+    requireRange(source, "battery.voltage_standard_v", p.voltage_standard_v, 0.0, true, p.voltage_full_v, true,
+                 "a voltage in (0, voltage_full_v) V");
+    requireRange(source, "battery.mass_kg", p.mass_kg, 0.0, false, 1e4, false, "a mass in [0, 10000] kg");
+    requireRange(source, "battery.usable_fraction", p.usable_fraction, 0.0, true, 1.0, false, "a fraction in (0, 1]");
+    requireRange(source, "battery.peukert_exponent", p.peukert_exponent, 1.0, false, 2.0, false,
+                 "an exponent in [1, 2]");
+    if (b.series < 1 || b.parallel < 1 || b.series > 100 || b.parallel > 100) {
+      throw std::invalid_argument(prefix(source) + "field 'battery.series'/'battery.parallel' = " +
+                                  std::to_string(b.series) + "/" + std::to_string(b.parallel) +
+                                  ", expected integers in [1, 100]");
+    }
+  }
+}
+
+Vehicle parseVehicle(const std::string& json_text, const std::string& source) {
+  json j;
+  try {
+    j = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw std::invalid_argument(prefix(source) + "not valid JSON (" + e.what() + ")");
+  }
+  if (!j.is_object()) throw std::invalid_argument(prefix(source) + "expected a JSON object at the top level");
+  rejectUnknown(j, knownVehicleKeys(), source, "");
+  Vehicle v;
+  if (j.contains("name")) {
+    if (!j["name"].is_string()) throw std::invalid_argument(prefix(source) + "field 'name' must be a string");
+    v.name = j["name"].get<std::string>();
+  }
+  v.mass_kg = number(j, "mass_kg", source, "");
+  v.rotor_count = integer(j, "rotor_count", source, "");
+  v.rotor_diameter_m = number(j, "rotor_diameter_m", source, "");
+  const double r = 0.5 * v.rotor_diameter_m;
+  v.disk_area_m2 = number(j, "disk_area_m2", source, "", v.rotor_count * M_PI * r * r);
+  v.motor_efficiency = number(j, "motor_efficiency", source, "");
+  v.propeller_efficiency = number(j, "propeller_efficiency", source, "");
+  v.drag_area_m2 = number(j, "drag_area_m2", source, "");
+  v.max_acceleration_mps2 = number(j, "max_acceleration_mps2", source, "");
+  v.max_yaw_rate_radps = number(j, "max_yaw_rate_radps", source, "");
+  v.max_speed_mps = number(j, "max_speed_mps", source, "");
+  v.air_density_kgpm3 = number(j, "air_density_kgpm3", source, "", 1.225);
+  v.gravity_mps2 = number(j, "gravity_mps2", source, "", 9.81);
+  if (j.contains("battery")) {
+    const json& b = j["battery"];
+    if (!b.is_object()) throw std::invalid_argument(prefix(source) + "field 'battery' must be an object");
+    rejectUnknown(b, knownBatteryKeys(), source, "battery.");
+    Battery bat;
+    bat.pack.capacity_ah = number(b, "capacity_ah", source, "battery.");
+    bat.pack.rated_discharge_time_s = number(b, "rated_discharge_time_s", source, "battery.");
+    bat.pack.voltage_full_v = number(b, "voltage_full_v", source, "battery.");
+    bat.pack.voltage_standard_v = number(b, "voltage_standard_v", source, "battery.");
+    bat.pack.mass_kg = number(b, "mass_kg", source, "battery.");
+    bat.pack.usable_fraction = number(b, "usable_fraction", source, "battery.");
+    bat.pack.peukert_exponent = number(b, "peukert_exponent", source, "battery.", 1.0);
+    bat.series = integer(b, "series", source, "battery.", 1);
+    bat.parallel = integer(b, "parallel", source, "battery.", 1);
+    v.battery = bat;
+  }
+  validate(v, source);
+  return v;
+}
+
+Vehicle loadVehicle(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open vehicle file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    return parseVehicle(ss.str(), path);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(e.what());
+  }
+}
+
+std::string vehicleToJson(const Vehicle& v) {
+  json j = {{"name", v.name},
+            {"mass_kg", v.mass_kg},
+            {"rotor_count", v.rotor_count},
+            {"rotor_diameter_m", v.rotor_diameter_m},
+            {"disk_area_m2", v.disk_area_m2},
+            {"motor_efficiency", v.motor_efficiency},
+            {"propeller_efficiency", v.propeller_efficiency},
+            {"drag_area_m2", v.drag_area_m2},
+            {"max_acceleration_mps2", v.max_acceleration_mps2},
+            {"max_yaw_rate_radps", v.max_yaw_rate_radps},
+            {"max_speed_mps", v.max_speed_mps},
+            {"air_density_kgpm3", v.air_density_kgpm3},
+            {"gravity_mps2", v.gravity_mps2}};
+  if (v.battery) {
+    const auto& b = *v.battery;
+    j["battery"] = {{"capacity_ah", b.pack.capacity_ah},
+                    {"rated_discharge_time_s", b.pack.rated_discharge_time_s},
+                    {"voltage_full_v", b.pack.voltage_full_v},
+                    {"voltage_standard_v", b.pack.voltage_standard_v},
+                    {"mass_kg", b.pack.mass_kg},
+                    {"usable_fraction", b.pack.usable_fraction},
+                    {"peukert_exponent", b.pack.peukert_exponent},
+                    {"series", b.series},
+                    {"parallel", b.parallel}};
+  }
+  return j.dump(2);
+}
+
+double marinsRotorPowerW(const Vehicle& v) {
+  return std::sqrt(2.0 / (v.air_density_kgpm3 * v.disk_area_m2)) * std::pow(v.weightN(), 1.5);
+}
+
+double idealHoverPowerW(const Vehicle& v) {
+  return std::pow(v.weightN(), 1.5) / std::sqrt(2.0 * v.air_density_kgpm3 * v.disk_area_m2);
+}
+
+double marinsHoverPowerW(const Vehicle& v) { return marinsRotorPowerW(v) / v.totalEfficiency(); }
+
+}  // namespace wattswath::energy
