@@ -23,7 +23,12 @@ CLI::Option* addJsonFlag(CLI::App* cmd, bool& json);
 /// Prints a progress line on stderr (never on stdout, which --json owns).
 void progress(const std::string& message);
 
+/// Writes `text` to `path` through a temporary file and a rename, so an interrupted run never
+/// leaves a half-written file; creates parent folders. Throws std::runtime_error naming the path.
+void writeTextFileAtomic(const std::string& path, const std::string& text);
+
 // Register functions: one per apps/cmd_*.cpp. main.cpp calls each.
-void registerEnergyCommands(CLI::App& app);  ///< hover, vopt, leg, turns (cmd_energy.cpp)
+void registerEnergyCommands(CLI::App& app);    ///< hover, vopt, leg, turns (cmd_energy.cpp)
+void registerReproduceCommand(CLI::App& app);  ///< reproduce (cmd_reproduce.cpp)
 
 }  // namespace wattswath::apps

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "wattswath 0.1.0");
   wattswath::apps::registerEnergyCommands(app);
+  wattswath::apps::registerReproduceCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

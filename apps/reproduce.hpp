@@ -1,7 +1,7 @@
 #pragma once
 /// @file reproduce.hpp
 /// `wattswath reproduce`: paper numbers side by side with ours. Each paper (or case) is one
-/// section in its own apps/reproduce_*.cpp; cmd_reproduce.cpp runs them in order, merges their
+/// section in its own apps/reproduce_*.cpp that registers itself; cmd_reproduce.cpp runs them, merges their
 /// JSON objects into one (top-level keys are a contract, e.g. `hwang_table3`, `spiral_case`) and
 /// concatenates their Markdown into docs/reproduction.md.
 
@@ -27,7 +27,15 @@ struct ReproSection {
 nlohmann::json reproRow(const std::string& quantity, double paper, double ours, const std::string& unit,
                         const std::string& note = "");
 
-/// Marins, Cabreira & Ferreira closed-form model: P0, P_hov, Fig. 3, Strategy 1/2, Table V.
-ReproSection reproduceMarins(const ReproContext& ctx);
+/// A section producer.
+using ReproFn = ReproSection (*)(const ReproContext&);
+
+/// Registers a section from a static initializer in its reproduce_*.cpp (sections run by `order`):
+///   static const bool kRegistered = registerReproSection(10, "marins", &reproduceMarins);
+/// Orders in use: 10 Marins closed form, 20 spiral case (Marins Table III/IV), 30 Hwang, 40 peers.
+bool registerReproSection(int order, const std::string& name, ReproFn fn);
+
+/// Runs every registered section in order and merges their JSON and Markdown.
+ReproSection runAllReproSections(const ReproContext& ctx);
 
 }  // namespace wattswath::apps
