@@ -1,0 +1,46 @@
+#pragma once
+/// @file log_io.hpp
+/// The canonical flight-log CSV (../shared/formats/flight-log-csv.md): reader, writer, and the
+/// derivation of velocity and acceleration when a log does not carry them.
+
+#include <string>
+
+#include "wattswath/energy/flight_log.hpp"
+
+namespace wattswath::energy {
+
+/// How missing velocities and accelerations are derived from positions (and velocities).
+/// Method: a local quadratic least-squares fit over a window of 2 * half_window + 1 samples
+/// centred on each sample (Savitzky-Golay smoothing, generalised to uneven time steps); the
+/// derivative of the fitted parabola at the sample is the estimate. Near the ends the window is
+/// shifted inwards so it keeps its size. Velocity = d(position)/dt; acceleration = d(velocity)/dt
+/// of the (given or derived) velocity.
+struct DerivativeSettings {
+  int half_window = 2;  ///< [samples] half width of the fitting window, range 1..50 (2 -> 5 samples)
+};
+
+/// Reads a canonical CSV flight log. Handles a UTF-8 byte-order mark and CRLF line ends; keeps
+/// unknown columns verbatim; converts lat/lon/alt to local ENU metres at the first sample
+/// (GeographicLib LocalCartesian on WGS84); derives velocity/acceleration when absent (`d`).
+/// Throws std::runtime_error "FILE:LINE: column 'NAME': ..." for a missing required column, a
+/// non-numeric or non-finite value in a used column, a row with the wrong number of fields,
+/// time that does not increase, or fewer than two samples. Never drops rows. Empty cells are
+/// allowed only in the optional columns yaw_rad, mass_kg, wind_x_mps, wind_y_mps (NaN: not measured).
+FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d = {});
+
+/// Parses CSV text as readCsvLog does; `source` names it in messages and FlightLog::source.
+FlightLog parseCsvLog(const std::string& text, const std::string& source, const DerivativeSettings& d = {});
+
+/// Writes `log` as canonical CSV text: metadata as `# key: value` lines, then time, local
+/// position, velocity, acceleration, yaw (when any sample has it), voltage and current (when
+/// every sample has both), power, mass and wind (when any sample has them), then the extra
+/// columns verbatim. Numbers use the shortest text that reads back to the same double.
+/// Throws std::invalid_argument naming the sample when a time, position, velocity,
+/// acceleration or power is not finite.
+std::string writeCsvLog(const FlightLog& log);
+
+/// Fills velocities (when `velocity`) and accelerations (when `acceleration`) of `log` from
+/// positions and velocities with the smoothing of `d`; sets the *_derived flags.
+void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const DerivativeSettings& d = {});
+
+}  // namespace wattswath::energy
