@@ -30,5 +30,6 @@ void writeTextFileAtomic(const std::string& path, const std::string& text);
 // Register functions: one per apps/cmd_*.cpp. main.cpp calls each.
 void registerEnergyCommands(CLI::App& app);    ///< hover, vopt, leg, turns (cmd_energy.cpp)
 void registerReproduceCommand(CLI::App& app);  ///< reproduce (cmd_reproduce.cpp)
+void registerLogCommands(CLI::App& app);       ///< replay, diagnose, fit, simulate (cmd_logs.cpp)
 
 }  // namespace wattswath::apps

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "wattswath 0.1.0");
   wattswath::apps::registerEnergyCommands(app);
   wattswath::apps::registerReproduceCommand(app);
+  wattswath::apps::registerLogCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "coefficient_util.hpp"
+
 namespace wattswath::energy {
+using detail::coef;
 namespace {
 
 // Gauss-Legendre nodes and weights on [-1, 1].
@@ -12,16 +15,6 @@ constexpr double kGl8X[8] = {-0.9602898564975363, -0.7966664774136267, -0.525532
 constexpr double kGl8W[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
                              0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
 
-Coefficient coef(const char* name, double value, const char* unit, double lo, double hi, const char* meaning) {
-  Coefficient c;
-  c.name = name;
-  c.value = value;
-  c.unit = unit;
-  c.lower = lo;
-  c.upper = hi;
-  c.meaning = meaning;
-  return c;
-}
 
 }  // namespace
 

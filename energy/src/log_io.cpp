@@ -1,6 +1,5 @@
 #include "wattswath/energy/log_io.hpp"
 
-#include <Eigen/Dense>
 #include <GeographicLib/LocalCartesian.hpp>
 
 #include <algorithm>
@@ -11,6 +10,8 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "local_fit.hpp"
 
 namespace wattswath::energy {
 namespace {
@@ -68,32 +69,6 @@ std::string fmt(double v) {
   return std::string(buf.data(), r.ptr);
 }
 
-// Derivative at sample i of a quadratic least-squares fit of values(j) over the window.
-// Times are centred on t_i for conditioning.
-template <class Get>
-double sgDerivative(const std::vector<LogSample>& s, size_t i, int half, Get get) {
-  const int n = static_cast<int>(s.size());
-  const int w = std::min(2 * half + 1, n);
-  int lo = static_cast<int>(i) - w / 2;
-  lo = std::clamp(lo, 0, n - w);
-  const int hi = lo + w;  // exclusive
-  const double t0 = s[i].t;
-  // Fit y = c0 + c1 (t - t0) + c2 (t - t0)^2 (a line when only 2 points): derivative at t0 = c1.
-  // Normal equations on times scaled by the window span (well conditioned for any sample rate).
-  const double span = std::max(s[hi - 1].t - s[lo].t, 1e-12);
-  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  for (int k = lo; k < hi; ++k) {
-    const double u = (s[k].t - t0) / span;
-    const Eigen::Vector3d phi(1.0, u, w >= 3 ? u * u : 0.0);
-    N += phi * phi.transpose();
-    b += phi * get(s[k]);
-  }
-  if (w < 3) N(2, 2) = 1.0;
-  const Eigen::Vector3d c = N.ldlt().solve(b);
-  return c(1) / span;
-}
-
 }  // namespace
 
 void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const DerivativeSettings& d) {
@@ -103,11 +78,13 @@ void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const De
   }
   auto& s = log.samples;
   if (s.size() < 2) return;
+  const int n = static_cast<int>(s.size());
   if (velocity) {
     std::vector<Eigen::Vector3d> v(s.size());
     for (size_t i = 0; i < s.size(); ++i)
       for (int k = 0; k < 3; ++k)
-        v[i][k] = sgDerivative(s, i, d.half_window, [k](const LogSample& x) { return x.position[k]; });
+        v[i][k] = detail::localSlope(
+            n, static_cast<int>(i), d.half_window, [&](int j) { return s[j].t; }, [&](int j) { return s[j].position[k]; });
     for (size_t i = 0; i < s.size(); ++i) s[i].velocity = v[i];
     log.velocity_derived = true;
     log.metadata["velocity_derivation"] = "quadratic least-squares (Savitzky-Golay) derivative of position over " +
@@ -117,7 +94,8 @@ void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const De
     std::vector<Eigen::Vector3d> a(s.size());
     for (size_t i = 0; i < s.size(); ++i)
       for (int k = 0; k < 3; ++k)
-        a[i][k] = sgDerivative(s, i, d.half_window, [k](const LogSample& x) { return x.velocity[k]; });
+        a[i][k] = detail::localSlope(
+            n, static_cast<int>(i), d.half_window, [&](int j) { return s[j].t; }, [&](int j) { return s[j].velocity[k]; });
     for (size_t i = 0; i < s.size(); ++i) s[i].acceleration = a[i];
     log.acceleration_derived = true;
     log.metadata["acceleration_derivation"] = "quadratic least-squares (Savitzky-Golay) derivative of velocity over " +

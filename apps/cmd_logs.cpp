@@ -1,0 +1,379 @@
+// Model versus measurement on flight logs: replay, diagnose, fit, simulate (issue 6).
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cli.hpp"
+#include "wattswath/energy/diagnose.hpp"
+#include "wattswath/energy/log_io.hpp"
+#include "wattswath/energy/vehicle.hpp"
+
+namespace wattswath::apps {
+namespace en = wattswath::energy;
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kPaperEffects = "hover,kinetic,parasitic_drag";
+
+std::vector<en::PreparedLog> prepareAll(const std::vector<std::string>& paths) {
+  std::vector<en::PreparedLog> out;
+  for (const auto& p : paths) {
+    progress("reading " + p);
+    out.push_back(en::prepareLog(en::readCsvLog(p)));
+  }
+  return out;
+}
+
+json metricsJson(const en::ErrorMetrics& m) {
+  json phases = json::object();
+  for (int k = 0; k < en::kPhaseCount; ++k) {
+    const auto& p = m.phases[k];
+    if (p.samples == 0) continue;
+    phases[en::toString(static_cast<en::Phase>(k))] = {{"samples", p.samples},
+                                                       {"rmse_w", p.rmse_w},
+                                                       {"measured_mean_w", p.measured_mean_w},
+                                                       {"modelled_mean_w", p.modelled_mean_w},
+                                                       {"energy_error_pct", p.energy_error_pct}};
+  }
+  return {{"samples", m.samples},
+          {"rmse_w", m.rmse_w},
+          {"energy_error_pct", m.energy_error_pct},
+          {"leg_energy_mape_pct", m.leg_energy_mape_pct},
+          {"phases", phases}};
+}
+
+json residualsJson(const std::vector<en::ResidualTable>& tables) {
+  json out = json::object();
+  for (const auto& t : tables) {
+    json bins = json::array();
+    for (const auto& b : t.bins) {
+      bins.push_back({{"lo", b.lo},
+                      {"hi", b.hi},
+                      {"count", b.count},
+                      {"measured_mean_w", b.measured_mean_w},
+                      {"modelled_mean_w", b.modelled_mean_w}});
+    }
+    out[t.quantity] = {{"unit", t.unit}, {"bins", bins}};
+  }
+  return out;
+}
+
+json flightsJson(const std::vector<en::LogReplay>& reps) {
+  json out = json::array();
+  for (const auto& r : reps) {
+    out.push_back({{"log", r.source},
+                   {"time_s", r.flight.time_s},
+                   {"measured_j", r.flight.measured_j},
+                   {"modelled_j", r.flight.modelled_j},
+                   {"energy_error_pct", r.flight.errorPct()},
+                   {"legs", r.legs.size()}});
+  }
+  return out;
+}
+
+// {"effect": {"coef": value}} and the same shape for sigma.
+json coefficientsJson(const std::vector<en::FittedCoefficient>& cs, bool sigma) {
+  json out = json::object();
+  for (const auto& c : cs) {
+    if (!sigma) {
+      out[c.effect][c.name] = c.value;
+    } else {
+      out[c.effect][c.name] = std::isfinite(c.sigma) ? json(c.sigma) : json(nullptr);
+    }
+  }
+  return out;
+}
+
+void printMetrics(const std::string& label, const en::ErrorMetrics& m) {
+  std::cout << label << ": sample RMSE " << m.rmse_w << " W, whole-flight energy error " << m.energy_error_pct
+            << " %, leg-energy MAPE " << m.leg_energy_mape_pct << " %\n";
+}
+
+void registerReplay(CLI::App& app) {
+  struct Opts {
+    std::string vehicle, effects = kPaperEffects, samples_out;
+    std::vector<std::string> logs;
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("replay", "Replay a model on measured kinematics: power per sample, energy per leg, "
+                                           "phase and flight, residuals binned by speed, climb, acceleration, heading, time");
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--effects", o->effects, "Comma-separated effects of the model")->capture_default_str();
+  cmd->add_option("--log", o->logs, "Canonical CSV flight log (repeatable)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--samples-out", o->samples_out, "Write per-sample measured/modelled power as CSV here");
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    const auto v = en::loadVehicle(o->vehicle);
+    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto logs = prepareAll(o->logs);
+    std::vector<en::LogReplay> reps;
+    for (const auto& l : logs) reps.push_back(en::replay(model, l));
+    const auto m = en::errorMetrics(reps);
+    if (!o->samples_out.empty()) {
+      std::ostringstream os;
+      os << "log,time_s,phase,leg,measured_w,modelled_w,speed_mps,climb_rate_mps,acceleration_mps2,heading_rad\n";
+      for (const auto& r : reps)
+        for (const auto& s : r.samples)
+          os << r.source << "," << s.t << "," << en::toString(s.phase) << "," << s.leg << "," << s.measured_w << ","
+             << s.modelled_w << "," << s.speed << "," << s.climb_rate << "," << s.acceleration << "," << s.heading
+             << "\n";
+      writeTextFileAtomic(o->samples_out, os.str());
+    }
+    if (o->json) {
+      printJson({{"effects", model.effectNames()},
+                 {"metrics", metricsJson(m)},
+                 {"flights", flightsJson(reps)},
+                 {"residuals", residualsJson(en::residualTables(reps))}});
+      return;
+    }
+    printMetrics("model " + o->effects, m);
+    for (const auto& r : reps) {
+      std::cout << r.source << ": measured " << r.flight.measured_j << " J, modelled " << r.flight.modelled_j << " J ("
+                << r.flight.errorPct() << " %), " << r.legs.size() << " legs\n";
+    }
+  });
+}
+
+void registerDiagnose(CLI::App& app) {
+  struct Opts {
+    std::string vehicle, effects = kPaperEffects;
+    std::vector<std::string> logs;
+    int folds = 3;
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("diagnose", "Rank the physical effects missing from a model by the held-out error "
+                                             "reduction they bring, with fitted coefficients in physical terms");
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--effects", o->effects, "Comma-separated effects of the model to diagnose")->capture_default_str();
+  cmd->add_option("--log", o->logs, "Canonical CSV flight log (repeatable; 2+ logs: leave-one-flight-out)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--folds", o->folds, "Time-block folds when only one log is given")
+      ->check(CLI::Range(2, 10))
+      ->capture_default_str();
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    const auto v = en::loadVehicle(o->vehicle);
+    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto logs = prepareAll(o->logs);
+    en::DiagnoseSettings s;
+    s.folds = o->folds;
+    progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
+    const auto d = en::diagnose(model, v, logs, s);
+    if (o->json) {
+      json cands = json::array();
+      for (const auto& c : d.candidates) {
+        json coeffs = json::object(), sig = json::object(), units = json::object();
+        for (const auto& x : c.coefficients) {
+          coeffs[x.name] = x.value;
+          sig[x.name] = std::isfinite(x.sigma) ? json(x.sigma) : json(nullptr);
+          units[x.name] = x.unit;
+        }
+        cands.push_back({{"effect", c.effect},
+                         {"rmse_w", c.rmse_w},
+                         {"improvement_pct", c.improvement_pct},
+                         {"energy_error_pct", c.energy_error_pct},
+                         {"leg_energy_mape_pct", c.leg_energy_mape_pct},
+                         {"coefficients", coeffs},
+                         {"uncertainty", sig},
+                         {"units", units},
+                         {"summary", c.summary},
+                         {"indistinct_from", c.indistinct_from},
+                         {"notes", c.notes}});
+      }
+      json stair = json::array();
+      for (const auto& st : d.staircase) {
+        stair.push_back({{"label", st.label},
+                         {"rmse_w", st.metrics.rmse_w},
+                         {"energy_error_pct", st.metrics.energy_error_pct},
+                         {"leg_energy_mape_pct", st.metrics.leg_energy_mape_pct}});
+      }
+      json base = metricsJson(d.baseline);
+      base["validation"] = d.validation;
+      printJson({{"effects", model.effectNames()},
+                 {"physics", metricsJson(d.physics)},
+                 {"baseline", base},
+                 {"candidates", cands},
+                 {"staircase", stair},
+                 {"flights", flightsJson(d.physics_replay)},
+                 {"residuals", residualsJson(d.residuals)}});
+      return;
+    }
+    std::cout << "validation: " << d.validation << "\n";
+    printMetrics("model as given (vehicle physics)", d.physics);
+    printMetrics("model refitted (held-out)", d.baseline);
+    std::cout << "candidates, best first (held-out RMSE after adding the effect):\n";
+    for (const auto& c : d.candidates) {
+      std::cout << "  " << c.effect << ": " << c.rmse_w << " W (" << c.improvement_pct << " %) - " << c.summary << "\n";
+      if (!c.indistinct_from.empty()) {
+        std::cout << "    cannot be told apart from:";
+        for (const auto& n : c.indistinct_from) std::cout << " " << n;
+        std::cout << "\n";
+      }
+    }
+  });
+}
+
+void registerFit(CLI::App& app) {
+  struct Opts {
+    std::string vehicle, effects = kPaperEffects;
+    std::vector<std::string> logs, test_logs;
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("fit", "Fit the coefficients of a model's effects (bounded least squares, Ceres) and "
+                                        "report the error before and after on training and test logs");
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--effects", o->effects, "Comma-separated effects to fit")->capture_default_str();
+  cmd->add_option("--log", o->logs, "Training log (repeatable)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    const auto v = en::loadVehicle(o->vehicle);
+    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto train = prepareAll(o->logs);
+    const auto test = prepareAll(o->test_logs);
+    const auto r = en::fitAndCompare(model, train, test);
+    auto side = [&](const en::ErrorMetrics& before, const en::ErrorMetrics& after) {
+      json j = metricsJson(after);
+      j["before"] = metricsJson(before);
+      return j;
+    };
+    if (o->json) {
+      json summaries = json::object();
+      for (const auto& e : model.effectNames()) summaries[e] = en::describeEffect(e, r.fit.coefficients);
+      printJson({{"effects", model.effectNames()},
+                 {"coefficients", coefficientsJson(r.fit.coefficients, false)},
+                 {"uncertainty", coefficientsJson(r.fit.coefficients, true)},
+                 {"summary", summaries},
+                 {"notes", r.fit.notes},
+                 {"train", side(r.train_before, r.train_after)},
+                 {"test", test.empty() ? json(nullptr) : side(r.test_before, r.test_after)},
+                 {"train_flights", flightsJson(r.train_replay)},
+                 {"test_flights", flightsJson(r.test_replay)}});
+      return;
+    }
+    for (const auto& e : model.effectNames()) std::cout << e << ": " << en::describeEffect(e, r.fit.coefficients) << "\n";
+    for (const auto& n : r.fit.notes) std::cout << "note: " << n << "\n";
+    printMetrics("train before", r.train_before);
+    printMetrics("train after ", r.train_after);
+    if (!test.empty()) {
+      printMetrics("test before ", r.test_before);
+      printMetrics("test after  ", r.test_after);
+    }
+  });
+}
+
+// Waypoints "x y z" or "x,y,z" per line (ENU metres); '#' comments and a header line are skipped.
+std::vector<Eigen::Vector3d> readPath(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open the path file");
+  std::vector<Eigen::Vector3d> w;
+  std::string line;
+  int ln = 0;
+  while (std::getline(in, line)) {
+    ++ln;
+    for (char& c : line)
+      if (c == ',' || c == '\r' || c == '\t') c = ' ';
+    if (line.find_first_not_of(' ') == std::string::npos || line[line.find_first_not_of(' ')] == '#') continue;
+    std::istringstream is(line);
+    double x, y, z;
+    if (!(is >> x >> y >> z)) {
+      if (w.empty() && ln == 1) continue;  // header
+      throw std::runtime_error(path + ":" + std::to_string(ln) + ": expected three numbers x y z [m], got '" + line + "'");
+    }
+    w.emplace_back(x, y, z);
+  }
+  if (w.size() < 2) throw std::runtime_error(path + ": a path needs at least 2 waypoints");
+  return w;
+}
+
+void registerSimulate(CLI::App& app) {
+  struct Opts {
+    std::string vehicle, effects = kPaperEffects, out, path;
+    std::vector<std::string> sets;
+    en::SimulationSettings sim;
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("simulate", "Write a canonical CSV log of a model (with chosen hidden effects) flown "
+                                             "along a path, with sensor noise and a fixed seed");
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--effects", o->effects, "Effects of the true model (hidden ones included)")->capture_default_str();
+  cmd->add_option("--set", o->sets, "Coefficient of the true model, effect.coefficient=value (repeatable), "
+                                    "e.g. wind.wind_east=3");
+  cmd->add_option("--path", o->path, "Waypoints x y z [m] per line (default: a 160 m x 50 m lawnmower at 15 m)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--rate", o->sim.rate_hz, "Sample rate [Hz]")->check(CLI::Range(0.1, 1000.0))->capture_default_str();
+  cmd->add_option("--speed", o->sim.cruise_speed, "Cruise speed [m/s]")->check(CLI::Range(0.5, 40.0))->capture_default_str();
+  cmd->add_option("--noise-w", o->sim.power_noise_w, "Power noise standard deviation [W]")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--seed", o->sim.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--out", o->out, "Output CSV log")->required();
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    const auto v = en::loadVehicle(o->vehicle);
+    auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    for (const auto& s : o->sets) {
+      const auto dot = s.find('.'), eq = s.find('=');
+      if (dot == std::string::npos || eq == std::string::npos || eq < dot) {
+        throw std::runtime_error("--set '" + s + "': expected effect.coefficient=value");
+      }
+      const std::string eff = s.substr(0, dot), name = s.substr(dot + 1, eq - dot - 1), val = s.substr(eq + 1);
+      auto& e = model.effect(eff);
+      std::vector<double> vals;
+      bool found = false;
+      for (const auto& c : e.coefficients()) {
+        if (c.name == name) {
+          size_t used = 0;
+          double x = 0.0;
+          try {
+            x = std::stod(val, &used);
+          } catch (const std::exception&) {
+            used = 0;
+          }
+          if (used != val.size()) throw std::runtime_error("--set '" + s + "': value '" + val + "' is not a number");
+          if (x < c.lower || x > c.upper) {
+            throw std::runtime_error("--set '" + s + "': " + val + " is outside " + std::to_string(c.lower) + ".." +
+                                     std::to_string(c.upper) + " " + c.unit);
+          }
+          vals.push_back(x);
+          found = true;
+        } else {
+          vals.push_back(c.value);
+        }
+      }
+      if (!found) throw std::runtime_error("--set '" + s + "': effect '" + eff + "' has no coefficient '" + name + "'");
+      e.setCoefficientValues(vals);
+    }
+    const std::vector<Eigen::Vector3d> path =
+        o->path.empty() ? std::vector<Eigen::Vector3d>{{0, 0, 0},    {0, 0, 15},    {160, 0, 15}, {160, 25, 15},
+                                                       {0, 25, 15},  {0, 50, 15},   {160, 50, 15}, {160, 50, 25},
+                                                       {80, 90, 25}, {0, 0, 25},    {0, 0, 0}}
+                        : readPath(o->path);
+    auto log = en::simulateFlight(path, model, o->sim);
+    log.metadata["vehicle"] = v.name;
+    writeTextFileAtomic(o->out, en::writeCsvLog(log));
+    if (o->json) {
+      printJson({{"out", o->out}, {"samples", log.samples.size()}, {"duration_s", log.duration()}});
+    } else {
+      std::cout << "wrote " << o->out << ": " << log.samples.size() << " samples, " << log.duration() << " s\n";
+    }
+  });
+}
+
+}  // namespace
+
+void registerLogCommands(CLI::App& app) {
+  registerReplay(app);
+  registerDiagnose(app);
+  registerFit(app);
+  registerSimulate(app);
+}
+
+}  // namespace wattswath::apps
