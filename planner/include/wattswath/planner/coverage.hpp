@@ -1,0 +1,84 @@
+#pragma once
+/// @file coverage.hpp
+/// The minimum-energy coverage planner: candidates per cell (boustrophedon at every sweep angle,
+/// coarse then refined, each start corner; spirals where the cell allows), corner strategy and
+/// speeds per leg, cell order and transits around no-fly zones; baselines scored by the same model
+/// in the same run, and a physical lower bound.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/polygon.hpp"
+#include "wattswath/planner/speed.hpp"
+
+namespace wattswath::planner {
+
+/// What to cover, in the local ENU frame [m].
+struct SurveyProblem {
+  geometry::PolygonWithHoles area;      ///< survey area; its holes are not flown over
+  std::vector<geometry::Ring> no_fly;   ///< further no-fly zones (inside or outside the area)
+  geometry::Point home = geometry::Point::Zero();  ///< [m] take-off and landing point
+  double spacing = 20.0;                ///< [m] distance between sweep lines, (0, 1000]
+  double footprint = 20.0;              ///< [m] camera footprint width across track (>= spacing)
+  double altitude = 10.0;               ///< [m] flight height above home, (0, 1000]
+
+  /// Throws std::invalid_argument naming the field and value when out of range or degenerate.
+  void validate() const;
+};
+
+/// Planner settings.
+struct PlannerSettings {
+  CornerStrategy corners = CornerStrategy::Auto;  ///< corner strategy of the plan
+  double camera_max_speed = 0.0;     ///< [m/s] cap on sweep legs from the camera (0: none), [0, 200]
+  double coarse_step_deg = 10.0;     ///< [deg] coarse sweep-angle step, (0, 90]
+  double fine_step_deg = 1.0;        ///< [deg] refined step around the best coarse angles, (0, coarse_step_deg]
+  int threads = 2;                   ///< worker threads for the angle search, [1, 64]
+  double ground_station_speed = 5.0; ///< [m/s] constant speed of the ground-station baseline (ArduPilot WPNAV_SPEED default)
+  double clearance = 2.0;            ///< [m] distance kept from holes and no-fly zones, (0, 100]
+  int exact_max_cells = 8;           ///< exact cell ordering up to this many cells, heuristic beyond, [0, 12]
+
+  /// Throws std::invalid_argument naming the field and value when out of range.
+  void validate() const;
+};
+
+/// One scored plan.
+struct PlanCandidate {
+  FlownPath flown;              ///< the path with speeds and energies
+  std::string pattern;          ///< "boustrophedon" or "spiral"
+  double sweep_angle_deg = 0.0; ///< [deg] sweep direction (0 = east, counter-clockwise); spirals: 0
+  double coverage_pct = 0.0;    ///< [%] of the area (minus holes and no-fly zones) inside the footprint
+  int cells = 0;                ///< number of cells covered
+  bool valid = false;           ///< false when no candidate could be built
+};
+
+/// Result of planning: the plan, the baselines and the lower bound.
+struct PlanResult {
+  PlanCandidate plan;                     ///< the minimum-energy plan
+  PlanCandidate shortest_path;            ///< baseline: the shortest path (length objective), our speeds
+  PlanCandidate ground_station_default;   ///< baseline: sweep parallel to the longest edge, constant speed, stops
+  std::optional<PlanCandidate> best_spiral;  ///< baseline: the best spiral (absent when no spiral fits)
+  double lower_bound_j = 0.0;             ///< [J] physical lower bound on the coverage energy
+  int candidates = 0;                     ///< candidate plans scored
+  std::vector<std::string> notes;         ///< facts for the user (e.g. why no spiral)
+};
+
+/// Progress callback: a line of text (the app prints it on stderr).
+using ProgressFn = std::function<void(const std::string&)>;
+
+/// Plans the minimum-energy coverage of `problem` with `vehicle` scored by `model`.
+PlanResult planCoverage(const SurveyProblem& problem, const energy::Vehicle& vehicle, const energy::EnergyModel& model,
+                        const PlannerSettings& settings = {}, const ProgressFn& progress = {});
+
+/// Percentage of the area (minus holes and no-fly zones) within the footprint of the sweep legs
+/// of `path` (square footprint `footprint` wide, centred on the leg) on a sample grid [%].
+double coveragePercent(const SurveyProblem& problem, const geometry::CoveragePath& path);
+
+/// Problems with `path` against `problem`: gaps between legs, legs entering a hole or no-fly zone.
+/// Empty means valid.
+std::vector<std::string> checkPlan(const SurveyProblem& problem, const geometry::CoveragePath& path);
+
+}  // namespace wattswath::planner

@@ -1,0 +1,78 @@
+#pragma once
+/// @file mission.hpp
+/// Mission files written from a plan: QGroundControl `.plan` (JSON), QGC WPL 110 `.waypoints`,
+/// GeoJSON of the path with per-leg speed and energy, and a CSV of legs. Geodetic coordinates
+/// exist only here, at the output boundary; the caller converts ENU metres with its frame.
+
+#include <string>
+#include <vector>
+
+namespace wattswath::planner {
+
+/// A WGS84 position [deg].
+struct GeoPoint {
+  double lat_deg = 0.0;  ///< [deg] latitude, in [-90, 90]
+  double lon_deg = 0.0;  ///< [deg] longitude, in [-180, 180]
+};
+
+/// One waypoint of a mission, flown towards at `speed_mps`.
+struct MissionWaypoint {
+  GeoPoint position;        ///< [deg] where to fly
+  double altitude_m = 0.0;  ///< [m] above home (MAV_FRAME_GLOBAL_RELATIVE_ALT)
+  double speed_mps = 0.0;   ///< [m/s] ground speed on the leg that ends here (> 0)
+};
+
+/// Autopilot family written into the `.plan` (QGroundControl's MAV_AUTOPILOT numbers).
+enum class Firmware { ArduPilot = 3, PX4 = 12 };
+
+/// A complete mission: take-off at home, waypoints with speed changes, return to launch.
+struct Mission {
+  GeoPoint home;                                ///< [deg] planned home / launch position
+  double home_altitude_amsl_m = 0.0;            ///< [m] home altitude above mean sea level
+  double takeoff_altitude_m = 10.0;             ///< [m] take-off height above home, (0, 1000]
+  double cruise_speed_mps = 5.0;                ///< [m/s] mission default speed written as cruiseSpeed
+  double hover_speed_mps = 5.0;                 ///< [m/s] hoverSpeed of the .plan
+  Firmware firmware = Firmware::ArduPilot;      ///< autopilot family (IRIS+ flights were ArduCopter)
+  std::vector<MissionWaypoint> waypoints;       ///< in flight order (at least one)
+  std::vector<std::vector<GeoPoint>> no_fly;    ///< [deg] exclusion polygons for the geofence
+};
+
+/// Throws std::invalid_argument naming the field, index and value when `m` cannot be written
+/// (no waypoints, latitude/longitude out of range, non-positive speeds or altitudes, a no-fly
+/// polygon with fewer than 3 vertices).
+void validate(const Mission& m);
+
+/// QGroundControl `.plan` JSON text (fileType "Plan", version 1; mission version 2 with SimpleItems:
+/// 22 take-off, 178 DO_CHANGE_SPEED per leg whose speed changes, 16 waypoints, 20 return to launch;
+/// geoFence version 2 with the no-fly zones as exclusion polygons; rallyPoints version 2).
+std::string toQgcPlan(const Mission& m);
+
+/// QGC WPL 110 text (tab separated; row 0 is home; same items as the `.plan`).
+std::string toQgcWpl(const Mission& m);
+
+/// Checks `.plan` JSON text against the format QGroundControl loads (the keys, types and values
+/// its JSON loader requires). Returns the problems found; empty means it loads.
+std::vector<std::string> checkQgcPlan(const std::string& json_text);
+
+/// One flown leg for the GeoJSON and CSV outputs.
+struct LegRecord {
+  GeoPoint start;                ///< [deg] where the leg starts
+  GeoPoint end;                  ///< [deg] where the leg ends
+  std::string kind;              ///< "line", "arc" or "turn_in_place"
+  std::string role;              ///< "sweep", "turn", "transit" or "climb"
+  double length_m = 0.0;         ///< [m] distance flown
+  double speed_start_mps = 0.0;  ///< [m/s] speed at the start
+  double speed_cruise_mps = 0.0; ///< [m/s] cruise speed
+  double speed_end_mps = 0.0;    ///< [m/s] speed at the end
+  double time_s = 0.0;           ///< [s] duration
+  double energy_j = 0.0;         ///< [J] electrical energy
+};
+
+/// GeoJSON FeatureCollection: one LineString feature per leg with its speeds, time and energy
+/// as properties (coordinates [lon, lat] as RFC 7946 requires).
+std::string toGeoJson(const std::vector<LegRecord>& legs);
+
+/// CSV of legs with a header row (units in the column names).
+std::string toLegCsv(const std::vector<LegRecord>& legs);
+
+}  // namespace wattswath::planner

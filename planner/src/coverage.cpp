@@ -1,0 +1,703 @@
+#include "wattswath/planner/coverage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "wattswath/planner/order.hpp"
+#include "wattswath/planner/transit.hpp"
+
+namespace wattswath::planner {
+namespace {
+
+using geometry::LegRole;
+using geometry::Point;
+using geometry::Ring;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDeg = M_PI / 180.0;
+constexpr int kStopTableSize = 64;       // samples of the stop-to-stop leg energy table (log spaced)
+constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage estimate
+
+// A free interval of one sweep line, in the rotated frame (x along the line).
+struct Interval {
+  double x0 = 0.0, x1 = 0.0;      // [m] covered part
+  double ext0 = 0.0, ext1 = 0.0;  // [m] run-out beyond each end that an arc may cut into
+};
+
+// A boustrophedon cell: intervals on consecutive sweep lines.
+struct Cell {
+  int first_line = 0;
+  std::vector<Interval> rows;
+};
+
+// Everything fixed for one problem: obstacles, router, rotated copies per angle are made on demand.
+struct Context {
+  const SurveyProblem* problem = nullptr;
+  std::vector<Ring> obstacles;  // holes + no-fly zones
+  const TransitRouter* router = nullptr;
+  double clearance = 2.0;
+  double run_out = 0.0;  // [m] extension of sweep lines beyond the boundary
+  double overlap_margin = 0.0;  // [m] (footprint - spacing) / 2
+};
+
+Point rot(const Point& p, double c, double s) { return {c * p.x() + s * p.y(), -s * p.x() + c * p.y()}; }
+Point unrot(const Point& p, double c, double s) { return {c * p.x() - s * p.y(), s * p.x() + c * p.y()}; }
+
+// x of the crossings of horizontal line y with `ring` (half-open rule).
+void crossings(const Ring& ring, double y, std::vector<double>& xs) {
+  const size_t n = ring.size();
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Point& a = ring[i];
+    const Point& b = ring[j];
+    if ((a.y() > y) != (b.y() > y)) xs.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+  }
+}
+
+std::vector<std::pair<double, double>> pairsOf(std::vector<double> xs) {
+  std::sort(xs.begin(), xs.end());
+  std::vector<std::pair<double, double>> out;
+  for (size_t i = 0; i + 1 < xs.size(); i += 2) out.emplace_back(xs[i], xs[i + 1]);
+  return out;
+}
+
+// Sweep lines at `angle`: free intervals per line (area minus obstacles), ends marked.
+std::vector<std::vector<Interval>> sweepLines(const Context& ctx, double angle, double* first_y) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  const auto& pr = *ctx.problem;
+  Ring outer;
+  for (const auto& p : pr.area.outer) outer.push_back(rot(p, c, s));
+  std::vector<Ring> obst;
+  for (const auto& r : ctx.obstacles) {
+    Ring q;
+    for (const auto& p : r) q.push_back(rot(p, c, s));
+    obst.push_back(q);
+  }
+  double ymin = kInf, ymax = -kInf;
+  for (const auto& p : outer) {
+    ymin = std::min(ymin, p.y());
+    ymax = std::max(ymax, p.y());
+  }
+  const double d = pr.spacing;
+  const int nlines = std::max(1, static_cast<int>(std::ceil((ymax - ymin) / d - 1e-9)));
+  const double y0 = ymin + 0.5 * ((ymax - ymin) - (nlines - 1) * d);
+  *first_y = y0;
+  std::vector<std::vector<Interval>> lines(nlines);
+  for (int k = 0; k < nlines; ++k) {
+    const double y = y0 + k * d;
+    std::vector<double> xs;
+    crossings(outer, y, xs);
+    auto area = pairsOf(xs);
+    std::vector<std::pair<double, double>> blocked;
+    for (const auto& r : obst) {
+      std::vector<double> bx;
+      crossings(r, y, bx);
+      for (auto& b : pairsOf(bx)) blocked.emplace_back(b.first - ctx.clearance, b.second + ctx.clearance);
+    }
+    std::sort(blocked.begin(), blocked.end());
+    for (const auto& a : area) {
+      // Subtract the blocked intervals; ends at the outer boundary get the run-out, clipped by blocks.
+      double x = a.first;
+      bool at_boundary = true;
+      auto emit = [&](double x_end, bool end_boundary) {
+        if (x_end - x <= 1e-6) return;
+        Interval iv;
+        iv.x0 = x;
+        iv.x1 = x_end;
+        if (at_boundary) {
+          double lim = x - ctx.run_out;
+          for (const auto& b : blocked)
+            if (b.second <= x + 1e-9 && b.second > lim) lim = b.second;
+          iv.ext0 = x - lim;
+          iv.x0 = x;
+        }
+        if (end_boundary) {
+          double lim = x_end + ctx.run_out;
+          for (const auto& b : blocked)
+            if (b.first >= x_end - 1e-9 && b.first < lim) lim = b.first;
+          iv.ext1 = lim - x_end;
+        }
+        lines[k].push_back(iv);
+      };
+      for (const auto& b : blocked) {
+        if (b.second <= x || b.first >= a.second) continue;
+        if (b.first > x) emit(b.first, false);
+        x = std::max(x, b.second);
+        at_boundary = false;
+      }
+      emit(a.second, true);
+    }
+  }
+  return lines;
+}
+
+// Groups the intervals of consecutive lines into cells (one-to-one overlaps stay in one cell).
+std::vector<Cell> cellsOf(const std::vector<std::vector<Interval>>& lines) {
+  std::vector<Cell> cells;
+  std::vector<int> prev_cell;  // cell of each interval on the previous line
+  for (size_t k = 0; k < lines.size(); ++k) {
+    std::vector<int> cur(lines[k].size(), -1);
+    for (size_t j = 0; j < lines[k].size(); ++j) {
+      const auto& iv = lines[k][j];
+      int match = -1, count = 0;
+      if (k > 0) {
+        for (size_t i = 0; i < lines[k - 1].size(); ++i) {
+          const auto& p = lines[k - 1][i];
+          if (std::min(p.x1, iv.x1) - std::max(p.x0, iv.x0) > 0.0) {
+            match = static_cast<int>(i);
+            ++count;
+          }
+        }
+      }
+      bool joined = false;
+      if (count == 1) {
+        int back = 0;  // how many intervals of this line overlap the matched one
+        const auto& p = lines[k - 1][match];
+        for (const auto& o : lines[k])
+          if (std::min(p.x1, o.x1) - std::max(p.x0, o.x0) > 0.0) ++back;
+        const int c = prev_cell[match];
+        if (back == 1 && c >= 0 && cells[c].first_line + static_cast<int>(cells[c].rows.size()) == static_cast<int>(k)) {
+          cells[c].rows.push_back(iv);
+          cur[j] = c;
+          joined = true;
+        }
+      }
+      if (!joined) {
+        cells.push_back({static_cast<int>(k), {iv}});
+        cur[j] = static_cast<int>(cells.size()) - 1;
+      }
+    }
+    prev_cell = cur;
+  }
+  return cells;
+}
+
+// Appends a straight move from the route's last point to `to`, detouring around obstacles.
+void moveTo(const Context& ctx, Route& r, const Point& to, LegRole role, double tangent_at_to) {
+  const Point from = r.points.back();
+  if (ctx.router->clear(from, to)) {
+    r.add(to, role, tangent_at_to);
+    return;
+  }
+  const auto path = ctx.router->route(from, to);
+  for (size_t i = 1; i + 1 < path.size(); ++i) r.add(path[i], LegRole::Transit, 0.5 * ctx.clearance);
+  r.add(to, role, tangent_at_to);
+}
+
+// Route of one cell: start at the first (or last) row, at its left (or right) end; zigzag.
+Route cellRoute(const Context& ctx, const Cell& cell, double angle, double first_y, bool from_top, bool start_right) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  const int n = static_cast<int>(cell.rows.size());
+  Route r;
+  bool right = start_right;
+  for (int i = 0; i < n; ++i) {
+    const int row = from_top ? n - 1 - i : i;
+    const auto& iv = cell.rows[row];
+    const double y = first_y + (cell.first_line + row) * ctx.problem->spacing;
+    const double xa = right ? iv.x1 + iv.ext1 : iv.x0 - iv.ext0;
+    const double xb = right ? iv.x0 - iv.ext0 : iv.x1 + iv.ext1;
+    const double ta = right ? iv.ext1 : iv.ext0, tb = right ? iv.ext0 : iv.ext1;
+    const Point a = unrot(Point(xa, y), c, s), b = unrot(Point(xb, y), c, s);
+    if (r.points.empty()) {
+      r.points.push_back(a);
+      r.max_tangent.push_back(0.0);
+    } else {
+      moveTo(ctx, r, a, LegRole::Transit, ta);
+    }
+    r.add(b, LegRole::Sweep, tb);
+    right = !right;
+  }
+  return r;
+}
+
+// Reverse of a route (same energy: the model charges acceleration and braking alike).
+Route reversed(const Route& r) {
+  Route o;
+  o.points.assign(r.points.rbegin(), r.points.rend());
+  o.roles.assign(r.roles.rbegin(), r.roles.rend());
+  o.max_tangent.assign(r.max_tangent.rbegin(), r.max_tangent.rend());
+  return o;
+}
+
+// Stop-to-stop straight-leg energy as a function of length, tabulated for transit costs.
+struct StopTable {
+  std::vector<double> len, e;
+  double eval(double L) const {
+    if (L <= 0.0) return 0.0;
+    if (L <= len.front()) return e.front() * L / len.front();
+    if (L >= len.back()) return e.back() + (e.back() - e[e.size() - 2]) / (len.back() - len[len.size() - 2]) * (L - len.back());
+    const size_t i = std::upper_bound(len.begin(), len.end(), L) - len.begin();
+    const double f = (L - len[i - 1]) / (len[i] - len[i - 1]);
+    return e[i - 1] + f * (e[i] - e[i - 1]);
+  }
+};
+
+StopTable makeStopTable(RouteScorer& scorer, double max_len) {
+  StopTable t;
+  const double lo = 0.5, hi = std::max(max_len, 10.0);
+  for (int i = 0; i < kStopTableSize; ++i) {
+    const double L = lo * std::pow(hi / lo, static_cast<double>(i) / (kStopTableSize - 1));
+    t.len.push_back(L);
+    t.e.push_back(scorer.legEnergy(L, 0.0, 0.0, scorer.settings().max_speed));
+  }
+  return t;
+}
+
+enum class Objective { Energy, Length };
+
+// A fully assembled candidate for one sweep angle.
+struct AngleResult {
+  double angle = 0.0;
+  double score = kInf;  // energy or length, by objective
+  Route route;
+  int cells = 0;
+};
+
+double polylineCost(const std::vector<Point>& pts, Objective obj, const StopTable& stop, const RouteScorer& scorer) {
+  double c = 0.0;
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double L = (pts[i + 1] - pts[i]).norm();
+    c += obj == Objective::Length ? L : stop.eval(L);
+    if (obj == Objective::Energy && i + 2 < pts.size()) {
+      const Point u = pts[i + 1] - pts[i], v = pts[i + 2] - pts[i + 1];
+      c += scorer.turnEnergy(std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v)));
+    }
+  }
+  return c;
+}
+
+std::vector<Point> transitPolyline(const Context& ctx, const Point& a, const Point& b) {
+  return ctx.router->clear(a, b) ? std::vector<Point>{a, b} : ctx.router->route(a, b);
+}
+
+// Boustrophedon at one angle: cells, 4 candidates each, ordered by GTSP, assembled home to home.
+AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer, const StopTable& stop, Objective obj,
+                          int exact_max_cells) {
+  AngleResult res;
+  res.angle = angle;
+  double first_y = 0.0;
+  const auto cells = cellsOf(sweepLines(ctx, angle, &first_y));
+  if (cells.empty()) return res;
+  std::vector<Route> cand;
+  GtspInstance g;
+  int cluster = 0;
+  for (size_t ci = 0; ci < cells.size(); ++ci) {
+    bool any = false;
+    for (int top = 0; top < 2; ++top) {
+      for (bool right : {false, true}) {
+        const Route r = cellRoute(ctx, cells[ci], angle, first_y, top == 1, right);
+        if (r.points.size() < 2) continue;  // a sliver without length
+        const double cost = obj == Objective::Length ? r.length() : scorer.energy(r);
+        if (!std::isfinite(cost)) continue;
+        cand.push_back(r);
+        g.cluster.push_back(cluster);
+        g.cost.push_back(cost);
+        any = true;
+      }
+    }
+    cluster += any;
+  }
+  if (cand.empty()) return res;
+  res.cells = cluster;
+  // Each candidate reversed is also a candidate (same internal cost, swapped ends).
+  const size_t base = cand.size();
+  for (size_t i = 0; i < base; ++i) {
+    cand.push_back(reversed(cand[i]));
+    g.cluster.push_back(g.cluster[i]);
+    g.cost.push_back(g.cost[i]);
+  }
+  const int n = static_cast<int>(cand.size());
+  std::vector<Point> entry(n + 1), exit(n + 1);
+  for (int i = 0; i < n; ++i) {
+    entry[i] = cand[i].points.front();
+    exit[i] = cand[i].points.back();
+  }
+  entry[n] = exit[n] = ctx.problem->home;
+  g.transit = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      if (i != j || i == n) g.transit(i, j) = polylineCost(transitPolyline(ctx, exit[i], entry[j]), obj, stop, scorer);
+  const GtspTour tour = solveGtsp(g, exact_max_cells);
+  Route full;
+  full.points.push_back(ctx.problem->home);
+  full.max_tangent.push_back(0.0);
+  for (int node : tour.nodes) {
+    const Route& r = cand[node];
+    moveTo(ctx, full, r.points.front(), LegRole::Transit, r.max_tangent.front());
+    for (size_t i = 1; i < r.points.size(); ++i) full.add(r.points[i], r.roles[i - 1], r.max_tangent[i]);
+  }
+  moveTo(ctx, full, ctx.problem->home, LegRole::Transit, 0.0);
+  res.route = full;
+  res.score = obj == Objective::Length ? full.length() : scorer.energy(full);
+  return res;
+}
+
+// Evaluates `angles` on `threads` workers, each with its own scorer.
+std::vector<AngleResult> evaluateAngles(const Context& ctx, const std::vector<double>& angles,
+                                        const energy::EnergyModel& model, const SpeedSettings& ss,
+                                        const StopTable& stop, Objective obj, int threads, int exact_max_cells) {
+  std::vector<AngleResult> out(angles.size());
+  std::vector<std::thread> pool;
+  std::exception_ptr error;
+  std::mutex m;
+  const int nt = std::max(1, std::min<int>(threads, static_cast<int>(angles.size())));
+  for (int t = 0; t < nt; ++t) {
+    pool.emplace_back([&, t]() {
+      try {
+        RouteScorer scorer(model, ss);
+        for (size_t i = t; i < angles.size(); i += nt)
+          out[i] = evaluateAngle(ctx, angles[i], scorer, stop, obj, exact_max_cells);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(m);
+        error = std::current_exception();
+      }
+    });
+  }
+  for (auto& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+  return out;
+}
+
+// Coarse grid over [0, 180) then a fine grid around the best coarse angles.
+AngleResult searchAngles(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
+                         const StopTable& stop, Objective obj, const PlannerSettings& ps, int* count) {
+  std::vector<double> coarse;
+  for (double a = 0.0; a < 180.0 - 1e-9; a += ps.coarse_step_deg) coarse.push_back(a * kDeg);
+  auto res = evaluateAngles(ctx, coarse, model, ss, stop, obj, ps.threads, ps.exact_max_cells);
+  *count += static_cast<int>(res.size());
+  std::sort(res.begin(), res.end(), [](const auto& a, const auto& b) { return a.score < b.score; });
+  std::vector<double> fine;
+  for (size_t k = 0; k < std::min<size_t>(2, res.size()); ++k) {
+    if (!std::isfinite(res[k].score)) continue;
+    for (double da = -ps.coarse_step_deg + ps.fine_step_deg; da < ps.coarse_step_deg - 1e-9; da += ps.fine_step_deg)
+      if (std::abs(da) > 1e-9) fine.push_back(res[k].angle + da * kDeg);
+  }
+  auto more = evaluateAngles(ctx, fine, model, ss, stop, obj, ps.threads, ps.exact_max_cells);
+  *count += static_cast<int>(more.size());
+  for (auto& r : more)
+    if (r.score < res.front().score) res.front() = std::move(r);
+  return res.front();
+}
+
+double normDeg(double rad) {
+  double d = std::fmod(rad / kDeg, 180.0);
+  if (d < 0) d += 180.0;
+  return d;
+}
+
+// Convex inward offset of a convex counter-clockwise ring by `delta` (half-plane clipping).
+Ring offsetConvex(const Ring& ring, double delta) {
+  Ring poly = ring;
+  const size_t n = ring.size();
+  for (size_t i = 0; i < n && poly.size() >= 3; ++i) {
+    const Point a = ring[i], b = ring[(i + 1) % n];
+    const Point u = (b - a).normalized();
+    const Point nin(-u.y(), u.x());  // inward for a counter-clockwise ring
+    const Point o = a + nin * delta;
+    auto side = [&](const Point& p) { return (p - o).dot(nin); };
+    Ring out;
+    for (size_t k = 0; k < poly.size(); ++k) {
+      const Point& p = poly[k];
+      const Point& q = poly[(k + 1) % poly.size()];
+      const double sp = side(p), sq = side(q);
+      if (sp >= 0) out.push_back(p);
+      if ((sp >= 0) != (sq >= 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
+    }
+    poly = out;
+  }
+  return geometry::signedArea(poly) > 1e-6 ? poly : Ring{};
+}
+
+bool isConvex(const Ring& r) {
+  const size_t n = r.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Point u = r[(i + 1) % n] - r[i], v = r[(i + 2) % n] - r[(i + 1) % n];
+    if (u.x() * v.y() - u.y() * v.x() < -1e-9) return false;
+  }
+  return true;
+}
+
+// Largest tangent of an arc at a corner of deflection `theta` that stays within `margin` of the vertex.
+double tangentWithin(double theta, double margin) {
+  const double h = 0.5 * std::abs(theta);
+  if (h < 1e-9 || margin <= 0.0) return 0.0;
+  return margin * std::tan(h) / (1.0 / std::cos(h) - 1.0);
+}
+
+// Spirals over a convex area without obstacles: rings inset by (k + 1/2) spacing, each start vertex,
+// both directions; the best by energy.
+std::optional<AngleResult> bestSpiral(const Context& ctx, RouteScorer& scorer, std::string* why) {
+  const auto& pr = *ctx.problem;
+  Ring outer = pr.area.outer;
+  if (geometry::signedArea(outer) < 0) std::reverse(outer.begin(), outer.end());
+  if (!pr.area.holes.empty() || !ctx.obstacles.empty() || !isConvex(outer)) {
+    *why = "spiral baseline needs a convex area without holes or no-fly zones (straight-skeleton spirals come with the geometry module)";
+    return std::nullopt;
+  }
+  std::vector<Ring> rings;
+  for (int k = 0;; ++k) {
+    Ring r = offsetConvex(outer, (k + 0.5) * pr.spacing);
+    if (r.size() < 3) break;
+    rings.push_back(r);
+  }
+  if (rings.empty()) {
+    *why = "area narrower than one swath: no spiral";
+    return std::nullopt;
+  }
+  std::optional<AngleResult> best;
+  const size_t m = rings.front().size();
+  for (size_t start = 0; start < m; ++start) {
+    for (int dir = 0; dir < 2; ++dir) {
+      Route r;
+      r.points.push_back(pr.home);
+      r.max_tangent.push_back(0.0);
+      Point at = rings.front()[start];
+      for (const auto& ring0 : rings) {
+        Ring ring = ring0;
+        if (dir == 1) std::reverse(ring.begin(), ring.end());
+        size_t s = 0;
+        for (size_t i = 1; i < ring.size(); ++i)
+          if ((ring[i] - at).squaredNorm() < (ring[s] - at).squaredNorm()) s = i;
+        r.add(ring[s], LegRole::Transit, 0.0);
+        for (size_t i = 1; i <= ring.size(); ++i) {
+          const Point& p = ring[(s + i - 1) % ring.size()];
+          const Point& q = ring[(s + i) % ring.size()];
+          const Point& nx = ring[(s + i + 1) % ring.size()];
+          const double th = std::atan2((q - p).x() * (nx - q).y() - (q - p).y() * (nx - q).x(), (q - p).dot(nx - q));
+          r.add(q, LegRole::Sweep, tangentWithin(th, ctx.overlap_margin));
+        }
+        at = ring[s];
+      }
+      r.add(pr.home, LegRole::Transit, 0.0);
+      const double e = scorer.energy(r);
+      if (!best || e < best->score) best = AngleResult{0.0, e, r, 1};
+    }
+  }
+  return best;
+}
+
+PlanCandidate finish(const SurveyProblem& pr, RouteScorer& scorer, const AngleResult& a, const std::string& pattern) {
+  PlanCandidate c;
+  if (!std::isfinite(a.score) || a.route.points.size() < 2) return c;
+  c.flown = scorer.fly(a.route);
+  c.flown.path.pattern = pattern;
+  c.flown.path.sweep_angle = a.angle;
+  c.pattern = pattern;
+  c.sweep_angle_deg = pattern == "spiral" ? 0.0 : normDeg(a.angle);
+  c.cells = a.cells;
+  c.coverage_pct = coveragePercent(pr, c.flown.path);
+  c.valid = true;
+  return c;
+}
+
+double distanceToSegment(const Point& p, const Point& a, const Point& b) {
+  const Point d = b - a;
+  const double l2 = d.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+  return (p - (a + d * t)).norm();
+}
+
+}  // namespace
+
+void SurveyProblem::validate() const {
+  if (area.outer.size() < 3)
+    throw std::invalid_argument("SurveyProblem.area: outer boundary has " + std::to_string(area.outer.size()) +
+                                " vertices (at least 3 expected)");
+  if (std::abs(geometry::signedArea(area.outer)) <= 0.0)
+    throw std::invalid_argument("SurveyProblem.area: outer boundary has zero area");
+  for (const auto& p : area.outer)
+    if (!p.allFinite()) throw std::invalid_argument("SurveyProblem.area: a vertex is not finite");
+  if (!(spacing > 0.0 && spacing <= 1000.0))
+    throw std::invalid_argument("SurveyProblem.spacing = " + std::to_string(spacing) + " m is outside (0, 1000]");
+  if (!(footprint >= spacing && footprint <= 10000.0))
+    throw std::invalid_argument("SurveyProblem.footprint = " + std::to_string(footprint) + " m must be >= spacing (" +
+                                std::to_string(spacing) + " m) and <= 10000");
+  if (!(altitude > 0.0 && altitude <= 1000.0))
+    throw std::invalid_argument("SurveyProblem.altitude = " + std::to_string(altitude) + " m is outside (0, 1000]");
+  if (!home.allFinite()) throw std::invalid_argument("SurveyProblem.home is not finite");
+  for (size_t i = 0; i < no_fly.size(); ++i)
+    if (no_fly[i].size() < 3)
+      throw std::invalid_argument("SurveyProblem.no_fly[" + std::to_string(i) + "] has " +
+                                  std::to_string(no_fly[i].size()) + " vertices (at least 3 expected)");
+}
+
+void PlannerSettings::validate() const {
+  auto bad = [](const std::string& f, double v, const std::string& range) {
+    throw std::invalid_argument("PlannerSettings." + f + " = " + std::to_string(v) + " is outside " + range);
+  };
+  if (!(camera_max_speed >= 0.0 && camera_max_speed <= 200.0)) bad("camera_max_speed", camera_max_speed, "[0, 200]");
+  if (!(coarse_step_deg > 0.0 && coarse_step_deg <= 90.0)) bad("coarse_step_deg", coarse_step_deg, "(0, 90]");
+  if (!(fine_step_deg > 0.0 && fine_step_deg <= coarse_step_deg)) bad("fine_step_deg", fine_step_deg, "(0, coarse_step_deg]");
+  if (threads < 1 || threads > 64) bad("threads", threads, "[1, 64]");
+  if (!(ground_station_speed > 0.0 && ground_station_speed <= 200.0))
+    bad("ground_station_speed", ground_station_speed, "(0, 200]");
+  if (!(clearance > 0.0 && clearance <= 100.0)) bad("clearance", clearance, "(0, 100]");
+  if (exact_max_cells < 0 || exact_max_cells > kGtspExactMaxClusters) bad("exact_max_cells", exact_max_cells, "[0, 12]");
+}
+
+double coveragePercent(const SurveyProblem& pr, const geometry::CoveragePath& path) {
+  double xmin = kInf, xmax = -kInf, ymin = kInf, ymax = -kInf;
+  for (const auto& p : pr.area.outer) {
+    xmin = std::min(xmin, p.x());
+    xmax = std::max(xmax, p.x());
+    ymin = std::min(ymin, p.y());
+    ymax = std::max(ymax, p.y());
+  }
+  const double step = std::max(pr.spacing / 4.0, std::sqrt((xmax - xmin) * (ymax - ymin) / kMaxCoverageSamples));
+  const int nx = static_cast<int>((xmax - xmin) / step) + 1, ny = static_cast<int>((ymax - ymin) / step) + 1;
+  std::vector<char> inside(static_cast<size_t>(nx) * ny, 0), covered(inside.size(), 0);
+  auto at = [&](int i, int j) { return Point(xmin + (i + 0.5) * step, ymin + (j + 0.5) * step); };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const Point p = at(i, j);
+      bool in = insideRing(p, pr.area.outer);
+      for (const auto& h : pr.area.holes) in = in && !insideRing(p, h);
+      for (const auto& h : pr.no_fly) in = in && !insideRing(p, h);
+      inside[static_cast<size_t>(j) * nx + i] = in;
+    }
+  const double half = 0.5 * pr.footprint;
+  for (const auto& leg : path.legs) {
+    if (leg.role != LegRole::Sweep || leg.kind != geometry::PrimitiveKind::Line) continue;
+    const Point d = leg.end - leg.start;
+    const double L = d.norm();
+    if (L <= 0) continue;
+    const Point u = d / L, nrm(-u.y(), u.x());
+    const double bx0 = std::min(leg.start.x(), leg.end.x()) - half, bx1 = std::max(leg.start.x(), leg.end.x()) + half;
+    const double by0 = std::min(leg.start.y(), leg.end.y()) - half, by1 = std::max(leg.start.y(), leg.end.y()) + half;
+    const int i0 = std::max(0, static_cast<int>((bx0 - xmin) / step)), i1 = std::min(nx - 1, static_cast<int>((bx1 - xmin) / step) + 1);
+    const int j0 = std::max(0, static_cast<int>((by0 - ymin) / step)), j1 = std::min(ny - 1, static_cast<int>((by1 - ymin) / step) + 1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const Point q = at(i, j) - leg.start;
+        const double a = q.dot(u), b = q.dot(nrm);
+        if (a >= -half && a <= L + half && std::abs(b) <= half + 1e-9) covered[static_cast<size_t>(j) * nx + i] = 1;
+      }
+  }
+  size_t n_in = 0, n_cov = 0;
+  for (size_t k = 0; k < inside.size(); ++k) {
+    n_in += inside[k];
+    n_cov += inside[k] && covered[k];
+  }
+  return n_in == 0 ? 100.0 : 100.0 * static_cast<double>(n_cov) / static_cast<double>(n_in);
+}
+
+std::vector<std::string> checkPlan(const SurveyProblem& pr, const geometry::CoveragePath& path) {
+  std::vector<std::string> problems;
+  std::vector<Ring> obstacles = pr.area.holes;
+  obstacles.insert(obstacles.end(), pr.no_fly.begin(), pr.no_fly.end());
+  for (size_t i = 0; i < path.legs.size(); ++i) {
+    const auto& leg = path.legs[i];
+    if (i > 0 && (path.legs[i - 1].end - leg.start).norm() > 1e-6)
+      problems.push_back("leg " + std::to_string(i) + " does not start where leg " + std::to_string(i - 1) + " ends");
+    std::vector<Point> pts{leg.start, leg.end};
+    if (leg.kind == geometry::PrimitiveKind::Arc) {
+      pts.clear();
+      const double a0 = std::atan2(leg.start.y() - leg.center.y(), leg.start.x() - leg.center.x());
+      for (int k = 0; k <= 16; ++k) {
+        const double a = a0 + leg.turn_angle * k / 16.0;
+        pts.push_back(leg.center + leg.radius * Point(std::cos(a), std::sin(a)));
+      }
+    }
+    for (size_t k = 0; k + 1 < pts.size(); ++k)
+      for (size_t o = 0; o < obstacles.size(); ++o)
+        if (segmentEntersRing(pts[k], pts[k + 1], obstacles[o]) || insideRing(pts[k], obstacles[o]))
+          problems.push_back("leg " + std::to_string(i) + " enters " +
+                             (o < pr.area.holes.size() ? "hole " + std::to_string(o)
+                                                       : "no-fly zone " + std::to_string(o - pr.area.holes.size())));
+  }
+  return problems;
+}
+
+PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle, const energy::EnergyModel& model,
+                        const PlannerSettings& ps, const ProgressFn& progress) {
+  pr.validate();
+  ps.validate();
+  auto say = [&](const std::string& s) {
+    if (progress) progress(s);
+  };
+  SurveyProblem problem = pr;
+  if (geometry::signedArea(problem.area.outer) < 0) std::reverse(problem.area.outer.begin(), problem.area.outer.end());
+  Context ctx;
+  ctx.problem = &problem;
+  ctx.obstacles = problem.area.holes;
+  ctx.obstacles.insert(ctx.obstacles.end(), problem.no_fly.begin(), problem.no_fly.end());
+  ctx.clearance = ps.clearance;
+  ctx.run_out = 0.5 * problem.spacing;
+  ctx.overlap_margin = 0.5 * (problem.footprint - problem.spacing);
+  TransitRouter router(ctx.obstacles, TransitSettings{ps.clearance});
+  if (router.blocked(problem.home)) throw std::invalid_argument("home is inside a hole or no-fly zone");
+  ctx.router = &router;
+
+  SpeedSettings ss = SpeedSettings::fromVehicle(vehicle);
+  ss.camera_max_speed = ps.camera_max_speed;
+  ss.altitude = problem.altitude;
+  ss.corners = ps.corners;
+  RouteScorer scorer(model, ss);
+  double diag = 0.0;
+  for (const auto& p : problem.area.outer) diag = std::max(diag, (p - problem.home).norm());
+  const StopTable stop = makeStopTable(scorer, 4.0 * diag);
+
+  PlanResult res;
+  say("plan: searching sweep angles (coarse " + std::to_string(ps.coarse_step_deg) + " deg, fine " +
+      std::to_string(ps.fine_step_deg) + " deg) on " + std::to_string(ps.threads) + " threads");
+  const AngleResult best = searchAngles(ctx, model, ss, stop, Objective::Energy, ps, &res.candidates);
+  res.plan = finish(problem, scorer, best, "boustrophedon");
+
+  say("plan: baselines");
+  // (a) shortest path: length objective for angle and order, flown with our speeds.
+  const AngleResult shortest = searchAngles(ctx, model, ss, stop, Objective::Length, ps, &res.candidates);
+  res.shortest_path = finish(problem, scorer, shortest, "boustrophedon");
+  // (b) ground-station default: parallel to the longest edge, one constant speed, stop at corners.
+  const auto& outer = problem.area.outer;
+  size_t longest = 0;
+  for (size_t i = 0; i < outer.size(); ++i)
+    if ((outer[(i + 1) % outer.size()] - outer[i]).norm() > (outer[(longest + 1) % outer.size()] - outer[longest]).norm())
+      longest = i;
+  const Point e = outer[(longest + 1) % outer.size()] - outer[longest];
+  SpeedSettings gs = ss;
+  gs.fixed_speed = std::min(ps.ground_station_speed, ss.max_speed);
+  gs.corners = CornerStrategy::Sharp;
+  RouteScorer gs_scorer(model, gs);
+  const AngleResult gsr = evaluateAngle(ctx, std::atan2(e.y(), e.x()), gs_scorer, stop, Objective::Length, ps.exact_max_cells);
+  res.ground_station_default = finish(problem, gs_scorer, gsr, "boustrophedon");
+  ++res.candidates;
+  // (c) best spiral.
+  std::string why;
+  const auto spiral = bestSpiral(ctx, scorer, &why);
+  if (spiral) {
+    res.best_spiral = finish(problem, scorer, *spiral, "spiral");
+    res.candidates += static_cast<int>(2 * outer.size());
+  } else {
+    res.notes.push_back(why);
+  }
+  // The plan is the least-energy candidate of all scored, baselines included (so it never costs more).
+  for (const PlanCandidate* c : {&res.shortest_path, &res.ground_station_default}) {
+    if (c->valid && c->coverage_pct >= res.plan.coverage_pct - 1e-9 && c->flown.energy < res.plan.flown.energy) {
+      res.plan = *c;
+      res.notes.push_back("a baseline geometry was cheaper than the searched ones and is used as the plan");
+    }
+  }
+  if (res.best_spiral && res.best_spiral->valid && res.best_spiral->coverage_pct >= 99.0 &&
+      res.best_spiral->flown.energy < res.plan.flown.energy)
+    res.plan = *res.best_spiral;
+  if (!res.plan.valid) throw std::runtime_error("plan: no coverage path found (area narrower than the clearance?)");
+
+  // Lower bound: the swath length the footprint needs at the best energy per metre, plus the way from
+  // home to the area and back; turns counted at zero (an arc can cost as little per metre).
+  const double cap = ps.camera_max_speed > 0 ? std::min(ps.camera_max_speed, ss.max_speed) : ss.max_speed;
+  const double e_min = model.minEnergyPerMetre(cap);
+  double free_area = geometry::area(problem.area);
+  for (const auto& z : problem.no_fly) free_area -= std::abs(geometry::signedArea(z));  // may overlap the outside: bound stays a bound
+  free_area = std::max(free_area, 0.0);
+  double approach = kInf;
+  if (insideRing(problem.home, problem.area.outer)) approach = 0.0;
+  for (size_t i = 0; i < outer.size(); ++i)
+    approach = std::min(approach, distanceToSegment(problem.home, outer[i], outer[(i + 1) % outer.size()]));
+  res.lower_bound_j = e_min * (std::max(0.0, free_area / problem.footprint - problem.footprint) + 2.0 * approach);
+  say("plan: done, " + std::to_string(res.candidates) + " candidates scored");
+  return res;
+}
+
+}  // namespace wattswath::planner

@@ -1,0 +1,229 @@
+#include "wattswath/planner/order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+
+namespace wattswath::planner {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kImproveRel = 1e-12;  // [-] relative improvement a local-search move must make
+
+
+std::vector<std::vector<int>> membersOf(const GtspInstance& g) {
+  std::vector<std::vector<int>> m(g.clusterCount());
+  for (size_t i = 0; i < g.cluster.size(); ++i) m[g.cluster[i]].push_back(static_cast<int>(i));
+  return m;
+}
+
+// Best candidate per cluster for a fixed cluster order: shortest path through the layered graph
+// depot -> layer 1 -> ... -> layer k -> depot (dynamic programming over the layers).
+GtspTour bestForOrder(const GtspInstance& g, const std::vector<std::vector<int>>& members,
+                      const std::vector<int>& order) {
+  const int n = static_cast<int>(g.cluster.size());
+  std::vector<std::vector<double>> dist(order.size());
+  std::vector<std::vector<int>> from(order.size());
+  for (size_t l = 0; l < order.size(); ++l) {
+    const auto& cur = members[order[l]];
+    dist[l].assign(cur.size(), kInf);
+    from[l].assign(cur.size(), -1);
+    for (size_t b = 0; b < cur.size(); ++b) {
+      if (l == 0) {
+        dist[l][b] = g.transit(n, cur[b]) + g.cost[cur[b]];
+        continue;
+      }
+      const auto& prev = members[order[l - 1]];
+      for (size_t a = 0; a < prev.size(); ++a) {
+        const double c = dist[l - 1][a] + g.transit(prev[a], cur[b]) + g.cost[cur[b]];
+        if (c < dist[l][b]) {
+          dist[l][b] = c;
+          from[l][b] = static_cast<int>(a);
+        }
+      }
+    }
+  }
+  GtspTour t;
+  t.cost = kInf;
+  if (order.empty()) return t;
+  const auto& last = members[order.back()];
+  int at = -1;
+  for (size_t b = 0; b < last.size(); ++b) {
+    const double c = dist.back()[b] + g.transit(last[b], n);
+    if (c < t.cost) {
+      t.cost = c;
+      at = static_cast<int>(b);
+    }
+  }
+  t.nodes.resize(order.size());
+  for (size_t l = order.size(); l-- > 0;) {
+    t.nodes[l] = members[order[l]][at];
+    at = from[l][at];
+  }
+  return t;
+}
+
+}  // namespace
+
+int GtspInstance::clusterCount() const {
+  int k = 0;
+  for (int c : cluster) k = std::max(k, c + 1);
+  return k;
+}
+
+void GtspInstance::validate() const {
+  const auto n = static_cast<Eigen::Index>(cluster.size());
+  if (cost.size() != cluster.size())
+    throw std::invalid_argument("GtspInstance: cost has " + std::to_string(cost.size()) + " entries, cluster " +
+                                std::to_string(cluster.size()));
+  if (transit.rows() != n + 1 || transit.cols() != n + 1)
+    throw std::invalid_argument("GtspInstance: transit is " + std::to_string(transit.rows()) + "x" +
+                                std::to_string(transit.cols()) + ", expected " + std::to_string(n + 1) +
+                                " square (candidates + depot)");
+  std::vector<int> count(clusterCount(), 0);
+  for (size_t i = 0; i < cluster.size(); ++i) {
+    if (cluster[i] < 0) throw std::invalid_argument("GtspInstance: cluster[" + std::to_string(i) + "] is negative");
+    if (!std::isfinite(cost[i]) || cost[i] < 0.0)
+      throw std::invalid_argument("GtspInstance: cost[" + std::to_string(i) + "] = " + std::to_string(cost[i]) +
+                                  " must be finite and >= 0");
+    ++count[cluster[i]];
+  }
+  for (size_t c = 0; c < count.size(); ++c)
+    if (count[c] == 0) throw std::invalid_argument("GtspInstance: cluster " + std::to_string(c) + " has no candidate");
+  if (!transit.allFinite() || (transit.array() < 0.0).any())
+    throw std::invalid_argument("GtspInstance: transit costs must be finite and >= 0");
+}
+
+double tourCost(const GtspInstance& g, const std::vector<int>& nodes) {
+  const int depot = static_cast<int>(g.cluster.size());
+  double c = 0.0;
+  int prev = depot;
+  for (int v : nodes) {
+    c += g.transit(prev, v) + g.cost[v];
+    prev = v;
+  }
+  return c + g.transit(prev, depot);
+}
+
+GtspTour solveGtspExact(const GtspInstance& g) {
+  g.validate();
+  const int k = g.clusterCount();
+  if (k > kGtspExactMaxClusters)
+    throw std::invalid_argument("solveGtspExact: " + std::to_string(k) + " clusters, at most " +
+                                std::to_string(kGtspExactMaxClusters) + " supported");
+  if (k == 0) return {};
+  const int n = static_cast<int>(g.cluster.size());
+  const size_t full = (size_t{1} << k) - 1;
+  // best[mask][node]: cheapest path from the depot visiting exactly the clusters in mask, ending at node.
+  std::vector<std::vector<double>> best(full + 1, std::vector<double>(n, kInf));
+  std::vector<std::vector<int>> from(full + 1, std::vector<int>(n, -1));
+  for (int v = 0; v < n; ++v) best[size_t{1} << g.cluster[v]][v] = g.transit(n, v) + g.cost[v];
+  for (size_t mask = 1; mask <= full; ++mask) {
+    for (int u = 0; u < n; ++u) {
+      const double bu = best[mask][u];
+      if (!(bu < kInf)) continue;
+      for (int v = 0; v < n; ++v) {
+        const size_t bit = size_t{1} << g.cluster[v];
+        if (mask & bit) continue;
+        const double c = bu + g.transit(u, v) + g.cost[v];
+        if (c < best[mask | bit][v]) {
+          best[mask | bit][v] = c;
+          from[mask | bit][v] = u;
+        }
+      }
+    }
+  }
+  GtspTour t;
+  t.cost = kInf;
+  int last = -1;
+  for (int v = 0; v < n; ++v) {
+    const double c = best[full][v] + g.transit(v, n);
+    if (c < t.cost) {
+      t.cost = c;
+      last = v;
+    }
+  }
+  size_t mask = full;
+  for (int v = last; v >= 0;) {
+    t.nodes.push_back(v);
+    const int u = from[mask][v];
+    mask &= ~(size_t{1} << g.cluster[v]);
+    v = u;
+  }
+  std::reverse(t.nodes.begin(), t.nodes.end());
+  return t;
+}
+
+GtspTour solveGtspHeuristic(const GtspInstance& g) {
+  g.validate();
+  const int k = g.clusterCount();
+  if (k == 0) return {};
+  const int n = static_cast<int>(g.cluster.size());
+  const auto members = membersOf(g);
+  // Greedy: from the depot, repeatedly go to the cheapest (transit + internal) candidate of an unvisited cluster.
+  std::vector<int> order;
+  std::vector<bool> done(k, false);
+  int at = n;
+  for (int step = 0; step < k; ++step) {
+    double bc = kInf;
+    int bv = -1;
+    for (int v = 0; v < n; ++v) {
+      if (done[g.cluster[v]]) continue;
+      const double c = g.transit(at, v) + g.cost[v];
+      if (c < bc) {
+        bc = c;
+        bv = v;
+      }
+    }
+    done[g.cluster[bv]] = true;
+    order.push_back(g.cluster[bv]);
+    at = bv;
+  }
+  GtspTour best = bestForOrder(g, members, order);
+  // Local search over the cluster order; every order is scored with its optimal candidates.
+  bool improved = true;
+  while (improved) {
+    improved = false;
+    for (int i = 0; i < k && !improved; ++i) {
+      for (int j = i + 1; j < k && !improved; ++j) {  // 2-opt: reverse order[i..j]
+        auto o = order;
+        std::reverse(o.begin() + i, o.begin() + j + 1);
+        auto t = bestForOrder(g, members, o);
+        if (t.cost < best.cost * (1.0 - kImproveRel)) {
+          order = o;
+          best = t;
+          improved = true;
+        }
+      }
+    }
+    for (int len = 1; len <= 3 && !improved; ++len) {  // or-opt: move a run of 1..3 clusters
+      for (int i = 0; i + len <= k && !improved; ++i) {
+        for (int j = 0; j <= k - len && !improved; ++j) {
+          if (j == i) continue;
+          std::vector<int> rest(order.begin(), order.begin() + i);
+          rest.insert(rest.end(), order.begin() + i + len, order.end());
+          std::vector<int> run(order.begin() + i, order.begin() + i + len);
+          auto o = rest;
+          o.insert(o.begin() + std::min<int>(j, static_cast<int>(rest.size())), run.begin(), run.end());
+          auto t = bestForOrder(g, members, o);
+          if (t.cost < best.cost * (1.0 - kImproveRel)) {
+            order = o;
+            best = t;
+            improved = true;
+          }
+        }
+      }
+    }
+  }
+  return best;
+}
+
+GtspTour solveGtsp(const GtspInstance& g, int exact_max_clusters) {
+  if (g.clusterCount() <= std::min(exact_max_clusters, kGtspExactMaxClusters)) return solveGtspExact(g);
+  return solveGtspHeuristic(g);
+}
+
+}  // namespace wattswath::planner

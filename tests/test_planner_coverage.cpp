@@ -1,0 +1,184 @@
+// The planner: valid plans (continuity, coverage >= 99 %, no no-fly entry), never worse than a
+// baseline, above the lower bound; speeds and corners optimal for their geometry.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/speed.hpp"
+#include "test_util.hpp"
+
+using namespace wattswath;
+using namespace wattswath::planner;
+using geometry::LegRole;
+using geometry::Point;
+using geometry::Ring;
+
+namespace {
+energy::Vehicle iris() { return energy::loadVehicle(test::sourcePath("data/vehicles/iris.json")); }
+
+void expectValid(const SurveyProblem& pr, const PlanResult& r) {
+  ASSERT_TRUE(r.plan.valid);
+  EXPECT_TRUE(checkPlan(pr, r.plan.flown.path).empty()) << checkPlan(pr, r.plan.flown.path).front();
+  EXPECT_GE(r.plan.coverage_pct, 99.0);
+  EXPECT_LE(r.plan.flown.energy, r.shortest_path.flown.energy + 1e-6);
+  EXPECT_LE(r.plan.flown.energy, r.ground_station_default.flown.energy + 1e-6);
+  if (r.best_spiral) {
+    EXPECT_LE(r.plan.flown.energy, r.best_spiral->flown.energy + 1e-6);
+  }
+  EXPECT_GT(r.lower_bound_j, 0.0);
+  EXPECT_LT(r.lower_bound_j, r.plan.flown.energy);
+  // Speeds: every leg within the vehicle limit; junctions continuous.
+  const auto& sp = r.plan.flown.speeds;
+  ASSERT_EQ(sp.junction.size(), r.plan.flown.path.legs.size() + 1);
+  for (double v : sp.cruise) EXPECT_LE(v, 16.0 + 1e-9);
+  EXPECT_EQ(sp.junction.front(), 0.0);
+  EXPECT_EQ(sp.junction.back(), 0.0);
+}
+
+// The E-Spiral rectangle of Marins et al. (about 252 m x 118 m), spacing 21.45 m (10 m altitude,
+// 100 deg field of view, 10 % overlap) as in ../shared/data/README.md.
+SurveyProblem rectangle() {
+  SurveyProblem p;
+  p.area.outer = {{0, 0}, {252, 0}, {252, 118}, {0, 118}};
+  p.spacing = 21.45;
+  p.footprint = 21.45 / 0.9;
+  p.home = {-5, -5};
+  return p;
+}
+}  // namespace
+
+TEST(Speed, LegOptimumBeatsAGridOfCruiseSpeeds) {
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  RouteScorer s(model, SpeedSettings::fromVehicle(v));
+  for (double L : {10.0, 50.0, 100.0, 200.0, 600.0}) {
+    const double e = s.legEnergy(L, 0.0, 0.0, 16.0);
+    for (double c = 0.5; c <= 16.0; c += 0.25)
+      EXPECT_LE(e, model.energy(energy::buildLegProfile(L, 0.0, c, 0.0, {1.0, 1.0})) + 1e-6) << L << " " << c;
+  }
+  EXPECT_TRUE(std::isinf(s.legEnergy(1.0, 0.0, 10.0, 16.0)));  // cannot reach 10 m/s in 1 m
+}
+
+TEST(Speed, AutoCornersCostNoMoreThanEitherStrategy) {
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  Route r;
+  r.points = {{0, 0}};
+  r.max_tangent = {0};
+  // A boustrophedon with 20 m spacing and 10 m run-out at each line end.
+  for (int k = 0; k < 6; ++k) {
+    const double y = 20.0 * k;
+    const bool right = k % 2 == 0;
+    r.add({right ? -10.0 : 210.0, y}, LegRole::Transit, 10.0);
+    r.add({right ? 210.0 : -10.0, y}, LegRole::Sweep, 10.0);
+  }
+  r.add({0, 0}, LegRole::Transit, 0.0);
+  auto settings = SpeedSettings::fromVehicle(v);
+  double e[3];
+  int i = 0;
+  for (auto cs : {CornerStrategy::Sharp, CornerStrategy::Rounded, CornerStrategy::Auto}) {
+    settings.corners = cs;
+    RouteScorer s(model, settings);
+    const auto f = s.fly(r);
+    EXPECT_NEAR(f.energy, s.energy(r), 1e-6 * f.energy);
+    e[i++] = f.energy;
+    if (cs == CornerStrategy::Sharp) {
+      EXPECT_EQ(f.rounded_corners, 0);
+    }
+    if (cs == CornerStrategy::Rounded) {
+      EXPECT_GT(f.rounded_corners, 0);
+    }
+  }
+  EXPECT_LE(e[2], e[0] + 1e-9);
+  EXPECT_LE(e[2], e[1] + 1e-9);
+  EXPECT_LT(e[1], e[0]);  // on long sweeps a rounded U-turn at speed beats two stops
+}
+
+TEST(Speed, CameraLimitCapsSweepLegsOnly) {
+  const auto v = iris();
+  auto settings = SpeedSettings::fromVehicle(v);
+  settings.camera_max_speed = 4.0;
+  RouteScorer s(energy::marinsModel(v), settings);
+  Route r;
+  r.points = {{0, 0}};
+  r.max_tangent = {0};
+  r.add({500, 0}, LegRole::Transit, 0);
+  r.add({500, 500}, LegRole::Sweep, 0);
+  const auto f = s.fly(r);
+  for (size_t i = 0; i < f.path.legs.size(); ++i)
+    if (f.path.legs[i].role == LegRole::Sweep) {
+      EXPECT_LE(f.speeds.cruise[i], 4.0 + 1e-9);
+    }
+  EXPECT_GT(f.speeds.cruise.front(), 4.0);
+}
+
+TEST(Planner, RectangleOfMarinsEtAl) {
+  const auto v = iris();
+  const auto pr = rectangle();
+  const auto r = planCoverage(pr, v, energy::marinsModel(v));
+  expectValid(pr, r);
+  ASSERT_TRUE(r.best_spiral.has_value());
+  EXPECT_GE(r.best_spiral->coverage_pct, 99.0);
+  EXPECT_TRUE(checkPlan(pr, r.best_spiral->flown.path).empty());
+  // The plan is cheaper than what a ground station flies by default.
+  EXPECT_LT(r.plan.flown.energy, 0.95 * r.ground_station_default.flown.energy);
+}
+
+TEST(Planner, CornerStrategiesKeepCoverage) {
+  const auto v = iris();
+  const auto pr = rectangle();
+  for (auto cs : {CornerStrategy::Sharp, CornerStrategy::Rounded}) {
+    PlannerSettings ps;
+    ps.corners = cs;
+    const auto r = planCoverage(pr, v, energy::marinsModel(v), ps);
+    expectValid(pr, r);
+  }
+}
+
+TEST(Planner, SeededRandomAreasWithHolesAreValid) {
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 4; ++trial) {
+    SurveyProblem pr;
+    // A star-shaped outer ring of 7-10 vertices around (200, 200), radius 120-200 m.
+    const int nv = 7 + trial % 4;
+    for (int i = 0; i < nv; ++i) {
+      const double a = 2.0 * M_PI * (i + 0.3 * u(rng)) / nv, rad = 120.0 + 80.0 * u(rng);
+      pr.area.outer.push_back({200 + rad * std::cos(a), 200 + rad * std::sin(a)});
+    }
+    // One hole and one no-fly zone inside, small squares away from each other.
+    const double h = 10.0 + 10.0 * u(rng);
+    pr.area.holes.push_back({{150 - h, 170 - h}, {150 - h, 170 + h}, {150 + h, 170 + h}, {150 + h, 170 - h}});
+    pr.no_fly.push_back({{250, 230}, {275, 235}, {262, 262}});
+    pr.spacing = 20.0;
+    pr.footprint = 22.0;
+    pr.home = {200, 20};
+    PlannerSettings ps;
+    ps.coarse_step_deg = 30.0;
+    ps.fine_step_deg = 5.0;
+    const auto r = planCoverage(pr, v, model, ps);
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    expectValid(pr, r);
+  }
+}
+
+TEST(Planner, BadInputGivesClearErrors) {
+  const auto v = iris();
+  auto pr = rectangle();
+  pr.spacing = -1;
+  try {
+    planCoverage(pr, v, energy::marinsModel(v));
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("spacing"), std::string::npos);
+  }
+  pr = rectangle();
+  pr.no_fly.push_back({{-10, -10}, {0, -10}, {0, 0}, {-10, 0}});  // home inside
+  EXPECT_THROW(planCoverage(pr, v, energy::marinsModel(v)), std::invalid_argument);
+  EXPECT_THROW(cornerStrategyFromString("smooth"), std::invalid_argument);
+}

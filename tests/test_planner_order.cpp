@@ -1,0 +1,100 @@
+// Cell ordering: exact DP against brute force, and the heuristic against the exact optimum.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+
+#include "wattswath/planner/order.hpp"
+
+using namespace wattswath::planner;
+
+namespace {
+// Random Euclidean GTSP: each candidate has an entry and exit point near its cluster centre.
+GtspInstance randomInstance(int clusters, int per, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 100.0), du(-5.0, 5.0), cu(10.0, 50.0);
+  GtspInstance g;
+  std::vector<Eigen::Vector2d> entry, exit;
+  for (int c = 0; c < clusters; ++c) {
+    const Eigen::Vector2d centre(u(rng), u(rng));
+    for (int k = 0; k < per; ++k) {
+      g.cluster.push_back(c);
+      g.cost.push_back(cu(rng));
+      entry.push_back(centre + Eigen::Vector2d(du(rng), du(rng)));
+      exit.push_back(centre + Eigen::Vector2d(du(rng), du(rng)));
+    }
+  }
+  entry.push_back({0, 0});
+  exit.push_back({0, 0});
+  const int n = static_cast<int>(entry.size());
+  g.transit.resize(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) g.transit(i, j) = (exit[i] - entry[j]).norm() * 1.7;
+  return g;
+}
+
+double bruteForce(const GtspInstance& g) {
+  const int k = g.clusterCount();
+  std::vector<std::vector<int>> members(k);
+  for (size_t i = 0; i < g.cluster.size(); ++i) members[g.cluster[i]].push_back(static_cast<int>(i));
+  std::vector<int> order(k);
+  std::iota(order.begin(), order.end(), 0);
+  double best = 1e300;
+  do {
+    std::vector<int> pick(k, 0);
+    while (true) {
+      std::vector<int> nodes;
+      for (int i = 0; i < k; ++i) nodes.push_back(members[order[i]][pick[i]]);
+      best = std::min(best, tourCost(g, nodes));
+      int i = 0;
+      while (i < k && ++pick[i] == static_cast<int>(members[order[i]].size())) pick[i++] = 0;
+      if (i == k) break;
+    }
+  } while (std::next_permutation(order.begin(), order.end()));
+  return best;
+}
+}  // namespace
+
+TEST(Gtsp, ExactMatchesBruteForce) {
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    const auto g = randomInstance(4, 3, seed);
+    const auto t = solveGtspExact(g);
+    EXPECT_NEAR(t.cost, bruteForce(g), 1e-9) << "seed " << seed;
+    EXPECT_NEAR(t.cost, tourCost(g, t.nodes), 1e-9);
+    EXPECT_EQ(t.nodes.size(), 4u);
+  }
+}
+
+TEST(Gtsp, HeuristicAgreesWithExactOnSmallCases) {
+  int agree = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    const auto g = randomInstance(2 + seed % 5, 4, seed);
+    const auto e = solveGtspExact(g);
+    const auto h = solveGtspHeuristic(g);
+    EXPECT_NEAR(h.cost, tourCost(g, h.nodes), 1e-9);
+    EXPECT_GE(h.cost, e.cost - 1e-9) << "seed " << seed;
+    EXPECT_LE(h.cost, e.cost * 1.02) << "seed " << seed;
+    agree += std::abs(h.cost - e.cost) < 1e-9;
+  }
+  EXPECT_GE(agree, 36);  // the heuristic finds the optimum on (almost) all small instances
+}
+
+TEST(Gtsp, HeuristicHandlesManyClusters) {
+  const auto g = randomInstance(30, 4, 7);
+  const auto h = solveGtspHeuristic(g);
+  EXPECT_EQ(h.nodes.size(), 30u);
+  std::vector<int> seen(30, 0);
+  for (int v : h.nodes) ++seen[g.cluster[v]];
+  for (int s : seen) EXPECT_EQ(s, 1);
+  EXPECT_THROW(solveGtspExact(g), std::invalid_argument);
+}
+
+TEST(Gtsp, InvalidInstancesAreRejected) {
+  GtspInstance g = randomInstance(3, 2, 1);
+  g.cost[2] = -1.0;
+  EXPECT_THROW(solveGtsp(g), std::invalid_argument);
+  g = randomInstance(3, 2, 1);
+  g.transit.resize(3, 3);
+  EXPECT_THROW(solveGtsp(g), std::invalid_argument);
+}
