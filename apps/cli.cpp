@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -19,6 +20,13 @@ CLI::Option* addVehicleOption(CLI::App* cmd, std::string& path) {
 
 CLI::Option* addJsonFlag(CLI::App* cmd, bool& json) {
   return cmd->add_flag("--json", json, "Print one JSON object on stdout instead of text");
+}
+
+std::string formatNumber(double x) {
+  std::ostringstream os;
+  os.precision(10);
+  os << x;
+  return os.str();
 }
 
 void progress(const std::string& message) { std::cerr << message << std::endl; }

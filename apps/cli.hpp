@@ -20,6 +20,9 @@ CLI::Option* addVehicleOption(CLI::App* cmd, std::string& path);
 /// Adds the common `--json` flag to `cmd`.
 CLI::Option* addJsonFlag(CLI::App* cmd, bool& json);
 
+/// `x` with 10 significant digits (for messages naming an offending value).
+std::string formatNumber(double x);
+
 /// Prints a progress line on stderr (never on stdout, which --json owns).
 void progress(const std::string& message);
 

@@ -34,6 +34,8 @@ double integratePower(const Effect& e, const Piece& p, int points) {
 
 double Effect::energy(const Piece& p) const { return integratePower(*this, p, 8); }
 
+std::optional<PieceEnergyGradient> Effect::energyGradient(const Piece&) const { return std::nullopt; }
+
 void Effect::setCoefficientValues(const std::vector<double>& values) {
   if (values.size() != coeffs_.size()) {
     throw std::invalid_argument("effect '" + name() + "': expected " + std::to_string(coeffs_.size()) +
@@ -63,6 +65,16 @@ double HoverEffect::energy(const Piece& p) const {
   return p.phase == Phase::Ground ? 0.0 : coeffs_[0].value * p.duration;
 }
 
+std::optional<PieceEnergyGradient> HoverEffect::energyGradient(const Piece& p) const {
+  PieceEnergyGradient g;
+  const double sum = p.v_start + p.v_end;
+  if (p.phase == Phase::Ground || p.length <= 0.0 || !(sum > 0.0)) return g;
+  // E = P * 2 L / (v0 + v1)
+  g.length = 2.0 * coeffs_[0].value / sum;
+  g.v_start = g.v_end = -2.0 * coeffs_[0].value * p.length / (sum * sum);
+  return g;
+}
+
 // ---------------------------------------------------------------- kinetic
 KineticEffect::KineticEffect(double m_eff_kg) {
   coeffs_.push_back(coef("effective_mass", m_eff_kg, "kg", 0.0, 1e5,
@@ -79,6 +91,17 @@ double KineticEffect::power(const MotionState& s) const {
 double KineticEffect::energy(const Piece& p) const {
   if (p.phase == Phase::Ground) return 0.0;
   return 0.5 * coeffs_[0].value * std::abs(p.v_end * p.v_end - p.v_start * p.v_start);
+}
+
+std::optional<PieceEnergyGradient> KineticEffect::energyGradient(const Piece& p) const {
+  PieceEnergyGradient g;
+  if (p.phase == Phase::Ground) return g;
+  // E = m_eff / 2 |v1^2 - v0^2|; on a cruise piece both speeds move together and the change stays 0.
+  const double change = p.v_end * p.v_end - p.v_start * p.v_start;
+  const double sign = change > 0.0 ? 1.0 : (change < 0.0 ? -1.0 : 0.0);
+  g.v_start = -coeffs_[0].value * p.v_start * sign;
+  g.v_end = coeffs_[0].value * p.v_end * sign;
+  return g;
 }
 
 // ---------------------------------------------------------------- parasitic drag
@@ -108,6 +131,21 @@ double ParasiticDragEffect::energy(const Piece& p) const {
   return k * p.length * 0.5 * (p.v_start * p.v_start + p.v_end * p.v_end);
 }
 
+std::optional<PieceEnergyGradient> ParasiticDragEffect::energyGradient(const Piece& p) const {
+  PieceEnergyGradient g;
+  if (p.phase == Phase::Ground || p.length <= 0.0) return g;
+  const double k = 0.5 * rho_ * coeffs_[0].value / eta_;
+  if (mode_ == DragIntegration::PaperCruiseSpeed && p.v_cruise > 0.0) {
+    g.length = k * p.v_cruise * p.v_cruise;
+    g.v_cruise = 2.0 * k * p.length * p.v_cruise;
+    return g;
+  }
+  g.length = k * 0.5 * (p.v_start * p.v_start + p.v_end * p.v_end);
+  g.v_start = k * p.length * p.v_start;
+  g.v_end = k * p.length * p.v_end;
+  return g;
+}
+
 // ---------------------------------------------------------------- yaw rate
 YawRateEffect::YawRateEffect(double k) {
   coeffs_.push_back(coef("yaw_power", k, "W s/rad", 0.0, 1e4, "extra power per unit of yaw rate"));
@@ -120,6 +158,10 @@ double YawRateEffect::power(const MotionState& s) const {
 }
 double YawRateEffect::energy(const Piece& p) const {
   return p.phase == Phase::Ground ? 0.0 : coeffs_[0].value * std::abs(p.yaw_angle);
+}
+
+std::optional<PieceEnergyGradient> YawRateEffect::energyGradient(const Piece&) const {
+  return PieceEnergyGradient{};  // k |yaw angle| does not depend on length or speeds
 }
 
 }  // namespace wattswath::energy

@@ -68,8 +68,13 @@ std::string describe(double d, double ve, double vc, double vx) {
 }
 
 void push(std::vector<Piece>& out, Phase phase, double v0, double v1, double len, double vc, double heading,
-          double climb_per_m) {
+          double climb_per_m, std::vector<PieceSensitivity>* sens = nullptr, PieceSensitivity ds = {}) {
   if (len <= tol::kLength) return;
+  if (sens) {
+    ds.v_cruise = 1.0;
+    ds.climb = climb_per_m * ds.length;
+    sens->push_back(ds);
+  }
   Piece p;
   p.phase = phase;
   p.length = len;
@@ -86,8 +91,11 @@ Phase changePhase(double v0, double v1) { return v1 > v0 ? Phase::Accelerate : P
 
 }  // namespace
 
-std::vector<Piece> buildLegProfile(double d, double ve, double vc, double vx, const ProfileLimits& lim,
-                                   double heading, double climb) {
+namespace {
+
+std::vector<Piece> buildLeg(double d, double ve, double vc, double vx, const ProfileLimits& lim, double heading,
+                            double climb, std::vector<PieceSensitivity>* sens) {
+  if (sens) sens->clear();
   if (!(std::isfinite(d) && std::isfinite(ve) && std::isfinite(vc) && std::isfinite(vx)) || d < 0.0 ||
       ve < 0.0 || vc < 0.0 || vx < 0.0) {
     throw std::invalid_argument("leg profile: values must be finite and non-negative (" + describe(d, ve, vc, vx) +
@@ -115,9 +123,12 @@ std::vector<Piece> buildLegProfile(double d, double ve, double vc, double vx, co
   };
   const double d1 = dist(ve, vc), d3 = dist(vc, vx);
   if (d1 + d3 <= d) {
-    push(out, changePhase(ve, vc), ve, vc, d1, vc, heading, cpm);
-    push(out, Phase::Cruise, vc, vc, d - d1 - d3, vc, heading, cpm);
-    push(out, changePhase(vc, vx), vc, vx, d3, vc, heading, cpm);
+    // d d1 / d vc and d d3 / d vc: v^2 / (2 a) with the acceleration of the change's direction.
+    const double dd1 = vc >= ve ? vc / au : -vc / ad;
+    const double dd3 = vx >= vc ? -vc / au : vc / ad;
+    push(out, changePhase(ve, vc), ve, vc, d1, vc, heading, cpm, sens, {dd1, 0.0, 1.0, 1.0, 0.0});
+    push(out, Phase::Cruise, vc, vc, d - d1 - d3, vc, heading, cpm, sens, {-dd1 - dd3, 1.0, 1.0, 1.0, 0.0});
+    push(out, changePhase(vc, vx), vc, vx, d3, vc, heading, cpm, sens, {dd3, 1.0, 0.0, 1.0, 0.0});
     return out;
   }
   const double e2 = ve * ve, x2 = vx * vx;
@@ -129,8 +140,8 @@ std::vector<Piece> buildLegProfile(double d, double ve, double vc, double vx, co
                                   describe(d, ve, vc, vx) + ")");
     }
     const double vp = std::sqrt(std::max(p2, std::max(e2, x2)));
-    push(out, Phase::Accelerate, ve, vp, (vp * vp - e2) / (2.0 * au), vc, heading, cpm);
-    push(out, Phase::Brake, vp, vx, (vp * vp - x2) / (2.0 * ad), vc, heading, cpm);
+    push(out, Phase::Accelerate, ve, vp, (vp * vp - e2) / (2.0 * au), vc, heading, cpm, sens);
+    push(out, Phase::Brake, vp, vx, (vp * vp - x2) / (2.0 * ad), vc, heading, cpm, sens);
     return out;
   }
   if (ve >= vc && vx >= vc) {  // valley: entry and exit above cruise, cannot reach it
@@ -140,13 +151,31 @@ std::vector<Piece> buildLegProfile(double d, double ve, double vc, double vx, co
                                   describe(d, ve, vc, vx) + ")");
     }
     const double vm = std::sqrt(std::max(0.0, std::min(m2, std::min(e2, x2))));
-    push(out, Phase::Brake, ve, vm, (e2 - vm * vm) / (2.0 * ad), vc, heading, cpm);
-    push(out, Phase::Accelerate, vm, vx, (x2 - vm * vm) / (2.0 * au), vc, heading, cpm);
+    push(out, Phase::Brake, ve, vm, (e2 - vm * vm) / (2.0 * ad), vc, heading, cpm, sens);
+    push(out, Phase::Accelerate, vm, vx, (x2 - vm * vm) / (2.0 * au), vc, heading, cpm, sens);
     return out;
   }
   // Monotone change through the cruise speed: d1 + d3 is the distance the change itself needs.
   throw std::invalid_argument("leg profile: leg too short to change speed from entry to exit (" +
                               describe(d, ve, vc, vx) + ")");
+}
+
+}  // namespace
+
+std::vector<Piece> buildLegProfile(double d, double ve, double vc, double vx, const ProfileLimits& lim,
+                                   double heading, double climb) {
+  return buildLeg(d, ve, vc, vx, lim, heading, climb, nullptr);
+}
+
+std::vector<Piece> buildLegProfileWithSensitivity(double d, double ve, double vc, double vx,
+                                                  const ProfileLimits& lim, std::vector<PieceSensitivity>& sens,
+                                                  double heading, double climb) {
+  return buildLeg(d, ve, vc, vx, lim, heading, climb, &sens);
+}
+
+double legPeakSpeed(double d, double ve, double vx, const ProfileLimits& lim) {
+  const double au = lim.acceleration, ad = lim.deceleration;
+  return std::sqrt((2.0 * d * au * ad + ve * ve * ad + vx * vx * au) / (au + ad));
 }
 
 Piece turnInPlace(double angle, double yaw_rate, double heading) {

@@ -5,6 +5,7 @@
 /// piece (closed form where one exists, Gauss-Legendre quadrature otherwise).
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,16 @@ struct Coefficient {
   std::string meaning;  ///< plain-language meaning, e.g. "drag area C_D A of the airframe"
 };
 
+/// Partial derivatives of an effect's energy over one piece with respect to the piece's free
+/// parameters (duration follows from them: 2 L / (v0 + v1) for pieces of non-zero length).
+struct PieceEnergyGradient {
+  double length = 0.0;    ///< [J/m] dE / d length
+  double v_start = 0.0;   ///< [J s/m] dE / d v_start
+  double v_end = 0.0;     ///< [J s/m] dE / d v_end
+  double v_cruise = 0.0;  ///< [J s/m] dE / d v_cruise (only the paper's drag approximation uses it)
+  double climb = 0.0;     ///< [J/m] dE / d climb
+};
+
 /// One physical term of the power model.
 class Effect {
  public:
@@ -35,6 +46,9 @@ class Effect {
   virtual double power(const MotionState& s) const = 0;
   /// Electrical energy over piece `p` [J]. Default: 8-point Gauss-Legendre quadrature of power().
   virtual double energy(const Piece& p) const;
+  /// Closed-form partial derivatives of energy(p) for pieces of non-zero length; std::nullopt when
+  /// the effect has none (callers then difference energy() numerically). Default: std::nullopt.
+  virtual std::optional<PieceEnergyGradient> energyGradient(const Piece& p) const;
   /// A deep copy.
   virtual std::unique_ptr<Effect> clone() const = 0;
 
@@ -64,6 +78,7 @@ class HoverEffect final : public Effect {
   std::string meaning() const override;
   double power(const MotionState& s) const override;
   double energy(const Piece& p) const override;
+  std::optional<PieceEnergyGradient> energyGradient(const Piece& p) const override;
   std::unique_ptr<Effect> clone() const override { return std::make_unique<HoverEffect>(*this); }
 };
 
@@ -80,6 +95,7 @@ class KineticEffect final : public Effect {
   std::string meaning() const override;
   double power(const MotionState& s) const override;
   double energy(const Piece& p) const override;
+  std::optional<PieceEnergyGradient> energyGradient(const Piece& p) const override;
   std::unique_ptr<Effect> clone() const override { return std::make_unique<KineticEffect>(*this); }
 };
 
@@ -101,6 +117,7 @@ class ParasiticDragEffect final : public Effect {
   std::string meaning() const override;
   double power(const MotionState& s) const override;
   double energy(const Piece& p) const override;
+  std::optional<PieceEnergyGradient> energyGradient(const Piece& p) const override;
   std::unique_ptr<Effect> clone() const override { return std::make_unique<ParasiticDragEffect>(*this); }
   /// The integration mode.
   DragIntegration mode() const { return mode_; }
@@ -122,6 +139,7 @@ class YawRateEffect final : public Effect {
   std::string meaning() const override;
   double power(const MotionState& s) const override;
   double energy(const Piece& p) const override;
+  std::optional<PieceEnergyGradient> energyGradient(const Piece& p) const override;
   std::unique_ptr<Effect> clone() const override { return std::make_unique<YawRateEffect>(*this); }
 };
 

@@ -71,6 +71,28 @@ struct ProfileLimits {
 std::vector<Piece> buildLegProfile(double distance, double v_entry, double v_cruise, double v_exit,
                                    const ProfileLimits& limits, double heading = 0.0, double climb = 0.0);
 
+/// Derivative of one piece's free parameters with respect to the leg's cruise speed (chain rule
+/// for the optimal-speed search). Duration follows from length and speeds (2 L / (v0 + v1)).
+struct PieceSensitivity {
+  double length = 0.0;    ///< [m per m/s] d length / d v_cruise
+  double v_start = 0.0;   ///< [-] d v_start / d v_cruise
+  double v_end = 0.0;     ///< [-] d v_end / d v_cruise
+  double v_cruise = 0.0;  ///< [-] d v_cruise / d v_cruise (1 for every piece of the leg)
+  double climb = 0.0;     ///< [m per m/s] d climb / d v_cruise
+};
+
+/// The pieces of buildLegProfile() (same arguments, same exceptions) and, in `sensitivity`
+/// (resized to match), each piece's derivative with respect to `v_cruise`. One-sided at the
+/// kinks where the profile changes shape (cruise speed equal to entry/exit or to the peak).
+std::vector<Piece> buildLegProfileWithSensitivity(double distance, double v_entry, double v_cruise, double v_exit,
+                                                  const ProfileLimits& limits,
+                                                  std::vector<PieceSensitivity>& sensitivity, double heading = 0.0,
+                                                  double climb = 0.0);
+
+/// Highest speed a leg can reach: the peak of the triangular profile from `v_entry` to `v_exit`
+/// over `distance` [m/s]. Cruise speeds above it give the same profile.
+double legPeakSpeed(double distance, double v_entry, double v_exit, const ProfileLimits& limits);
+
 /// A turn in place of signed angle `angle` [rad] at yaw rate `yaw_rate` [rad/s].
 Piece turnInPlace(double angle, double yaw_rate, double heading = 0.0);
 
