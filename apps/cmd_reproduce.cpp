@@ -1,6 +1,7 @@
 // `wattswath reproduce`: every registered paper section, written to docs/reproduction.md and --json.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -39,6 +40,39 @@ nlohmann::json reproRow(const std::string& quantity, double paper, double ours, 
   nlohmann::json j = {{"quantity", quantity}, {"paper", paper}, {"ours", ours}, {"unit", unit}, {"diff_pct", diff}};
   if (!note.empty()) j["note"] = note;
   return j;
+}
+
+std::string reproNumber(double x, int digits) {
+  if (!std::isfinite(x)) return "-";
+  char buf[64];
+  if (std::abs(x) >= 1000.0) {
+    std::snprintf(buf, sizeof buf, "%.0f", std::abs(x));
+    std::string s = buf, out;
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (i > 0 && (s.size() - i) % 3 == 0) out += ',';
+      out += s[i];
+    }
+    return (x < 0 ? "-" : "") + out;
+  }
+  const int before = x == 0.0 ? 1 : std::max(1, static_cast<int>(std::floor(std::log10(std::abs(x)))) + 1);
+  std::snprintf(buf, sizeof buf, "%.*f", std::max(0, digits - before), x);
+  return buf;
+}
+
+std::string reproMarkdownTable(const nlohmann::json& rows) {
+  std::string md = "| Quantity | Paper | Ours | Diff | Note |\n|---|---:|---:|---:|---|\n";
+  for (const auto& r : rows) {
+    const double diff = r.at("diff_pct").get<double>();
+    std::string note = r.value("note", "");
+    if (note.empty() && std::abs(diff) > 1.0) note = "unexplained";
+    char d[32];
+    std::snprintf(d, sizeof d, "%+.2f %%", diff);
+    const std::string unit = r.value("unit", "");
+    const std::string u = unit.empty() ? "" : " " + unit;
+    md += "| " + r.at("quantity").get<std::string>() + " | " + reproNumber(r.at("paper").get<double>()) + u + " | " +
+          reproNumber(r.at("ours").get<double>()) + u + " | " + d + " | " + note + " |\n";
+  }
+  return md;
 }
 
 ReproSection runAllReproSections(const ReproContext& ctx) {

@@ -27,6 +27,14 @@ struct ReproSection {
 nlohmann::json reproRow(const std::string& quantity, double paper, double ours, const std::string& unit,
                         const std::string& note = "");
 
+/// `x` rounded for a report: no decimals from 1,000 up (with thousands separators), else
+/// `digits` significant digits.
+std::string reproNumber(double x, int digits = 4);
+
+/// A Markdown table "| Quantity | Paper | Ours | Diff | Note |" of reproRow() rows; rows whose
+/// |diff| exceeds 1 % without a note get "unexplained" so that none goes unremarked.
+std::string reproMarkdownTable(const nlohmann::json& rows);
+
 /// A section producer.
 using ReproFn = ReproSection (*)(const ReproContext&);
 

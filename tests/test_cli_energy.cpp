@@ -75,3 +75,18 @@ TEST(CliEnergy, BadArgumentsGiveClearErrors) {
   expectError("turns --distance 100 --angle 45 --drag fancy" + v, "--drag");
   expectError("leg --distance 100 --speed 5 --vehicle /nonexistent.json", "nonexistent");
 }
+
+TEST(CliEnergy, ReproduceMarinsEveryDifferenceOver1PercentIsExplained) {
+  const auto r = run(cliBinary() + " reproduce --out /tmp/wattswath_test_reproduction.md --json 2>/dev/null");
+  ASSERT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.output).at("marins");
+  int rows = 0;
+  for (const char* table : {"hover", "optimal_velocity", "strategies_600m_45deg", "table5"}) {
+    for (const auto& row : j.at(table)) {
+      ++rows;
+      if (std::abs(row.at("diff_pct").get<double>()) > 1.0) EXPECT_TRUE(row.contains("note")) << row.dump();
+    }
+  }
+  EXPECT_EQ(rows, 29);  // 3 hover + 2 optimal velocity + 12 strategy + 12 Table V rows
+  EXPECT_NEAR(j.at("eq4_over_ideal").get<double>(), 2.0, 1e-12);
+}
