@@ -274,29 +274,6 @@ std::vector<std::string> checkQgcPlan(const std::string& json_text) {
   return problems;
 }
 
-std::string toGeoJson(const std::vector<LegRecord>& legs) {
-  json features = json::array();
-  for (size_t i = 0; i < legs.size(); ++i) {
-    const auto& l = legs[i];
-    features.push_back(
-        {{"type", "Feature"},
-         {"geometry",
-          {{"type", "LineString"},
-           {"coordinates", {{l.start.lon_deg, l.start.lat_deg}, {l.end.lon_deg, l.end.lat_deg}}}}},
-         {"properties",
-          {{"leg", i},
-           {"kind", l.kind},
-           {"role", l.role},
-           {"length_m", l.length_m},
-           {"speed_start_mps", l.speed_start_mps},
-           {"speed_cruise_mps", l.speed_cruise_mps},
-           {"speed_end_mps", l.speed_end_mps},
-           {"time_s", l.time_s},
-           {"energy_j", l.energy_j}}}});
-  }
-  return json({{"type", "FeatureCollection"}, {"features", features}}).dump(1) + "\n";
-}
-
 std::string toLegCsv(const std::vector<LegRecord>& legs) {
   std::ostringstream o;
   o << "leg,kind,role,start_lat_deg,start_lon_deg,end_lat_deg,end_lon_deg,length_m,speed_start_mps,"

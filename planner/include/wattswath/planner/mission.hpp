@@ -1,7 +1,7 @@
 #pragma once
 /// @file mission.hpp
-/// Mission files written from a plan: QGroundControl `.plan` (JSON), QGC WPL 110 `.waypoints`,
-/// GeoJSON of the path with per-leg speed and energy, and a CSV of legs. Geodetic coordinates
+/// Mission files written from a plan: QGroundControl `.plan` (JSON), QGC WPL 110 `.waypoints`
+/// and a CSV of legs. Geodetic coordinates
 /// exist only here, at the output boundary; the caller converts ENU metres with its frame.
 
 #include <string>
@@ -54,7 +54,7 @@ std::string toQgcWpl(const Mission& m);
 /// its JSON loader requires). Returns the problems found; empty means it loads.
 std::vector<std::string> checkQgcPlan(const std::string& json_text);
 
-/// One flown leg for the GeoJSON and CSV outputs.
+/// One flown leg for the CSV of legs (the GeoJSON path is written by geometry's coveragePathToGeoJson).
 struct LegRecord {
   GeoPoint start;                ///< [deg] where the leg starts
   GeoPoint end;                  ///< [deg] where the leg ends
@@ -67,10 +67,6 @@ struct LegRecord {
   double time_s = 0.0;           ///< [s] duration
   double energy_j = 0.0;         ///< [J] electrical energy
 };
-
-/// GeoJSON FeatureCollection: one LineString feature per leg with its speeds, time and energy
-/// as properties (coordinates [lon, lat] as RFC 7946 requires).
-std::string toGeoJson(const std::vector<LegRecord>& legs);
 
 /// CSV of legs with a header row (units in the column names).
 std::string toLegCsv(const std::vector<LegRecord>& legs);

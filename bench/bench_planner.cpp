@@ -1,0 +1,97 @@
+// Planner speed: the full energy search (all sweep angles coarse 10 deg then 1 deg, all start
+// corners, corner choices, cell order, transits, baselines) against a length-objective greedy plan
+// measured in the same run. Areas: the E-Spiral rectangle, 1 km^2 with 3 holes, 100 ha with 10
+// holes, and the IRIS+ real-flight area with its no-fly zone when ../shared/data is present
+// (built in from the coordinates of data/areas/iris_area.geojson when geoio's reader is absent).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/planner/coverage.hpp"
+
+namespace {
+using namespace wattswath;
+using geometry::Ring;
+
+energy::Vehicle vehicle() { return energy::loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json"); }
+
+Ring square(double cx, double cy, double h) { return {{cx - h, cy - h}, {cx - h, cy + h}, {cx + h, cy + h}, {cx + h, cy - h}}; }
+
+// A square field of side `side` m with `holes` square holes on a seeded jittered grid.
+planner::SurveyProblem field(double side, int holes, unsigned seed) {
+  planner::SurveyProblem p;
+  p.area.outer = {{0, 0}, {side, 0.1 * side}, {side * 1.05, side}, {-0.05 * side, side * 0.95}};
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> j(-0.1, 0.1);
+  const int per_row = static_cast<int>(std::ceil(std::sqrt(holes)));
+  for (int i = 0; i < holes; ++i) {
+    const double cx = side * ((i % per_row) + 0.5 + j(rng)) / per_row;
+    const double cy = side * 0.1 + side * 0.8 * ((i / per_row) + 0.5 + j(rng)) / per_row;
+    p.area.holes.push_back(square(cx, cy, 0.03 * side));
+  }
+  p.spacing = 30.0;
+  p.footprint = 33.0;
+  p.home = {-20, -20};
+  return p;
+}
+
+planner::SurveyProblem rectangle() {
+  planner::SurveyProblem p;
+  p.area.outer = {{0, 0}, {252, 0}, {252, 118}, {0, 118}};
+  p.spacing = 21.45;
+  p.footprint = 23.8;
+  p.home = {-5, -5};
+  return p;
+}
+
+// The IRIS+ real-flight area (about 150 m x 170 m) with a no-fly zone: a stand-in of the same size
+// and shape class; the CLI test and docs use the real file.
+planner::SurveyProblem irisLike() {
+  planner::SurveyProblem p;
+  p.area.outer = {{0, 0}, {85, -3}, {160, 10}, {150, 120}, {70, 170}, {-10, 110}};
+  p.no_fly = {square(70, 80, 12)};
+  p.spacing = 21.45;
+  p.footprint = 23.8;
+  p.home = {0, -10};
+  return p;
+}
+
+void run(benchmark::State& state, const planner::SurveyProblem& p, bool energy_search) {
+  const auto v = vehicle();
+  const auto model = energy::marinsModel(v);
+  planner::PlannerSettings ps;
+  if (!energy_search) {  // baseline: one angle (longest edge), greedy order, length objective only
+    ps.coarse_step_deg = 90.0;
+    ps.fine_step_deg = 90.0;
+    ps.threads = 1;
+    ps.exact_max_cells = 0;
+  }
+  for (auto _ : state) {
+    const auto r = planner::planCoverage(p, v, model, ps);
+    benchmark::DoNotOptimize(r.plan.flown.energy);
+  }
+}
+
+void BM_Rectangle_EnergySearch(benchmark::State& s) { run(s, rectangle(), true); }
+void BM_Rectangle_Baseline(benchmark::State& s) { run(s, rectangle(), false); }
+void BM_IrisArea_EnergySearch(benchmark::State& s) { run(s, irisLike(), true); }
+void BM_IrisArea_Baseline(benchmark::State& s) { run(s, irisLike(), false); }
+void BM_Field1km2_3holes_EnergySearch(benchmark::State& s) { run(s, field(1000, 3, 1), true); }
+void BM_Field1km2_3holes_Baseline(benchmark::State& s) { run(s, field(1000, 3, 1), false); }
+void BM_Field100ha_10holes_EnergySearch(benchmark::State& s) { run(s, field(1000, 10, 2), true); }
+void BM_Field100ha_10holes_Baseline(benchmark::State& s) { run(s, field(1000, 10, 2), false); }
+
+}  // namespace
+
+BENCHMARK(BM_Rectangle_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Rectangle_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_IrisArea_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_IrisArea_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Field1km2_3holes_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Field1km2_3holes_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Field100ha_10holes_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Field100ha_10holes_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK_MAIN();
