@@ -9,6 +9,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+namespace wattswath::report {
+class HtmlReport;
+}
+
 namespace wattswath::apps {
 
 /// Prints `j` as one JSON object on stdout (the --json contract).
@@ -29,6 +33,14 @@ void progress(const std::string& message);
 /// Writes `text` to `path` through a temporary file and a rename, so an interrupted run never
 /// leaves a half-written file; creates parent folders. Throws std::runtime_error naming the path.
 void writeTextFileAtomic(const std::string& path, const std::string& text);
+
+/// Adds the common `--report FILE.html` option (self-contained HTML report) and `--report-svg DIR`
+/// (the same figures as separate .svg files) to `cmd`.
+void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_dir);
+
+/// Writes `report` to `html_path` (atomically) and, when `svg_dir` is not empty, each figure as
+/// `svg_dir`/NAME.svg; prints the paths on stderr. Throws std::runtime_error naming a path it cannot write.
+void writeReport(const report::HtmlReport& report, const std::string& html_path, const std::string& svg_dir = "");
 
 // Register functions: one per apps/cmd_*.cpp. main.cpp calls each.
 void registerEnergyCommands(CLI::App& app);    ///< hover, vopt, leg, turns (cmd_energy.cpp)

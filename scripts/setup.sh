@@ -9,7 +9,7 @@ packages=(
   libboost-dev libboost-graph-dev libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
   libboost-program-options-dev
   libompl-dev libceres-dev libgeographiclib-dev nlohmann-json3-dev libcli11-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libpng-dev
 )
 # Tests only: headless Chromium renders the HTML reports; clang builds the fuzz targets.
 if [[ "${WATTSWATH_SETUP_TESTS:-1}" == "1" ]]; then

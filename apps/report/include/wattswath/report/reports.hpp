@@ -1,0 +1,192 @@
+#pragma once
+/// @file reports.hpp
+/// The wattswath reports as plain data structs and functions that turn them into self-contained
+/// HTML pages. Commands fill the structs from library results; nothing here computes physics
+/// (binned residual statistics and unit scaling are display only).
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/geometry/polygon.hpp"
+#include "wattswath/report/html.hpp"
+
+namespace wattswath::report {
+
+/// Free-form key/value lines shown at the top of a report (inputs, settings, totals).
+using Facts = std::vector<std::pair<std::string, std::string>>;
+
+// ---------------------------------------------------------------- plan report
+
+/// One leg of the chosen plan, as drawn on the map.
+struct PlanLeg {
+  std::vector<geometry::Point> points;  ///< [m] local ENU polyline (arcs sampled; >= 2 points, or 1 for a turn in place)
+  std::string role;                     ///< "sweep", "turn", "transit", "climb"
+  double speed = 0.0;                   ///< [m/s] cruise speed of the leg
+  double energy = 0.0;                  ///< [J] energy of the leg
+  double time = 0.0;                    ///< [s] duration of the leg
+  double length = 0.0;                  ///< [m] length flown
+};
+
+/// One candidate plan scored by the planner.
+struct PlanCandidate {
+  std::string pattern;       ///< "boustrophedon", "spiral", ...
+  double sweep_angle = 0.0;  ///< [rad] sweep direction (0 = lines along east); ignored for patterns without one
+  double energy = 0.0;       ///< [J] total energy of the candidate
+  bool chosen = false;       ///< the plan the planner kept
+};
+
+/// A reference plan to compare against (shortest path, ground-station default, ...).
+struct PlanBaseline {
+  std::string name;     ///< e.g. "shortest path", "ground-station default"
+  double energy = 0.0;  ///< [J] total energy
+  double length = 0.0;  ///< [m] path length (0 = unknown)
+  double time = 0.0;    ///< [s] flight time (0 = unknown)
+};
+
+/// Battery state over the mission (e.g. Hwang et al.'s Peukert battery with linear voltage drop).
+struct BatteryTrace {
+  std::vector<double> t;        ///< [s] time since take-off
+  std::vector<double> soc;      ///< [%] state of charge
+  std::vector<double> voltage;  ///< [V] terminal voltage (may be empty)
+  std::string model;            ///< which battery model, e.g. "Hwang et al. Eq. 19-21"
+};
+
+/// What to colour the map path by.
+enum class PlanColour { Speed, Power };
+
+/// Everything the plan report shows. Fill what you have; empty parts are left out with a note.
+struct PlanReportData {
+  std::string title = "wattswath plan";              ///< page title
+  Facts facts;                                       ///< vehicle, area, settings, totals
+  std::vector<geometry::PolygonWithHoles> areas;     ///< survey areas with holes [m]
+  std::vector<geometry::Ring> no_fly;                ///< no-fly zones [m]
+  std::optional<geometry::Point> home;               ///< [m] take-off / landing point
+  std::vector<PlanLeg> legs;                         ///< the chosen path in flight order
+  PlanColour colour_by = PlanColour::Speed;          ///< map colour (power = leg energy / leg time)
+  energy::Breakdown coverage;                        ///< energy of the coverage legs by effect and phase (Table III rows)
+  energy::Breakdown transit;                         ///< energy of the transits (empty effects = none)
+  std::vector<PlanCandidate> candidates;             ///< scored candidates (energy vs sweep angle)
+  std::vector<PlanBaseline> baselines;               ///< baselines drawn as horizontal lines
+  std::optional<BatteryTrace> battery;               ///< battery over the mission, when known
+};
+
+/// Builds the plan report (map, Table III-style breakdown + bar chart, candidates, battery).
+HtmlReport planReport(const PlanReportData& data);
+/// The plan report as one HTML page.
+std::string planReportHtml(const PlanReportData& data);
+
+// ---------------------------------------------------------------- validation report
+
+/// A span of one phase of flight in a log.
+struct PhaseSpan {
+  double t0 = 0.0;    ///< [s] start
+  double t1 = 0.0;    ///< [s] end
+  std::string phase;  ///< phase name ("accelerate", "cruise", "brake", "turn", "climb", "hover", ...)
+};
+
+/// Measured against modelled energy of one leg (or phase) of a log.
+struct LegEnergyPair {
+  std::string label;     ///< e.g. "leg 3" (hover tooltip)
+  double measured = 0.0;  ///< [J]
+  double modelled = 0.0;  ///< [J]
+};
+
+/// One step of the error staircase (model as given, refitted, + each added effect).
+struct ErrorStep {
+  std::string label;    ///< e.g. "vehicle physics", "+ parasitic_drag"
+  double error = 0.0;   ///< [ValidationReportData::error_unit] held-out error after this step
+};
+
+/// One row of the diagnosis table.
+struct DiagnosisRow {
+  std::string effect;                 ///< candidate effect name
+  double improvement_pct = 0.0;       ///< [%] held-out error reduction when added
+  std::string fitted;                 ///< fitted values with uncertainty and units, e.g. "C_D A = 0.019 +- 0.002 m^2"
+  std::string meaning;                ///< physical reading, e.g. "wind 4 m/s from 120 deg"
+  bool accepted = false;              ///< the diagnosis keeps it
+};
+
+/// Everything the validation report shows (one log; samples in time order).
+struct ValidationReportData {
+  std::string title = "wattswath model validation";  ///< page title
+  Facts facts;                                       ///< log, vehicle, model, totals
+  std::vector<double> t;                             ///< [s] sample times
+  std::vector<double> measured_power;                ///< [W] per sample
+  std::vector<double> modelled_power;                ///< [W] per sample
+  std::vector<double> speed;                         ///< [m/s] horizontal ground speed per sample (may be empty)
+  std::vector<double> climb_rate;                    ///< [m/s] vertical speed per sample (may be empty)
+  std::vector<double> heading;                       ///< [rad] ENU track heading per sample (may be empty)
+  std::vector<PhaseSpan> phases;                     ///< shaded on the power plot
+  std::vector<LegEnergyPair> legs;                   ///< leg energies, measured vs modelled
+  std::vector<ErrorStep> staircase;                  ///< error before/after each added effect
+  std::string error_label = "held-out RMSE";         ///< what the staircase error is
+  std::string error_unit = "W";                      ///< unit of the staircase error
+  std::vector<DiagnosisRow> diagnosis;               ///< candidate effects, best first
+  int residual_bins = 12;                            ///< [-] bins of the residual plots, 2..100
+};
+
+/// Builds the validation report (power over time, residuals, leg energies, staircase, diagnosis).
+/// Throws std::invalid_argument when per-sample vectors differ in length.
+HtmlReport validationReport(const ValidationReportData& data);
+/// The validation report as one HTML page.
+std::string validationReportHtml(const ValidationReportData& data);
+
+// ---------------------------------------------------------------- turn-strategy and speed reports
+
+/// One row of the turn-strategy comparison (Marins et al. Table V).
+struct TurnRow {
+  double beta = 0.0;            ///< [rad] interior angle between the branches
+  double leg_length = 0.0;      ///< [m] length of each branch
+  double sharp_energy = 0.0;    ///< [J] stop, turn in place, go (Eq. 12)
+  double rounded_energy = 0.0;  ///< [J] constant speed on the rounded path (Eq. 16)
+  double sharp_speed = 0.0;     ///< [m/s] cruise speed of the sharp stop
+  double rounded_speed = 0.0;   ///< [m/s] speed of the rounded path
+  std::optional<double> paper_saving_pct;  ///< [%] the paper's saving for this row, when it has one
+};
+
+/// Everything the turn-strategy report shows.
+struct TurnReportData {
+  std::string title = "wattswath turn strategies";  ///< page title
+  Facts facts;                                      ///< vehicle, limits, settings
+  std::vector<TurnRow> rows;                        ///< grouped by angle in the plots
+};
+
+/// Builds the turn-strategy report (energy vs leg length per angle, saving, Table V).
+HtmlReport turnReport(const TurnReportData& data);
+/// The turn-strategy report as one HTML page.
+std::string turnReportHtml(const TurnReportData& data);
+
+/// Optimal cruise speed against leg length for one model variant (Marins et al. Fig. 3).
+struct SpeedCurve {
+  std::string name;              ///< e.g. "full model", "no drag", "no kinetic"
+  std::vector<double> distance;  ///< [m] leg lengths
+  std::vector<double> speed;     ///< [m/s] optimal cruise speed per length
+};
+
+/// Energy of one leg against its cruise speed, with the optimum.
+struct LegEnergyCurve {
+  double distance = 0.0;       ///< [m] leg length
+  std::vector<double> speed;   ///< [m/s] cruise speeds
+  std::vector<double> energy;  ///< [J] leg energy per speed
+  double best_speed = 0.0;     ///< [m/s] optimum
+  double best_energy = 0.0;    ///< [J] energy at the optimum
+};
+
+/// Everything the optimal-speed report shows.
+struct SpeedReportData {
+  std::string title = "wattswath optimal cruise speed";  ///< page title
+  Facts facts;                                           ///< vehicle, limits
+  std::vector<SpeedCurve> curves;                        ///< v_opt vs distance per model variant
+  std::vector<LegEnergyCurve> legs;                      ///< E(v) for a few leg lengths
+  std::optional<double> v_max;                           ///< [m/s] speed limit (drawn as a line)
+};
+
+/// Builds the optimal-speed report (v_opt vs distance, leg energy vs speed).
+HtmlReport speedReport(const SpeedReportData& data);
+/// The optimal-speed report as one HTML page.
+std::string speedReportHtml(const SpeedReportData& data);
+
+}  // namespace wattswath::report

@@ -1,0 +1,592 @@
+// Line, bar and map figures rendered to self-contained SVG with the SvgWriter.
+#include "wattswath/report/charts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "wattswath/report/svg.hpp"
+
+namespace wattswath::report {
+
+namespace {
+
+constexpr double kCharWidth = 6.6;  // [px] rough width of one 12 px character, for layout
+constexpr double kLegendRow = 18.0;  // [px]
+const char* const kGrid = "#e3e3e3";
+const char* const kInk = "#222222";
+
+double textWidth(const std::string& s, double font = 12.0) { return kCharWidth * font / 12.0 * static_cast<double>(s.size()); }
+
+std::string axisTitle(const Axis& a, const char* which) {
+  if (a.label.empty() || a.unit.empty()) {
+    throw std::invalid_argument(std::string("chart: the ") + which + " axis needs a label and a unit (got label '" +
+                                a.label + "', unit '" + a.unit + "')");
+  }
+  return a.label + " [" + a.unit + "]";
+}
+
+/// Legend entry kinds.
+enum class LegendKind { Line, Points, Swatch };
+struct LegendItem {
+  std::string name;
+  std::string colour;
+  std::string dash;
+  LegendKind kind = LegendKind::Line;
+};
+
+/// Rows needed to lay the legend out in `width` px.
+std::vector<std::vector<LegendItem>> legendRows(const std::vector<LegendItem>& items, double width) {
+  std::vector<std::vector<LegendItem>> rows;
+  double x = 0.0;
+  for (const auto& it : items) {
+    const double w = 30.0 + textWidth(it.name) + 18.0;
+    if (rows.empty() || (x + w > width && !rows.back().empty())) {
+      rows.emplace_back();
+      x = 0.0;
+    }
+    rows.back().push_back(it);
+    x += w;
+  }
+  return rows;
+}
+
+void drawLegend(SvgWriter& svg, const std::vector<std::vector<LegendItem>>& rows, double x0, double y0) {
+  double y = y0;
+  for (const auto& row : rows) {
+    double x = x0;
+    for (const auto& it : row) {
+      const double cy = y + kLegendRow / 2;
+      if (it.kind == LegendKind::Swatch) {
+        svg.rect(x, cy - 6, 24, 12, {{"fill", it.colour}, {"fill-opacity", "0.6"}, {"stroke", it.colour}});
+      } else if (it.kind == LegendKind::Points) {
+        svg.leaf("circle", {{"cx", svgNum(x + 12)}, {"cy", svgNum(cy)}, {"r", "3"}, {"fill", it.colour}});
+      } else {
+        Attrs a = {{"stroke", it.colour}, {"stroke-width", "2.2"}};
+        if (!it.dash.empty()) a.push_back({"stroke-dasharray", it.dash});
+        svg.line(x, cy, x + 24, cy, a);
+      }
+      svg.text(x + 30, cy + 4, it.name, {{"fill", kInk}});
+      x += 30.0 + textWidth(it.name) + 18.0;
+    }
+    y += kLegendRow;
+  }
+}
+
+/// Maps data values to pixels along one axis.
+struct Scale {
+  double lo = 0, hi = 1, p0 = 0, p1 = 1;
+  bool log = false;
+  double t(double v) const { return log ? std::log10(v) : v; }
+  double operator()(double v) const { return p0 + (t(v) - t(lo)) / (t(hi) - t(lo)) * (p1 - p0); }
+  bool valid(double v) const { return std::isfinite(v) && (!log || v > 0.0); }
+};
+
+/// Axis ticks for the data range [lo, hi] and the axis settings.
+Ticks axisTicks(const Axis& a, double lo, double hi) {
+  if (a.include_zero && !a.log) {
+    lo = std::min(lo, 0.0);
+    hi = std::max(hi, 0.0);
+  }
+  if (a.min) lo = *a.min;
+  if (a.max) hi = *a.max;
+  if (a.log && (!(lo > 0.0) || !(hi > 0.0))) {
+    throw std::invalid_argument("chart: log axis '" + a.label + "' needs positive values and bounds");
+  }
+  Ticks t = a.log ? logTicks(lo, hi) : niceTicks(lo, hi);
+  if (a.min || a.max) {  // fixed ends: keep them exactly, drop ticks outside
+    const double flo = a.min ? *a.min : t.lo, fhi = a.max ? *a.max : t.hi;
+    if (!(fhi > flo)) throw std::invalid_argument("chart: axis '" + a.label + "' has max <= min");
+    Ticks k;
+    k.lo = flo;
+    k.hi = fhi;
+    const double eps = 1e-9 * (fhi - flo);
+    for (std::size_t i = 0; i < t.values.size(); ++i) {
+      if (t.values[i] >= flo - eps && t.values[i] <= fhi + eps) {
+        k.values.push_back(t.values[i]);
+        k.labels.push_back(t.labels[i]);
+      }
+    }
+    return k;
+  }
+  return t;
+}
+
+/// Running min/max over finite values.
+struct Range {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -std::numeric_limits<double>::infinity();
+  void add(double v, bool log) {
+    if (!std::isfinite(v) || (log && v <= 0.0)) return;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  bool empty() const { return lo > hi; }
+};
+
+/// Clips segment (x0,y0)-(x1,y1) to the box (Liang-Barsky). Returns false when fully outside.
+bool clipSegment(double& x0, double& y0, double& x1, double& y1, double bx0, double by0, double bx1, double by1) {
+  double t0 = 0.0, t1 = 1.0;
+  const double dx = x1 - x0, dy = y1 - y0;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {x0 - bx0, bx1 - x0, y0 - by0, by1 - y0};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+    } else {
+      const double r = q[i] / p[i];
+      if (p[i] < 0.0) {
+        if (r > t1) return false;
+        t0 = std::max(t0, r);
+      } else {
+        if (r < t0) return false;
+        t1 = std::min(t1, r);
+      }
+    }
+  }
+  const double nx0 = x0 + t0 * dx, ny0 = y0 + t0 * dy, nx1 = x0 + t1 * dx, ny1 = y0 + t1 * dy;
+  x0 = nx0;
+  y0 = ny0;
+  x1 = nx1;
+  y1 = ny1;
+  return true;
+}
+
+/// Path data "M..L.." for a polyline in pixels, clipped to the box; gaps at non-finite points.
+std::string clippedPathData(const std::vector<std::pair<double, double>>& px, double bx0, double by0, double bx1,
+                            double by1) {
+  std::string d;
+  double lastx = std::numeric_limits<double>::quiet_NaN(), lasty = lastx;
+  for (std::size_t i = 0; i + 1 < px.size(); ++i) {
+    double x0 = px[i].first, y0 = px[i].second, x1 = px[i + 1].first, y1 = px[i + 1].second;
+    if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1)) continue;
+    if (!clipSegment(x0, y0, x1, y1, bx0, by0, bx1, by1)) continue;
+    if (!(std::abs(x0 - lastx) < 1e-6 && std::abs(y0 - lasty) < 1e-6)) d += "M" + svgNum(x0) + " " + svgNum(y0);
+    d += "L" + svgNum(x1) + " " + svgNum(y1);
+    lastx = x1;
+    lasty = y1;
+  }
+  return d;
+}
+
+void checkSeries(const Series& s, std::size_t index) {
+  const auto name = "series " + std::to_string(index) + " '" + s.name + "'";
+  if (s.x.size() != s.y.size()) {
+    throw std::invalid_argument("chart: " + name + " has " + std::to_string(s.x.size()) + " x values but " +
+                                std::to_string(s.y.size()) + " y values");
+  }
+  if ((!s.y_low.empty() && s.y_low.size() != s.x.size()) || (!s.y_high.empty() && s.y_high.size() != s.x.size()) ||
+      (s.y_low.empty() != s.y_high.empty())) {
+    throw std::invalid_argument("chart: " + name + " band edges y_low/y_high must both have one value per x");
+  }
+}
+
+}  // namespace
+
+std::string renderSvg(const LineChart& c) {
+  const std::string xtitle = axisTitle(c.x, "x"), ytitle = axisTitle(c.y, "y");
+  Range xr, yr;
+  for (std::size_t i = 0; i < c.series.size(); ++i) {
+    const auto& s = c.series[i];
+    checkSeries(s, i);
+    for (std::size_t k = 0; k < s.x.size(); ++k) {
+      xr.add(s.x[k], c.x.log);
+      yr.add(s.y[k], c.y.log);
+      if (!s.y_low.empty()) {
+        yr.add(s.y_low[k], c.y.log);
+        yr.add(s.y_high[k], c.y.log);
+      }
+    }
+  }
+  for (const auto& m : c.markers) {
+    xr.add(m.x, c.x.log);
+    yr.add(m.y, c.y.log);
+  }
+  for (const auto& r : c.shaded) {
+    xr.add(r.x0, c.x.log);
+    xr.add(r.x1, c.x.log);
+  }
+  if (c.y_ref) yr.add(*c.y_ref, c.y.log);
+  if (xr.empty()) xr = {c.x.log ? 1.0 : 0.0, c.x.log ? 10.0 : 1.0};
+  if (yr.empty()) yr = {c.y.log ? 1.0 : 0.0, c.y.log ? 10.0 : 1.0};
+  if (c.diagonal) {  // measured vs modelled: same range on both axes
+    const double lo = std::min(xr.lo, yr.lo), hi = std::max(xr.hi, yr.hi);
+    xr = yr = {lo, hi};
+  }
+  const Ticks xt = axisTicks(c.x, xr.lo, xr.hi), yt = axisTicks(c.y, yr.lo, yr.hi);
+
+  // Legend: series with names, then distinct shaded-range labels.
+  std::vector<LegendItem> items;
+  for (std::size_t i = 0; i < c.series.size(); ++i) {
+    const auto& s = c.series[i];
+    if (s.name.empty()) continue;
+    items.push_back({s.name, s.colour.empty() ? seriesColour(i) : s.colour, s.dash,
+                     s.style == SeriesStyle::Points ? LegendKind::Points : LegendKind::Line});
+  }
+  std::map<std::string, bool> seen;
+  for (const auto& r : c.shaded) {
+    if (r.label.empty() || seen[r.label]) continue;
+    seen[r.label] = true;
+    items.push_back({r.label, r.colour, "", LegendKind::Swatch});
+  }
+  std::size_t ylabel_chars = 0;
+  for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
+  const double left = 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
+  const double right = 18.0, top = c.title.empty() ? 12.0 : 32.0, bottom = 46.0;
+  const auto rows = legendRows(items, c.width - left - right);
+  const double height = c.height + kLegendRow * static_cast<double>(rows.size()) + (rows.empty() ? 0.0 : 6.0);
+  const double px0 = left, px1 = c.width - right, py0 = top, py1 = c.height - bottom;
+  if (px1 - px0 < 50 || py1 - py0 < 50) throw std::invalid_argument("chart: figure too small for its axes");
+  const Scale sx{xt.lo, xt.hi, px0, px1, c.x.log}, sy{yt.lo, yt.hi, py1, py0, c.y.log};
+
+  SvgWriter svg(c.width, height);
+  svg.rect(0, 0, c.width, height, {{"fill", "#ffffff"}});
+  if (!c.title.empty()) svg.text(px0, 20, c.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
+
+  // Shaded ranges under everything.
+  for (const auto& r : c.shaded) {
+    if (!sx.valid(r.x0) || !sx.valid(r.x1)) continue;
+    const double a = std::clamp(sx(std::min(r.x0, r.x1)), px0, px1), b = std::clamp(sx(std::max(r.x0, r.x1)), px0, px1);
+    if (b <= a) continue;
+    svg.open("rect", {{"x", svgNum(a)}, {"y", svgNum(py0)}, {"width", svgNum(b - a)}, {"height", svgNum(py1 - py0)},
+                      {"fill", r.colour.empty() ? "#999999" : r.colour}, {"fill-opacity", "0.16"}});
+    svg.title(r.label + ": " + formatNumber(r.x0, 2) + " to " + formatNumber(r.x1, 2) + " " + c.x.unit);
+    svg.close();
+  }
+  // Grid and ticks.
+  svg.open("g", {{"class", "grid"}, {"stroke", kGrid}, {"stroke-width", "1"}});
+  for (const double v : xt.values) svg.line(sx(v), py0, sx(v), py1);
+  for (const double v : yt.values) svg.line(px0, sy(v), px1, sy(v));
+  svg.close();
+  svg.open("g", {{"class", "ticks"}, {"fill", kInk}, {"font-size", "11"}});
+  for (std::size_t i = 0; i < xt.values.size(); ++i) {
+    svg.text(sx(xt.values[i]), py1 + 15, xt.labels[i], {{"text-anchor", "middle"}});
+  }
+  for (std::size_t i = 0; i < yt.values.size(); ++i) {
+    svg.text(px0 - 5, sy(yt.values[i]) + 4, yt.labels[i], {{"text-anchor", "end"}});
+  }
+  svg.close();
+  svg.text((px0 + px1) / 2, py1 + 34, xtitle, {{"text-anchor", "middle"}, {"fill", kInk}});
+  svg.text(0, 0, ytitle,
+           {{"text-anchor", "middle"}, {"fill", kInk},
+            {"transform", "translate(14," + svgNum((py0 + py1) / 2) + ") rotate(-90)"}});
+
+  // Reference lines.
+  if (c.y_ref && sy.valid(*c.y_ref) && *c.y_ref >= std::min(yt.lo, yt.hi) && *c.y_ref <= std::max(yt.lo, yt.hi)) {
+    svg.line(px0, sy(*c.y_ref), px1, sy(*c.y_ref), {{"stroke", "#666666"}, {"stroke-width", "1"}});
+  }
+  if (c.diagonal) {
+    const double lo = std::max(xt.lo, yt.lo), hi = std::min(xt.hi, yt.hi);
+    if (hi > lo && sx.valid(lo) && sy.valid(lo)) {
+      svg.open("line", {{"x1", svgNum(sx(lo))}, {"y1", svgNum(sy(lo))}, {"x2", svgNum(sx(hi))}, {"y2", svgNum(sy(hi))},
+                        {"stroke", "#555555"}, {"stroke-width", "1.2"}, {"stroke-dasharray", "5 4"}});
+      svg.title("y = x");
+      svg.close();
+    }
+  }
+
+  // Series: bands, then lines, then points.
+  for (std::size_t i = 0; i < c.series.size(); ++i) {
+    const auto& s = c.series[i];
+    const std::string colour = s.colour.empty() ? seriesColour(i) : s.colour;
+    svg.open("g", {{"class", "series"}});
+    if (!s.name.empty()) svg.title(s.name);
+    if (!s.y_low.empty()) {
+      std::vector<std::pair<double, double>> up, lowv;
+      for (std::size_t k = 0; k < s.x.size(); ++k) {
+        if (!sx.valid(s.x[k]) || !sy.valid(s.y_low[k]) || !sy.valid(s.y_high[k])) continue;
+        const double x = std::clamp(sx(s.x[k]), px0, px1);
+        up.push_back({x, std::clamp(sy(s.y_high[k]), py0, py1)});
+        lowv.push_back({x, std::clamp(sy(s.y_low[k]), py0, py1)});
+      }
+      std::reverse(lowv.begin(), lowv.end());
+      up.insert(up.end(), lowv.begin(), lowv.end());
+      if (up.size() >= 3) svg.leaf("polygon", {{"points", svgPoints(up)}, {"fill", colour}, {"fill-opacity", "0.18"}, {"stroke", "none"}});
+    }
+    if (s.style != SeriesStyle::Points) {
+      std::vector<std::pair<double, double>> px;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      for (std::size_t k = 0; k < s.x.size(); ++k) {
+        const bool ok = sx.valid(s.x[k]) && sy.valid(s.y[k]);
+        const double X = ok ? sx(s.x[k]) : nan, Y = ok ? sy(s.y[k]) : nan;
+        px.push_back({X, Y});
+        if (s.style == SeriesStyle::Steps && k + 1 < s.x.size()) {
+          const bool ok2 = ok && sx.valid(s.x[k + 1]);
+          px.push_back({ok2 ? sx(s.x[k + 1]) : nan, Y});
+        }
+      }
+      const std::string d = clippedPathData(px, px0, py0, px1, py1);
+      if (!d.empty()) {
+        Attrs a = {{"d", d}, {"fill", "none"}, {"stroke", colour}, {"stroke-width", svgNum(s.width)},
+                   {"stroke-linejoin", "round"}};
+        if (!s.dash.empty()) a.push_back({"stroke-dasharray", s.dash});
+        svg.leaf("path", a);
+      }
+    }
+    if (s.style == SeriesStyle::Points || s.style == SeriesStyle::LineAndPoints) {
+      svg.open("g", {{"fill", colour}, {"fill-opacity", s.style == SeriesStyle::Points ? "0.55" : "1"}});
+      for (std::size_t k = 0; k < s.x.size(); ++k) {
+        if (!sx.valid(s.x[k]) || !sy.valid(s.y[k])) continue;
+        const double X = sx(s.x[k]), Y = sy(s.y[k]);
+        if (X < px0 - 0.5 || X > px1 + 0.5 || Y < py0 - 0.5 || Y > py1 + 0.5) continue;
+        svg.leaf("circle", {{"cx", svgNum(X)}, {"cy", svgNum(Y)}, {"r", "2.6"}});
+      }
+      svg.close();
+    }
+    svg.close();
+  }
+  // Markers on top.
+  for (const auto& m : c.markers) {
+    if (!sx.valid(m.x) || !sy.valid(m.y)) continue;
+    const double X = sx(m.x), Y = sy(m.y);
+    if (X < px0 - 0.5 || X > px1 + 0.5 || Y < py0 - 0.5 || Y > py1 + 0.5) continue;
+    svg.open("g", {{"class", "marker"}});
+    svg.title(m.label + " (" + formatNumber(m.x, 2) + " " + c.x.unit + ", " + formatNumber(m.y, 2) + " " + c.y.unit + ")");
+    svg.leaf("circle", {{"cx", svgNum(X)}, {"cy", svgNum(Y)}, {"r", "6"}, {"fill", "none"}, {"stroke", m.colour}, {"stroke-width", "2"}});
+    const bool leftSide = X > (px0 + px1) / 2;
+    svg.text(X + (leftSide ? -9 : 9), Y - 8, m.label, {{"fill", m.colour}, {"text-anchor", leftSide ? "end" : "start"}, {"font-weight", "bold"}});
+    svg.close();
+  }
+  svg.rect(px0, py0, px1 - px0, py1 - py0, {{"fill", "none"}, {"stroke", "#888888"}, {"stroke-width", "1"}});
+  drawLegend(svg, rows, px0, c.height - 4);
+  return svg.str();
+}
+
+std::string renderSvg(const BarChart& c) {
+  const std::string ytitle = axisTitle(c.y, "value");
+  if (c.y.log) throw std::invalid_argument("bar chart: a logarithmic value axis is not supported");
+  if (c.values.size() != c.series.size()) {
+    throw std::invalid_argument("bar chart '" + c.title + "': " + std::to_string(c.values.size()) + " value rows for " +
+                                std::to_string(c.series.size()) + " series");
+  }
+  for (std::size_t s = 0; s < c.values.size(); ++s) {
+    if (c.values[s].size() != c.categories.size()) {
+      throw std::invalid_argument("bar chart '" + c.title + "': series '" + c.series[s] + "' has " +
+                                  std::to_string(c.values[s].size()) + " values for " +
+                                  std::to_string(c.categories.size()) + " categories");
+    }
+  }
+  const std::size_t nc = c.categories.size(), ns = c.series.size();
+  Range r;
+  r.add(0.0, false);
+  for (std::size_t k = 0; k < nc; ++k) {
+    double pos = 0.0, neg = 0.0;
+    for (std::size_t s = 0; s < ns; ++s) {
+      const double v = c.values[s][k];
+      if (!std::isfinite(v)) continue;
+      if (c.stacked) {
+        (v >= 0 ? pos : neg) += v;
+      } else {
+        r.add(v, false);
+      }
+    }
+    r.add(pos, false);
+    r.add(neg, false);
+  }
+  const Ticks yt = axisTicks(c.y, r.lo, r.hi * (c.stacked ? 1.06 : 1.0));
+  auto colourOf = [&](std::size_t s) { return s < c.colours.size() && !c.colours[s].empty() ? c.colours[s] : seriesColour(s); };
+  std::vector<LegendItem> items;
+  for (std::size_t s = 0; s < ns; ++s) items.push_back({c.series[s], colourOf(s), "", LegendKind::Swatch});
+  std::size_t ylabel_chars = 0;
+  for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
+  const double left = 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
+  const double right = 18.0, top = c.title.empty() ? 12.0 : 32.0, bottom = c.category_label.empty() ? 30.0 : 46.0;
+  const auto rows = legendRows(items, c.width - left - right);
+  const double height = c.height + kLegendRow * static_cast<double>(rows.size()) + (rows.empty() ? 0.0 : 6.0);
+  const double px0 = left, px1 = c.width - right, py0 = top, py1 = c.height - bottom;
+  if (px1 - px0 < 50 || py1 - py0 < 50) throw std::invalid_argument("bar chart: figure too small for its axes");
+  const Scale sy{yt.lo, yt.hi, py1, py0, false};
+
+  SvgWriter svg(c.width, height);
+  svg.rect(0, 0, c.width, height, {{"fill", "#ffffff"}});
+  if (!c.title.empty()) svg.text(px0, 20, c.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
+  svg.open("g", {{"class", "grid"}, {"stroke", kGrid}});
+  for (const double v : yt.values) svg.line(px0, sy(v), px1, sy(v));
+  svg.close();
+  svg.open("g", {{"class", "ticks"}, {"fill", kInk}, {"font-size", "11"}});
+  for (std::size_t i = 0; i < yt.values.size(); ++i) svg.text(px0 - 5, sy(yt.values[i]) + 4, yt.labels[i], {{"text-anchor", "end"}});
+  svg.close();
+  svg.text(0, 0, ytitle,
+           {{"text-anchor", "middle"}, {"fill", kInk}, {"transform", "translate(14," + svgNum((py0 + py1) / 2) + ") rotate(-90)"}});
+  if (!c.category_label.empty()) svg.text((px0 + px1) / 2, py1 + 36, c.category_label, {{"text-anchor", "middle"}, {"fill", kInk}});
+
+  const double band = nc ? (px1 - px0) / static_cast<double>(nc) : 0.0;
+  const double group = 0.76 * band;
+  const double barw = c.stacked || ns == 0 ? group : group / static_cast<double>(ns);
+  for (std::size_t k = 0; k < nc; ++k) {
+    const double gx = px0 + band * static_cast<double>(k) + (band - group) / 2;
+    const double fs = std::min(12.0, std::max(8.0, band / std::max<std::size_t>(1, c.categories[k].size()) / 0.6));
+    svg.text(px0 + band * (static_cast<double>(k) + 0.5), py1 + 16, c.categories[k],
+             {{"text-anchor", "middle"}, {"fill", kInk}, {"font-size", svgNum(fs)}});
+    double pos = 0.0, neg = 0.0;
+    for (std::size_t s = 0; s < ns; ++s) {
+      const double v = c.values[s][k];
+      if (!std::isfinite(v) || v == 0.0) continue;
+      double a, b, x;
+      if (c.stacked) {
+        double& base = v >= 0 ? pos : neg;
+        a = base;
+        b = base + v;
+        base = b;
+        x = gx;
+      } else {
+        a = 0.0;
+        b = v;
+        x = gx + barw * static_cast<double>(s);
+      }
+      const double y0 = std::clamp(sy(std::max(a, b)), py0, py1), y1 = std::clamp(sy(std::min(a, b)), py0, py1);
+      svg.open("rect", {{"x", svgNum(x)}, {"y", svgNum(y0)}, {"width", svgNum(std::max(1.0, barw - 1.0))},
+                        {"height", svgNum(std::max(0.0, y1 - y0))}, {"fill", colourOf(s)}, {"stroke", "#ffffff"},
+                        {"stroke-width", "0.5"}});
+      svg.title(c.series[s] + ", " + c.categories[k] + ": " + formatSignificant(v) + " " + c.y.unit);
+      svg.close();
+    }
+    if (c.stacked && ns > 1 && pos > 0.0) {
+      svg.text(gx + group / 2, std::clamp(sy(pos), py0, py1) - 4, formatSignificant(pos),
+               {{"text-anchor", "middle"}, {"font-size", "10"}, {"fill", kInk}});
+    }
+  }
+  if (sy.valid(0.0) && yt.lo <= 0.0 && yt.hi >= 0.0) svg.line(px0, sy(0.0), px1, sy(0.0), {{"stroke", "#444444"}});
+  svg.rect(px0, py0, px1 - px0, py1 - py0, {{"fill", "none"}, {"stroke", "#888888"}});
+  drawLegend(svg, rows, px0, c.height - 4);
+  return svg.str();
+}
+
+std::string renderSvg(const MapView& m) {
+  Range xr, yr, vr;
+  auto addPt = [&](const geometry::Point& p) {
+    xr.add(p.x(), false);
+    yr.add(p.y(), false);
+  };
+  for (const auto& a : m.areas) {
+    for (const auto& p : a.outer) addPt(p);
+    for (const auto& h : a.holes) for (const auto& p : h) addPt(p);
+  }
+  for (const auto& z : m.no_fly) for (const auto& p : z) addPt(p);
+  for (const auto& l : m.path) {
+    for (const auto& p : l.points) addPt(p);
+    vr.add(l.value, false);
+  }
+  for (const auto& k : m.markers) addPt(k.position);
+  if (xr.empty() || yr.empty()) throw std::invalid_argument("map '" + m.title + "': nothing to draw");
+  const bool hasPath = !m.path.empty();
+  if (hasPath && (m.value_label.empty() || m.value_unit.empty())) {
+    throw std::invalid_argument("map '" + m.title + "': the path colour needs value_label and value_unit");
+  }
+  const double top = m.title.empty() ? 12.0 : 32.0, bottom = 12.0, left = 12.0;
+  const double right = hasPath ? 110.0 : 12.0;
+  const double pw = m.width - left - right, ph = m.height - top - bottom;
+  const double dx = std::max(xr.hi - xr.lo, 1.0), dy = std::max(yr.hi - yr.lo, 1.0);
+  const double scale = 0.94 * std::min(pw / dx, ph / dy);  // [px/m]
+  const double cx = (xr.lo + xr.hi) / 2, cy = (yr.lo + yr.hi) / 2;
+  const double ox = left + pw / 2, oy = top + ph / 2;
+  auto X = [&](double x) { return ox + (x - cx) * scale; };
+  auto Y = [&](double y) { return oy - (y - cy) * scale; };
+  auto ringData = [&](const geometry::Ring& r) {
+    std::string d;
+    for (std::size_t i = 0; i < r.size(); ++i) d += (i ? "L" : "M") + svgNum(X(r[i].x())) + " " + svgNum(Y(r[i].y()));
+    return d + "Z";
+  };
+
+  SvgWriter svg(m.width, m.height);
+  svg.rect(0, 0, m.width, m.height, {{"fill", "#ffffff"}});
+  if (!m.title.empty()) svg.text(left, 20, m.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
+  for (const auto& a : m.areas) {
+    std::string d = ringData(a.outer);
+    for (const auto& h : a.holes) d += ringData(h);
+    svg.open("path", {{"d", d}, {"fill", "#e8eef3"}, {"fill-rule", "evenodd"}, {"stroke", "#4d4d4d"}, {"stroke-width", "1.4"}});
+    svg.title("survey area: " + formatNumber(geometry::area(a) / 1e4, 3) + " ha, " + std::to_string(a.holes.size()) + " hole(s)");
+    svg.close();
+  }
+  for (const auto& z : m.no_fly) {
+    svg.open("path", {{"d", ringData(z)}, {"fill", "#D55E00"}, {"fill-opacity", "0.22"}, {"stroke", "#D55E00"},
+                      {"stroke-width", "1.4"}, {"stroke-dasharray", "5 3"}});
+    svg.title("no-fly zone");
+    svg.close();
+  }
+  const double vlo = vr.empty() ? 0.0 : vr.lo, vhi = vr.empty() ? 1.0 : (vr.hi > vr.lo ? vr.hi : vr.lo + 1.0);
+  svg.open("g", {{"class", "path"}, {"fill", "none"}, {"stroke-width", "2.6"}, {"stroke-linecap", "round"}, {"stroke-linejoin", "round"}});
+  for (const auto& l : m.path) {
+    std::vector<std::pair<double, double>> pts;
+    for (const auto& p : l.points) {
+      if (std::isfinite(p.x()) && std::isfinite(p.y())) pts.push_back({X(p.x()), Y(p.y())});
+    }
+    if (pts.size() < 2) continue;
+    Attrs a = {{"points", svgPoints(pts)}, {"stroke", valueColour((l.value - vlo) / (vhi - vlo))}};
+    if (l.dashed) a.push_back({"stroke-dasharray", "6 4"});
+    svg.open("polyline", a);
+    if (!l.tooltip.empty()) svg.title(l.tooltip);
+    svg.close();
+  }
+  svg.close();
+  for (const auto& k : m.markers) {
+    const double x = X(k.position.x()), y = Y(k.position.y());
+    svg.open("g", {{"class", "marker"}});
+    svg.title(k.label + " (" + formatNumber(k.position.x(), 1) + " m E, " + formatNumber(k.position.y(), 1) + " m N)");
+    const Attrs style = {{"fill", k.colour}, {"stroke", "#ffffff"}, {"stroke-width", "1.5"}};
+    Attrs a;
+    if (k.shape == MapMarker::Shape::Square) {
+      a = {{"x", svgNum(x - 6)}, {"y", svgNum(y - 6)}, {"width", "12"}, {"height", "12"}};
+      a.insert(a.end(), style.begin(), style.end());
+      svg.leaf("rect", a);
+    } else if (k.shape == MapMarker::Shape::Triangle) {
+      a = {{"points", svgPoints({{x, y - 8}, {x - 7, y + 5}, {x + 7, y + 5}})}};
+      a.insert(a.end(), style.begin(), style.end());
+      svg.leaf("polygon", a);
+    } else {
+      a = {{"cx", svgNum(x)}, {"cy", svgNum(y)}, {"r", "6"}};
+      a.insert(a.end(), style.begin(), style.end());
+      svg.leaf("circle", a);
+    }
+    svg.text(x + 9, y - 7, k.label, {{"fill", k.colour}, {"font-weight", "bold"}, {"stroke", "#ffffff"},
+                                     {"stroke-width", "3"}, {"paint-order", "stroke"}});
+    svg.close();
+  }
+  // North arrow (top left of the map area).
+  svg.open("g", {{"class", "north"}, {"fill", kInk}});
+  svg.leaf("polygon", {{"points", svgPoints({{left + 14, top + 4}, {left + 8, top + 20}, {left + 14, top + 16}, {left + 20, top + 20}})}});
+  svg.text(left + 14, top + 33, "N", {{"text-anchor", "middle"}, {"font-weight", "bold"}});
+  svg.close();
+  // Scale bar: a round length near a fifth of the map width.
+  {
+    const double target = 0.2 * pw / scale;
+    const double mag = std::pow(10.0, std::floor(std::log10(target)));
+    double len = mag;
+    for (const double f : {1.0, 2.0, 5.0}) {
+      if (f * mag <= target) len = f * mag;
+    }
+    const double bx = left + 8, by = m.height - bottom - 10, bw = len * scale;
+    svg.open("g", {{"class", "scalebar"}});
+    svg.rect(bx, by - 5, bw / 2, 5, {{"fill", kInk}});
+    svg.rect(bx + bw / 2, by - 5, bw / 2, 5, {{"fill", "#ffffff"}, {"stroke", kInk}});
+    const std::string label = len >= 1000 ? formatNumber(len / 1000, len >= 10000 ? 0 : 1) + " km" : formatNumber(len, len < 1 ? 2 : 0) + " m";
+    svg.text(bx + bw + 6, by, label, {{"fill", kInk}, {"font-size", "11"}});
+    svg.close();
+  }
+  // Colour bar.
+  if (hasPath) {
+    const double bx = m.width - right + 22, bw = 16, b0 = top + 30, b1 = m.height - bottom - 30;
+    const int n = 48;
+    svg.open("g", {{"class", "colourbar"}});
+    svg.text(bx - 6, top + 12, m.value_label, {{"fill", kInk}});
+    svg.text(bx - 6, top + 26, "[" + m.value_unit + "]", {{"fill", kInk}});
+    for (int i = 0; i < n; ++i) {
+      const double t0 = static_cast<double>(i) / n;
+      svg.rect(bx, b1 - (b1 - b0) * (t0 + 1.0 / n), bw, (b1 - b0) / n + 0.6, {{"fill", valueColour(t0 + 0.5 / n)}});
+    }
+    svg.rect(bx, b0, bw, b1 - b0, {{"fill", "none"}, {"stroke", "#666666"}});
+    const Ticks t = niceTicks(vlo, vhi, 5);
+    for (std::size_t i = 0; i < t.values.size(); ++i) {
+      if (t.values[i] < vlo - 1e-9 * (vhi - vlo) || t.values[i] > vhi + 1e-9 * (vhi - vlo)) continue;
+      const double y = b1 - (t.values[i] - vlo) / (vhi - vlo) * (b1 - b0);
+      svg.line(bx + bw, y, bx + bw + 4, y, {{"stroke", kInk}});
+      svg.text(bx + bw + 7, y + 4, t.labels[i], {{"fill", kInk}, {"font-size", "11"}});
+    }
+    svg.close();
+  }
+  return svg.str();
+}
+
+}  // namespace wattswath::report

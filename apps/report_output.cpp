@@ -1,0 +1,28 @@
+// Writing reports: the HTML page and, on request, its figures as separate SVG files.
+#include <filesystem>
+
+#include "cli.hpp"
+#include "wattswath/report/html.hpp"
+
+namespace wattswath::apps {
+
+void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_dir) {
+  cmd->add_option("--report", html_path, "Write a self-contained HTML report (inline SVG, no network) to this file");
+  cmd->add_option("--report-svg", svg_dir, "Also write each report figure as DIR/NAME.svg (for papers)");
+}
+
+void writeReport(const report::HtmlReport& report, const std::string& html_path, const std::string& svg_dir) {
+  if (!html_path.empty()) {
+    writeTextFileAtomic(html_path, report.html());
+    progress("report: " + html_path);
+  }
+  if (!svg_dir.empty()) {
+    for (const auto& f : report::svgFiles(report)) {
+      const std::string path = (std::filesystem::path(svg_dir) / f.file_name).string();
+      writeTextFileAtomic(path, f.content);
+      progress("figure: " + path);
+    }
+  }
+}
+
+}  // namespace wattswath::apps

@@ -1,0 +1,160 @@
+// Renders every report in headless Chromium and checks what a reader would see: the page loads
+// with no console messages (no script errors, no blocked network loads), every SVG is in the DOM
+// and well formed for a real XML parser, and the screenshot is not blank. Registered only when
+// chromium and libpng are found (scripts/setup.sh installs chromium for tests).
+#include <png.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "report_samples.hpp"
+#include "test_util.hpp"
+#include "xml_check.hpp"
+
+namespace fs = std::filesystem;
+using namespace wattswath::test;
+
+namespace {
+
+/// What Chromium made of a page.
+struct Rendered {
+  int status = -1;     ///< exit status of chromium
+  std::string dom;     ///< serialised DOM after load (--dump-dom)
+  std::string log;     ///< chromium's stderr
+  int console = 0;     ///< console messages (script errors, CSP violations, ...)
+};
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+/// Loads `file` in headless Chromium; with `png` also takes a `width` x `height` screenshot.
+Rendered render(const std::string& file, const std::string& png = "", int width = 1200, int height = 1600) {
+  const fs::path profile = fs::temp_directory_path() / ("wattswath-chromium-" + std::to_string(::getpid()) + "-" +
+                                                        fs::path(file).stem().string());
+  const std::string err = profile.string() + ".log";
+  std::string cmd = "timeout 120 '" + std::string(WATTSWATH_CHROMIUM) +
+                    "' --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking"
+                    " --disable-component-update --disable-sync --hide-scrollbars --enable-logging=stderr --v=0"
+                    " --user-data-dir='" + profile.string() + "'";
+  if (!png.empty()) {
+    cmd += " --screenshot='" + png + "' --window-size=" + std::to_string(width) + "," + std::to_string(height);
+  }
+  cmd += " --dump-dom 'file://" + fs::absolute(file).string() + "' 2>'" + err + "'";
+  Rendered r;
+  const auto res = run(cmd);
+  r.status = res.status;
+  r.dom = res.output;
+  r.log = readFile(err);
+  r.console = countOf(r.log, ":CONSOLE");
+  std::error_code ec;
+  fs::remove_all(profile, ec);
+  fs::remove(err, ec);
+  return r;
+}
+
+/// Pixel statistics of a screenshot.
+struct PngStats {
+  int width = 0, height = 0;
+  double non_white = 0.0;  ///< share of pixels that are not (near) white
+  int colours = 0;         ///< distinct colours at 5 bits per channel
+};
+
+PngStats pngStats(const std::string& path) {
+  png_image img{};
+  img.version = PNG_IMAGE_VERSION;
+  PngStats s;
+  if (!png_image_begin_read_from_file(&img, path.c_str())) return s;
+  img.format = PNG_FORMAT_RGB;
+  std::vector<unsigned char> buf(PNG_IMAGE_SIZE(img));
+  if (!png_image_finish_read(&img, nullptr, buf.data(), 0, nullptr)) return s;
+  s.width = static_cast<int>(img.width);
+  s.height = static_cast<int>(img.height);
+  std::set<int> colours;
+  std::size_t nonWhite = 0;
+  for (std::size_t i = 0; i + 2 < buf.size(); i += 3) {
+    const int r = buf[i], g = buf[i + 1], b = buf[i + 2];
+    if (r < 245 || g < 245 || b < 245) ++nonWhite;
+    colours.insert((r >> 3) << 10 | (g >> 3) << 5 | (b >> 3));
+  }
+  s.non_white = static_cast<double>(nonWhite) / (static_cast<double>(buf.size()) / 3.0);
+  s.colours = static_cast<int>(colours.size());
+  return s;
+}
+
+std::string renderDir() {
+  const std::string d = WATTSWATH_RENDER_DIR;
+  fs::create_directories(d);
+  return d;
+}
+
+/// Writes `report` as `name`.html and its figures as `name`.xhtml (strict XML), renders both in
+/// Chromium and checks them. The screenshot stays in the render folder for people to look at.
+void checkReport(const wr::HtmlReport& report, const std::string& name, int min_figures) {
+  const std::string dir = renderDir();
+  const std::string html = dir + "/" + name + ".html", png = dir + "/" + name + ".png", xhtml = dir + "/" + name + ".xhtml";
+  writeFile(html, report.html());
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<html xmlns=\"http://www.w3.org/1999/xhtml\"><body>\n";
+  for (const auto& f : report.figures()) x += f.svg;
+  writeFile(xhtml, x + "</body></html>\n");
+
+  const Rendered page = render(html, png);
+  ASSERT_EQ(page.status, 0) << page.log;
+  EXPECT_EQ(page.console, 0) << "console messages while loading " << html << ":\n" << page.log;
+  ASSERT_GE(static_cast<int>(report.figures().size()), min_figures);
+  EXPECT_EQ(countOf(page.dom, "<svg"), static_cast<int>(report.figures().size())) << "SVGs missing from the DOM";
+  EXPECT_EQ(page.dom.find("parsererror"), std::string::npos);
+  // Every SVG in the DOM has drawn content.
+  for (std::size_t p = page.dom.find("<svg"); p != std::string::npos; p = page.dom.find("<svg", p + 4)) {
+    const std::size_t e = page.dom.find("</svg>", p);
+    ASSERT_NE(e, std::string::npos);
+    const std::string svg = page.dom.substr(p, e - p);
+    EXPECT_GE(countOf(svg, "<path") + countOf(svg, "<polyline") + countOf(svg, "<rect") + countOf(svg, "<circle") + countOf(svg, "<line"), 5)
+        << "an SVG without drawn content in " << html;
+    EXPECT_GE(countOf(svg, "<text"), 3) << "an SVG without labels in " << html;
+  }
+  const PngStats st = pngStats(png);
+  EXPECT_EQ(st.width, 1200);
+  EXPECT_EQ(st.height, 1600);
+  EXPECT_GT(st.non_white, 0.02) << png << " is (nearly) blank";
+  EXPECT_GT(st.colours, 40) << png << " has too few colours to hold figures";
+
+  const Rendered strict = render(xhtml);
+  ASSERT_EQ(strict.status, 0) << strict.log;
+  EXPECT_EQ(strict.dom.find("parsererror"), std::string::npos) << "XML errors in the figures of " << name << ":\n" << strict.dom.substr(0, 2000);
+  EXPECT_EQ(countOf(strict.dom, "<svg"), static_cast<int>(report.figures().size()));
+}
+
+}  // namespace
+
+TEST(ReportRender, ChecksCanFail) {  // negative controls: a blank page, a script, a broken SVG
+  const std::string dir = renderDir();
+  writeFile(dir + "/control-blank.html",
+            "<!DOCTYPE html><html><head><meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'\">"
+            "</head><body><script>console.log(1)</script></body></html>");
+  const Rendered blank = render(dir + "/control-blank.html", dir + "/control-blank.png", 400, 300);
+  ASSERT_EQ(blank.status, 0) << blank.log;
+  EXPECT_GE(blank.console, 1) << "a blocked inline script must show up as a console message";
+  EXPECT_LT(pngStats(dir + "/control-blank.png").non_white, 0.01);
+  writeFile(dir + "/control-broken.xhtml",
+            "<html xmlns=\"http://www.w3.org/1999/xhtml\"><body><svg xmlns=\"http://www.w3.org/2000/svg\"><g></svg></body></html>");
+  EXPECT_NE(render(dir + "/control-broken.xhtml").dom.find("parsererror"), std::string::npos);
+}
+
+TEST(ReportRender, PlanReport) { checkReport(wr::planReport(samplePlan()), "sample-plan", 5); }
+TEST(ReportRender, ValidationReport) { checkReport(wr::validationReport(sampleValidation()), "sample-validation", 6); }
+TEST(ReportRender, TurnReport) { checkReport(wr::turnReport(sampleTurns()), "sample-turns", 2); }
+TEST(ReportRender, SpeedReport) { checkReport(wr::speedReport(sampleSpeed()), "sample-speed", 2); }

@@ -1,0 +1,254 @@
+// The SVG/HTML report toolkit: escaping, finite numbers, ticks, well-formed figures, units on axes.
+#include <cmath>
+#include <limits>
+#include <regex>
+
+#include <gtest/gtest.h>
+
+#include "wattswath/report/charts.hpp"
+#include "wattswath/report/html.hpp"
+#include "wattswath/report/svg.hpp"
+#include "xml_check.hpp"
+
+namespace wr = wattswath::report;
+using wattswath::test::countOf;
+using wattswath::test::xmlProblem;
+
+namespace {
+
+wr::LineChart sampleLine() {
+  wr::LineChart c;
+  c.title = "power <measured> & \"modelled\"";
+  c.x = {"time", "s"};
+  c.y = {"power", "W"};
+  wr::Series a{"measured", {0, 1, 2, 3, 4}, {100, 180, 150, 160, 90}};
+  wr::Series b{"modelled", {0, 1, 2, 3, 4}, {110, 170, 155, 150, 95}};
+  b.style = wr::SeriesStyle::LineAndPoints;
+  b.dash = wr::seriesDash(1);
+  c.series = {a, b};
+  c.shaded = {{0, 1, "accelerate", "#E69F00"}, {1, 3, "cruise", "#56B4E9"}, {3, 4, "brake", "#CC79A7"}};
+  return c;
+}
+
+/// Extracts every numeric attribute value of `attr` in `svg`.
+std::vector<double> attrValues(const std::string& svg, const std::string& attr) {
+  std::vector<double> out;
+  const std::regex re(" " + attr + "=\"([-0-9.]+)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it) {
+    out.push_back(std::stod((*it)[1]));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(ReportSvg, EscapesAllMarkupCharacters) {
+  EXPECT_EQ(wr::escapeXml("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+  EXPECT_EQ(wr::escapeXml(std::string("x\x01y")), "x y");  // control characters are not XML
+}
+
+TEST(ReportSvg, NumbersAreFiniteAndShort) {
+  EXPECT_EQ(wr::svgNum(1.0), "1");
+  EXPECT_EQ(wr::svgNum(-0.001), "0");
+  EXPECT_EQ(wr::svgNum(12.345), "12.35");
+  EXPECT_THROW(wr::svgNum(std::nan("")), std::logic_error);
+  EXPECT_THROW(wr::svgNum(std::numeric_limits<double>::infinity()), std::logic_error);
+  EXPECT_EQ(wr::formatNumber(std::nan(""), 2), "-");
+  EXPECT_EQ(wr::formatNumber(-0.0001, 2), "0.00");
+  EXPECT_EQ(wr::formatSignificant(1234.6), "1235");
+  EXPECT_EQ(wr::formatSignificant(0.012345), "0.0123");
+}
+
+TEST(ReportSvg, NiceTicksCoverTheRangeWithRoundSteps) {
+  const auto t = wr::niceTicks(0.3, 9.3, 6);
+  ASSERT_GE(t.values.size(), 3u);
+  EXPECT_LE(t.lo, 0.3);
+  EXPECT_GE(t.hi, 9.3);
+  EXPECT_EQ(t.labels.front(), "0");
+  EXPECT_EQ(t.labels.back(), "10");
+  const double step = t.values[1] - t.values[0];
+  EXPECT_NEAR(step, 2.0, 1e-12);
+  const auto small = wr::niceTicks(0.0, 0.9, 4);
+  EXPECT_NEAR(small.values[1] - small.values[0], 0.25, 1e-12);
+  EXPECT_EQ(small.labels[1], "0.25");
+  const auto flat = wr::niceTicks(5.0, 5.0);  // degenerate range widened
+  EXPECT_LT(flat.lo, 5.0);
+  EXPECT_GT(flat.hi, 5.0);
+  EXPECT_THROW(wr::niceTicks(0.0, std::nan("")), std::invalid_argument);
+  const auto lg = wr::logTicks(3.0, 400.0);
+  EXPECT_DOUBLE_EQ(lg.lo, 1.0);
+  EXPECT_DOUBLE_EQ(lg.hi, 1000.0);
+  EXPECT_THROW(wr::logTicks(0.0, 10.0), std::invalid_argument);
+}
+
+TEST(ReportSvg, ColoursArePrintSafeHex) {
+  const std::regex hex("#[0-9a-fA-F]{6}");
+  for (std::size_t i = 0; i < 10; ++i) EXPECT_TRUE(std::regex_match(wr::seriesColour(i), hex));
+  EXPECT_NE(wr::seriesColour(0), wr::seriesColour(1));
+  for (double t : {-1.0, 0.0, 0.3, 1.0, 2.0, std::nan("")}) EXPECT_TRUE(std::regex_match(wr::valueColour(t), hex)) << t;
+  EXPECT_NE(wr::valueColour(0.0), wr::valueColour(1.0));
+  EXPECT_NE(wr::valueColour(1.0), "#fde725");  // the faint yellow end is left out
+}
+
+TEST(ReportSvg, WriterChecksNesting) {
+  wr::SvgWriter w(100, 50);
+  w.open("g");
+  EXPECT_THROW(w.str(), std::logic_error);
+  w.close();
+  EXPECT_THROW(w.close(), std::logic_error);
+  EXPECT_EQ(xmlProblem(w.str()), "");
+}
+
+TEST(ReportSvg, XmlCheckerCatchesBrokenDocuments) {  // the checker itself must be able to fail
+  EXPECT_NE(xmlProblem("<svg><g></svg>"), "");
+  EXPECT_NE(xmlProblem("<svg x=\"nan\"/>"), "");
+  EXPECT_NE(xmlProblem("<svg>a & b</svg>"), "");
+  EXPECT_NE(xmlProblem("<svg a=\"1\" a=\"2\"/>"), "");
+  EXPECT_EQ(xmlProblem("<svg a=\"1\"><t>&lt;</t></svg>"), "");
+}
+
+TEST(ReportSvg, LineChartIsWellFormedWithUnitsLegendAndPhases) {
+  auto c = sampleLine();
+  c.series[0].y[2] = std::nan("");  // a gap, never "nan" in the output
+  c.diagonal = false;
+  c.markers = {{2, 150, "chosen"}};
+  const std::string svg = wr::renderSvg(c);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_NE(svg.find("time [s]"), std::string::npos);
+  EXPECT_NE(svg.find("power [W]"), std::string::npos);
+  EXPECT_NE(svg.find("power &lt;measured&gt; &amp; &quot;modelled&quot;"), std::string::npos);
+  EXPECT_NE(svg.find(">measured</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">cruise</text>"), std::string::npos);  // phase swatch in the legend
+  EXPECT_EQ(countOf(svg, "fill-opacity=\"0.16\""), 3);           // three shaded phases
+  EXPECT_EQ(svg.find("<script"), std::string::npos);
+  EXPECT_EQ(svg.find("id="), std::string::npos);  // no ids that could collide in one page
+  // Every drawn coordinate lies inside the figure.
+  for (const char* a : {"x", "y", "cx", "cy", "x1", "x2", "y1", "y2"}) {
+    for (const double v : attrValues(svg, a)) {
+      EXPECT_GE(v, -1.0) << a;
+      EXPECT_LE(v, c.width + 1.0) << a;
+    }
+  }
+}
+
+TEST(ReportSvg, AxesWithoutUnitsAreRejected) {
+  auto c = sampleLine();
+  c.y.unit = "";
+  EXPECT_THROW(wr::renderSvg(c), std::invalid_argument);
+  c = sampleLine();
+  c.series[1].y.pop_back();
+  EXPECT_THROW(wr::renderSvg(c), std::invalid_argument);
+  c = sampleLine();
+  c.x.log = true;  // x includes 0: a log axis cannot show it
+  c.x.min = 0.0;
+  EXPECT_THROW(wr::renderSvg(c), std::invalid_argument);
+}
+
+TEST(ReportSvg, DiagonalAndLogAxes) {
+  wr::LineChart c;
+  c.x = {"modelled leg energy", "kJ"};
+  c.y = {"measured leg energy", "kJ"};
+  c.diagonal = true;
+  c.series = {{"legs", {1, 2, 3}, {1.1, 1.9, 3.3}}};
+  c.series[0].style = wr::SeriesStyle::Points;
+  std::string svg = wr::renderSvg(c);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_NE(svg.find("<title>y = x</title>"), std::string::npos);
+  EXPECT_EQ(countOf(svg, "<circle"), 3 + 1);  // 3 points + legend symbol
+  c.diagonal = false;
+  c.x.log = true;
+  c.series[0].x = {1, 100, 10000};
+  svg = wr::renderSvg(c);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_NE(svg.find(">10000</text>"), std::string::npos);
+}
+
+TEST(ReportSvg, LinesOutsideFixedRangeAreClipped) {
+  wr::LineChart c;
+  c.x = {"x", "m"};
+  c.y = {"y", "m"};
+  c.y.min = 0.0;
+  c.y.max = 1.0;
+  c.series = {{"s", {0, 1, 2}, {0.5, 50, 0.5}}};
+  const std::string svg = wr::renderSvg(c);
+  EXPECT_EQ(xmlProblem(svg), "");
+  const std::regex re("d=\"([^\"]*)\"");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(svg, m, re));
+  const std::regex num("[ML]([-0-9.]+) ([-0-9.]+)");
+  const std::string d = m[1];
+  for (auto it = std::sregex_iterator(d.begin(), d.end(), num); it != std::sregex_iterator(); ++it) {
+    EXPECT_GE(std::stod((*it)[2]), 11.9);  // top of the plot area (no title)
+  }
+}
+
+TEST(ReportSvg, BarChartsGroupedAndStacked) {
+  wr::BarChart b;
+  b.title = "Energy by phase";
+  b.categories = {"accelerate", "cruise", "brake", "turn"};
+  b.series = {"hover", "kinetic", "drag"};
+  b.values = {{10, 50, 10, 8}, {3, 0, 3, 0}, {0.5, 4, 0.5, 0}};
+  b.y = {"energy", "kJ"};
+  std::string svg = wr::renderSvg(b);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_EQ(countOf(svg, "<title>"), 9);  // zero bars are not drawn
+  EXPECT_NE(svg.find("<title>kinetic, brake: 3.00 kJ</title>"), std::string::npos);
+  b.stacked = true;
+  svg = wr::renderSvg(b);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_NE(svg.find(">54.0</text>"), std::string::npos);  // cruise stack total
+  b.values.pop_back();
+  EXPECT_THROW(wr::renderSvg(b), std::invalid_argument);
+}
+
+TEST(ReportSvg, MapWithHolesPathMarkersAndBars) {
+  wr::MapView m;
+  m.title = "Plan";
+  wattswath::geometry::PolygonWithHoles a;
+  a.outer = {{0, 0}, {200, 0}, {200, 100}, {0, 100}};
+  a.holes = {{{50, 40}, {50, 60}, {80, 60}, {80, 40}}};
+  m.areas = {a};
+  m.no_fly = {{{120, 20}, {140, 20}, {140, 40}}};
+  m.path = {{{{10, 10}, {190, 10}}, 8.0, "leg 1 <sweep>"}, {{{190, 10}, {190, 30}}, 3.0, "leg 2 turn"},
+            {{{190, 30}, {10, 30}}, 8.0, "leg 3 sweep"}};
+  m.path[1].dashed = true;
+  m.markers = {{{0, 0}, "home", wr::MapMarker::Shape::Square}, {{10, 10}, "start", wr::MapMarker::Shape::Triangle, "#009E73"}};
+  m.value_label = "speed";
+  m.value_unit = "m/s";
+  const std::string svg = wr::renderSvg(m);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_EQ(countOf(svg, "<polyline"), 3);
+  EXPECT_NE(svg.find("<title>leg 1 &lt;sweep&gt;</title>"), std::string::npos);
+  EXPECT_NE(svg.find("fill-rule=\"evenodd\""), std::string::npos);
+  EXPECT_NE(svg.find(">20 m</text>"), std::string::npos);  // scale bar: a round length below 1/5 of the map width (~42 m)
+  EXPECT_NE(svg.find(">[m/s]</text>"), std::string::npos);
+  EXPECT_NE(svg.find(wr::valueColour(0.0)), std::string::npos);  // slowest leg at the low end
+  m.value_unit = "";
+  EXPECT_THROW(wr::renderSvg(m), std::invalid_argument);
+  EXPECT_THROW(wr::renderSvg(wr::MapView{}), std::invalid_argument);
+}
+
+TEST(ReportHtml, SelfContainedPageWithTablesAndFigures) {
+  wr::HtmlReport r("Report <1>");
+  r.heading("Figures");
+  r.paragraph("a & b");
+  r.facts({{"total energy", "12.3 kJ"}});
+  r.table({"Table III", {"phase", "energy [kJ]"}, {{"cruise", "50.0"}, {"<b>", "1"}}, {false, true}});
+  r.figure({"power", wr::renderSvg(sampleLine()), "Power over time"});
+  const std::string html = r.html();
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("Content-Security-Policy"), std::string::npos);
+  EXPECT_NE(html.find("&lt;b&gt;"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("http://www.w3.org/2000/svg"), html.find("http:"));  // the only URL is the SVG namespace
+  EXPECT_EQ(html.find("https:"), std::string::npos);
+  EXPECT_EQ(countOf(html, "<svg"), 1);
+  EXPECT_EQ(countOf(html, "<td class=\"num\">"), 2);
+  const auto files = wr::svgFiles(r);
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files[0].file_name, "power.svg");
+  EXPECT_EQ(xmlProblem(files[0].content), "");
+  EXPECT_THROW(r.figure({"power", wr::renderSvg(sampleLine()), ""}), std::invalid_argument);  // name used twice
+  EXPECT_THROW(r.figure({"bad name", wr::renderSvg(sampleLine()), ""}), std::invalid_argument);
+  EXPECT_THROW(r.table({"t", {"a"}, {{"1", "2"}}, {}}), std::invalid_argument);
+}

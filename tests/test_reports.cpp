@@ -1,0 +1,70 @@
+// The plan, validation, turn and speed reports: every figure present, well formed, escaped.
+#include <gtest/gtest.h>
+
+#include "report_samples.hpp"
+#include "xml_check.hpp"
+
+using namespace wattswath::test;
+
+namespace {
+/// Every inline SVG of a report is well formed; returns how many there are.
+int checkFigures(const wr::HtmlReport& r) {
+  for (const auto& f : wr::svgFiles(r)) EXPECT_EQ(xmlProblem(f.content), "") << f.file_name;
+  const std::string html = r.html();
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(countOf(html, "<svg"), static_cast<int>(r.figures().size()));
+  return static_cast<int>(r.figures().size());
+}
+}  // namespace
+
+TEST(Reports, PlanReportHasMapBreakdownCandidatesAndBattery) {
+  const auto r = wr::planReport(samplePlan());
+  EXPECT_EQ(checkFigures(r), 5);  // map, breakdown, candidates, SoC, voltage
+  const std::string html = r.html();
+  EXPECT_NE(html.find("Plan: sample field &lt;test&gt;"), std::string::npos);
+  EXPECT_NE(html.find("leg 2 (sweep): 6.00 m/s"), std::string::npos);
+  // Table III columns by effect, with the coverage total of Marins et al. Table III's hover column.
+  EXPECT_NE(html.find("hover [J]"), std::string::npos);
+  EXPECT_NE(html.find("<td>total by effect</td>"), std::string::npos);
+  EXPECT_NE(html.find(">50995</td>"), std::string::npos);  // hover: 44295 J coverage (the paper's total) + 6700 J transit
+  EXPECT_NE(html.find("home, start"), std::string::npos);   // the path starts at home: one marker
+  EXPECT_NE(html.find("chosen: boustrophedon"), std::string::npos);
+  EXPECT_NE(html.find("ground-station default"), std::string::npos);
+}
+
+TEST(Reports, PlanReportWithoutOptionalPartsSaysSo) {
+  wr::PlanReportData d;
+  d.areas = samplePlan().areas;
+  const auto r = wr::planReport(d);
+  EXPECT_EQ(checkFigures(r), 1);
+  EXPECT_NE(r.html().find("No energy breakdown was given."), std::string::npos);
+  EXPECT_NE(r.html().find("No battery model was given"), std::string::npos);
+}
+
+TEST(Reports, ValidationReportHasPowerResidualsLegsStaircaseDiagnosis) {
+  const auto d = sampleValidation();
+  const auto r = wr::validationReport(d);
+  EXPECT_EQ(checkFigures(r), 6);  // power, 3 residuals, legs, staircase
+  const std::string html = r.html();
+  EXPECT_NE(html.find("samples (1 in 2 shown)"), std::string::npos);  // 6000 samples thinned for display
+  EXPECT_NE(html.find("binned mean +- 1 sd"), std::string::npos);
+  EXPECT_NE(html.find("C_D A = 0.031 +- 0.002 m^2"), std::string::npos);
+  EXPECT_NE(html.find("<title>y = x</title>"), std::string::npos);
+  auto bad = d;
+  bad.speed.pop_back();
+  EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
+  bad = d;
+  bad.residual_bins = 1;
+  EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
+}
+
+TEST(Reports, TurnAndSpeedReports) {
+  const auto t = wr::turnReport(sampleTurns());
+  EXPECT_EQ(checkFigures(t), 2);
+  EXPECT_NE(t.html().find("paper (Table V)"), std::string::npos);
+  EXPECT_NE(t.html().find("rounded, 90 deg"), std::string::npos);
+  const auto s = wr::speedReport(sampleSpeed());
+  EXPECT_EQ(checkFigures(s), 2);
+  EXPECT_NE(s.html().find("optimal cruise speed [m/s]"), std::string::npos);
+  EXPECT_NE(s.html().find(">1000</text>"), std::string::npos);  // log distance axis (2 .. 1000 m)
+}
