@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make pkg-config ccache
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
   libboost-dev libboost-graph-dev libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
   libboost-program-options-dev
