@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "report_data.hpp"
+#include "wattswath/report/svg.hpp"
 #include "wattswath/energy/marins.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/optimal_speed.hpp"
@@ -144,6 +146,7 @@ void registerVopt(CLI::App& app) {
     std::vector<std::string> without;
     double distance = 0.0, entry = 0.0, exit = 0.0, max_speed = 0.0;
     bool json = false;
+    std::string report, report_svg;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand(
@@ -157,6 +160,7 @@ void registerVopt(CLI::App& app) {
   cmd->add_option("--max-speed", o->max_speed, "Speed limit [m/s] (default: the vehicle's max_speed_mps)");
   addDragOption(cmd, o->drag);
   addJsonFlag(cmd, o->json);
+  addReportOptions(cmd, o->report, o->report_svg);
   cmd->callback([o]() {
     requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
     requireRange("--entry-speed", o->entry, 0.0, false, 200.0, "a speed in [0, 200] m/s");
@@ -171,6 +175,19 @@ void registerVopt(CLI::App& app) {
     en::MarinsTerms terms;
     for (const auto& w : o->without) (w == "kinetic" ? terms.kinetic : terms.drag) = false;
     const double eq10 = en::MarinsClosedForm::fromVehicle(v).eq10OptimalSpeed(o->distance, terms);
+    if (!o->report.empty() || !o->report_svg.empty()) {
+      auto data = speedReportData({{"full model", legModel(v, o->drag, {})},
+                                   {"no kinetic", legModel(v, o->drag, {"kinetic"})},
+                                   {"no drag", legModel(v, o->drag, {"parasitic_drag"})}},
+                                  model, lim, o->distance, o->entry, o->exit, v_max);
+      data.facts.insert(data.facts.begin(),
+                        {{"vehicle", v.name},
+                         {"leg", formatNumber(o->distance) + " m from " + formatNumber(o->entry) + " to " +
+                                     formatNumber(o->exit) + " m/s, drag " + o->drag},
+                         {"optimal cruise speed", report::formatNumber(best.speed, 2) + " m/s (" + report::formatNumber(best.energy, 0) +
+                                                      " J); Marins Eq. 10: " + report::formatNumber(eq10, 2) + " m/s"}});
+      writeReport(report::speedReport(data), o->report, o->report_svg);
+    }
     if (o->json) {
       printJson({{"vehicle", v.name},
                  {"distance_m", o->distance},
@@ -199,6 +216,7 @@ void registerTurns(CLI::App& app) {
     std::string vehicle, drag = "exact";
     double distance = 0.0, angle = 0.0, max_speed = 0.0, sharp_speed = 0.0, rounded_speed = 0.0;
     bool from_rest = false, json = false;
+    std::string report, report_svg;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand(
@@ -213,6 +231,7 @@ void registerTurns(CLI::App& app) {
                 "The rounded path also starts and ends at rest (Marins Eq. 16 flies it at constant speed)");
   addDragOption(cmd, o->drag);
   addJsonFlag(cmd, o->json);
+  addReportOptions(cmd, o->report, o->report_svg);
   cmd->callback([o]() {
     requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
     requireRange("--angle", o->angle, 0.0, true, 180.0, "an interior angle in (0, 180] deg");
@@ -232,6 +251,16 @@ void registerTurns(CLI::App& app) {
     const auto model = en::marinsModel(v, dragMode(o->drag));
     const auto c = en::compareTurnStrategies(model, o->distance, o->angle * M_PI / 180.0, limitsOf(v),
                                              v.max_yaw_rate_radps, v_max, st);
+    if (!o->report.empty() || !o->report_svg.empty()) {
+      auto data = turnReportData(model, limitsOf(v), v.max_yaw_rate_radps, v_max, st, o->angle, o->distance);
+      data.facts.insert(data.facts.begin(),
+                        {{"vehicle", v.name},
+                         {"settings", "speed limit " + formatNumber(v_max) + " m/s, drag " + o->drag +
+                                          (o->from_rest ? ", rounded path from rest" : ", rounded path at constant speed (Eq. 16)")},
+                         {"this corner", formatNumber(o->distance) + " m legs at " + formatNumber(o->angle) +
+                                             " deg: saving " + report::formatNumber(c.saving_pct, 1) + " %"}});
+      writeReport(report::turnReport(data), o->report, o->report_svg);
+    }
     if (o->json) {
       printJson({{"vehicle", v.name},
                  {"distance_m", o->distance},

@@ -1,10 +1,13 @@
 // Model versus measurement on flight logs: replay, diagnose, fit, simulate (issue 6).
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "cli.hpp"
+#include "report_data.hpp"
 #include "wattswath/energy/diagnose.hpp"
 #include "wattswath/energy/log_io.hpp"
 #include "wattswath/energy/vehicle.hpp"
@@ -143,6 +146,7 @@ void registerDiagnose(CLI::App& app) {
     std::vector<std::string> logs;
     int folds = 3;
     bool json = false;
+    std::string report, report_svg;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("diagnose", "Rank the physical effects missing from a model by the held-out error "
@@ -156,6 +160,7 @@ void registerDiagnose(CLI::App& app) {
       ->check(CLI::Range(2, 10))
       ->capture_default_str();
   addJsonFlag(cmd, o->json);
+  addReportOptions(cmd, o->report, o->report_svg);
   cmd->callback([o]() {
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
@@ -164,6 +169,17 @@ void registerDiagnose(CLI::App& app) {
     s.folds = o->folds;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
     const auto d = en::diagnose(model, v, logs, s);
+    if (!o->report.empty() || !o->report_svg.empty()) {
+      auto data = validationFromReplays(d.physics_replay);
+      data.title = "wattswath diagnosis";
+      data.facts.insert(data.facts.begin(), {{"vehicle", v.name},
+                                             {"model", o->effects + " (as given by the vehicle's physics)"},
+                                             {"validation", d.validation}});
+      for (const auto& st : d.staircase) data.staircase.push_back({st.label, st.metrics.rmse_w});
+      data.error_label = "held-out sample RMSE";
+      data.diagnosis = diagnosisRows(d);
+      writeReport(report::validationReport(data), o->report, o->report_svg);
+    }
     if (o->json) {
       json cands = json::array();
       for (const auto& c : d.candidates) {
@@ -223,6 +239,7 @@ void registerFit(CLI::App& app) {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs, test_logs;
     bool json = false;
+    std::string report, report_svg;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("fit", "Fit the coefficients of a model's effects (bounded least squares, Ceres) and "
@@ -232,12 +249,34 @@ void registerFit(CLI::App& app) {
   cmd->add_option("--log", o->logs, "Training log (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
   addJsonFlag(cmd, o->json);
+  addReportOptions(cmd, o->report, o->report_svg);
   cmd->callback([o]() {
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto train = prepareAll(o->logs);
     const auto test = prepareAll(o->test_logs);
     const auto r = en::fitAndCompare(model, train, test);
+    if (!o->report.empty() || !o->report_svg.empty()) {
+      // The fitted model on the test logs when there are any (an honest picture), else on training.
+      auto data = validationFromReplays(test.empty() ? r.train_replay : r.test_replay);
+      data.title = "wattswath fit";
+      data.facts.insert(data.facts.begin(), {{"vehicle", v.name},
+                                             {"model", o->effects + " (coefficients fitted)"},
+                                             {"plots show", test.empty() ? "fitted model on the training logs"
+                                                                         : "fitted model on the test logs"}});
+      data.staircase = {{"as given, train", r.train_before.rmse_w}, {"fitted, train", r.train_after.rmse_w}};
+      if (!test.empty()) {
+        data.staircase.push_back({"as given, test", r.test_before.rmse_w});
+        data.staircase.push_back({"fitted, test", r.test_after.rmse_w});
+      }
+      data.error_label = "sample RMSE";
+      data.diagnosis_caption = "Fitted effects (no held-out ranking: see diagnose)";
+      for (const auto& e : model.effectNames()) {
+        data.diagnosis.push_back({e, std::numeric_limits<double>::quiet_NaN(), fittedValuesText(r.fit.coefficients, e),
+                                  en::describeEffect(e, r.fit.coefficients), true});
+      }
+      writeReport(report::validationReport(data), o->report, o->report_svg);
+    }
     auto side = [&](const en::ErrorMetrics& before, const en::ErrorMetrics& after) {
       json j = metricsJson(after);
       j["before"] = metricsJson(before);

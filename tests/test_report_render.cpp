@@ -101,23 +101,14 @@ std::string renderDir() {
   return d;
 }
 
-/// Writes `report` as `name`.html and its figures as `name`.xhtml (strict XML), renders both in
-/// Chromium and checks them. The screenshot stays in the render folder for people to look at.
-void checkReport(const wr::HtmlReport& report, const std::string& name, int min_figures) {
-  const std::string dir = renderDir();
-  const std::string html = dir + "/" + name + ".html", png = dir + "/" + name + ".png", xhtml = dir + "/" + name + ".xhtml";
-  writeFile(html, report.html());
-  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<html xmlns=\"http://www.w3.org/1999/xhtml\"><body>\n";
-  for (const auto& f : report.figures()) x += f.svg;
-  writeFile(xhtml, x + "</body></html>\n");
-
+/// Loads the page `html` in Chromium and checks it: no console messages, `figures` SVGs in the DOM,
+/// each with drawn content and labels, and a screenshot `png` that is not blank.
+void checkPage(const std::string& html, const std::string& png, int figures) {
   const Rendered page = render(html, png);
   ASSERT_EQ(page.status, 0) << page.log;
   EXPECT_EQ(page.console, 0) << "console messages while loading " << html << ":\n" << page.log;
-  ASSERT_GE(static_cast<int>(report.figures().size()), min_figures);
-  EXPECT_EQ(countOf(page.dom, "<svg"), static_cast<int>(report.figures().size())) << "SVGs missing from the DOM";
+  EXPECT_EQ(countOf(page.dom, "<svg"), figures) << "SVGs missing from the DOM of " << html;
   EXPECT_EQ(page.dom.find("parsererror"), std::string::npos);
-  // Every SVG in the DOM has drawn content.
   for (std::size_t p = page.dom.find("<svg"); p != std::string::npos; p = page.dom.find("<svg", p + 4)) {
     const std::size_t e = page.dom.find("</svg>", p);
     ASSERT_NE(e, std::string::npos);
@@ -131,11 +122,39 @@ void checkReport(const wr::HtmlReport& report, const std::string& name, int min_
   EXPECT_EQ(st.height, 1600);
   EXPECT_GT(st.non_white, 0.02) << png << " is (nearly) blank";
   EXPECT_GT(st.colours, 40) << png << " has too few colours to hold figures";
+}
 
+/// Writes `report` as `name`.html and its figures as `name`.xhtml (strict XML), renders both in
+/// Chromium and checks them. The screenshot stays in the render folder for people to look at.
+void checkReport(const wr::HtmlReport& report, const std::string& name, int min_figures) {
+  const std::string dir = renderDir();
+  const std::string html = dir + "/" + name + ".html", xhtml = dir + "/" + name + ".xhtml";
+  writeFile(html, report.html());
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<html xmlns=\"http://www.w3.org/1999/xhtml\"><body>\n";
+  for (const auto& f : report.figures()) x += f.svg;
+  writeFile(xhtml, x + "</body></html>\n");
+  ASSERT_GE(static_cast<int>(report.figures().size()), min_figures);
+  checkPage(html, dir + "/" + name + ".png", static_cast<int>(report.figures().size()));
   const Rendered strict = render(xhtml);
   ASSERT_EQ(strict.status, 0) << strict.log;
   EXPECT_EQ(strict.dom.find("parsererror"), std::string::npos) << "XML errors in the figures of " << name << ":\n" << strict.dom.substr(0, 2000);
   EXPECT_EQ(countOf(strict.dom, "<svg"), static_cast<int>(report.figures().size()));
+}
+
+/// Runs a wattswath command that writes `name`.html and its SVG files, then checks the page and
+/// that every written SVG passes the strict XML check.
+void checkCommandReport(const std::string& args, const std::string& name, int figures) {
+  const std::string dir = renderDir(), html = dir + "/" + name + ".html", svgs = dir + "/" + name + "-svg";
+  fs::remove_all(svgs);
+  const auto res = run(cliBinary() + " " + args + " --report '" + html + "' --report-svg '" + svgs + "' 2>&1");
+  ASSERT_EQ(res.status, 0) << res.output;
+  int n = 0;
+  for (const auto& f : fs::directory_iterator(svgs)) {
+    EXPECT_EQ(xmlProblem(readFile(f.path().string())), "") << f.path();
+    ++n;
+  }
+  EXPECT_EQ(n, figures);
+  checkPage(html, dir + "/" + name + ".png", figures);
 }
 
 }  // namespace
@@ -158,3 +177,14 @@ TEST(ReportRender, PlanReport) { checkReport(wr::planReport(samplePlan()), "samp
 TEST(ReportRender, ValidationReport) { checkReport(wr::validationReport(sampleValidation()), "sample-validation", 6); }
 TEST(ReportRender, TurnReport) { checkReport(wr::turnReport(sampleTurns()), "sample-turns", 2); }
 TEST(ReportRender, SpeedReport) { checkReport(wr::speedReport(sampleSpeed()), "sample-speed", 2); }
+TEST(ReportRender, VoptCommandReport) {
+  checkCommandReport("vopt --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --distance 100", "cli-vopt", 2);
+}
+TEST(ReportRender, TurnsCommandReport) {
+  checkCommandReport("turns --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --distance 300 --angle 45", "cli-turns", 2);
+}
+TEST(ReportRender, DiagnoseCommandReport) {
+  const std::string f = sharedData("iris-flights/2017-10-18_1436_energy14.csv");
+  if (!fs::exists(f)) GTEST_SKIP() << "no " << f;
+  checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --log '" + f + "'", "cli-diagnose", 6);
+}

@@ -438,7 +438,7 @@ HtmlReport validationReport(const ValidationReportData& d) {
   }
   if (!d.diagnosis.empty()) {
     r.heading("Diagnosis");
-    Table t{"Candidate effects, best first", {"effect", "held-out error reduction [%]", "fitted values", "physical meaning", "kept"}, {},
+    Table t{d.diagnosis_caption, {"effect", "held-out error reduction [%]", "fitted values", "physical meaning", "kept"}, {},
             {false, true, false, false, false}, false};
     for (const auto& row : d.diagnosis) {
       t.rows.push_back({row.effect, formatNumber(row.improvement_pct, 1), row.fitted, row.meaning, row.accepted ? "yes" : "no"});
@@ -501,6 +501,12 @@ HtmlReport turnReport(const TurnReportData& d) {
     s.series.push_back(saving);
   }
   if (!paper.x.empty()) s.series.push_back(paper);
+  double lmin = std::numeric_limits<double>::infinity(), lmax = 0.0;
+  for (const auto& row : d.rows) {
+    if (row.leg_length > 0.0) lmin = std::min(lmin, row.leg_length);
+    lmax = std::max(lmax, row.leg_length);
+  }
+  e.x.log = s.x.log = lmin > 0.0 && lmax / lmin > 20.0;  // Table V spans decades of leg length
   if (!d.rows.empty()) {
     r.heading("Energy of the two corner strategies");
     r.figure({"turns-energy", renderSvg(e), "Two equal branches meeting at interior angle beta (Marins et al. Sec. V-B)."});
@@ -576,6 +582,14 @@ HtmlReport speedReport(const SpeedReportData& d) {
       }
       c.series.push_back(s);
       if (l.distance > 0) c.markers.push_back({l.best_speed, l.best_energy / l.distance, formatNumber(l.best_speed, 2) + " m/s", seriesColour(i)});
+    }
+    double best = 0.0;
+    for (const auto& l : d.legs) {
+      if (l.distance > 0) best = std::max(best, l.best_energy / l.distance);
+    }
+    if (best > 0.0) {  // the slow end grows without bound (hover time): show the region around the optima
+      c.y.min = 0.0;
+      c.y.max = 2.5 * best;
     }
     r.heading("Leg energy against speed");
     r.figure({"vopt-energy", renderSvg(c), "Rings mark the optimal cruise speed of each leg length."});

@@ -125,6 +125,7 @@ struct ValidationReportData {
   std::string error_label = "held-out RMSE";         ///< what the staircase error is
   std::string error_unit = "W";                      ///< unit of the staircase error
   std::vector<DiagnosisRow> diagnosis;               ///< candidate effects, best first
+  std::string diagnosis_caption = "Candidate effects, best first";  ///< caption of the diagnosis table
   int residual_bins = 12;                            ///< [-] bins of the residual plots, 2..100
 };
 

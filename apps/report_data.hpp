@@ -1,0 +1,42 @@
+#pragma once
+/// @file report_data.hpp
+/// Fills the report structs (apps/report) from library results: sweeps of the turn comparison and
+/// the optimal speed for the turns/vopt reports, and replays/diagnoses for the validation report.
+/// Points a sweep cannot compute are listed in the report's facts, never dropped silently.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "wattswath/energy/diagnose.hpp"
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/turns.hpp"
+#include "wattswath/report/reports.hpp"
+
+namespace wattswath::apps {
+
+/// The turn comparison over Table V's angles (30, 45, 60, 90 deg) and `angle_deg` [deg], for leg
+/// lengths from 25 m to 2400 m and `distance` [m], with the command's model and settings; rows at
+/// Table V's points carry the paper's saving (Marins et al. Table V, as printed).
+report::TurnReportData turnReportData(const energy::EnergyModel& model, const energy::ProfileLimits& limits,
+                                      double max_yaw_rate, double v_max, const energy::TurnSettings& settings,
+                                      double angle_deg, double distance);
+
+/// v_opt against leg length (5 m to 5 km, log-spaced) for each named model variant (Marins et al.
+/// Fig. 3), and energy against cruise speed of `model` for legs of `distance` [m] and 5x it.
+/// `entry`, `exit` [m/s] are the leg's end speeds, `v_max` [m/s] the speed limit.
+report::SpeedReportData speedReportData(const std::vector<std::pair<std::string, energy::EnergyModel>>& variants,
+                                        const energy::EnergyModel& model, const energy::ProfileLimits& limits,
+                                        double distance, double entry, double exit, double v_max);
+
+/// The validation report's time series and leg energies from replays: power, speed, climb and
+/// heading of the first replay, phases as spans, and the legs of every replay.
+report::ValidationReportData validationFromReplays(const std::vector<energy::LogReplay>& replays);
+
+/// "name = value +- sigma unit; ..." for the coefficients of `effect` (all when empty).
+std::string fittedValuesText(const std::vector<energy::FittedCoefficient>& coefficients, const std::string& effect = "");
+
+/// The diagnosis table rows (best first) from a diagnosis.
+std::vector<report::DiagnosisRow> diagnosisRows(const energy::Diagnosis& d);
+
+}  // namespace wattswath::apps
