@@ -27,6 +27,19 @@ struct LogSample {
   Eigen::Vector2d wind = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());  ///< [m/s]
 };
 
+/// A closed time interval, e.g. one airborne part of a flight.
+struct TimeWindow {
+  double begin = 0.0;  ///< [s] start time (log clock)
+  double end = 0.0;    ///< [s] end time (log clock), >= begin
+};
+
+/// Something the autopilot logged at a time: a mode change, an event, a mission item, a message.
+struct LogEvent {
+  double t = 0.0;    ///< [s] time (log clock)
+  std::string kind;  ///< "mode", "event", "landed", "mission_item", "message"
+  std::string text;  ///< human-readable description, e.g. "RTL (6)"
+};
+
 /// A whole flight: samples plus where they came from and what was derived.
 struct FlightLog {
   std::string source;                              ///< file the log was read from
@@ -41,6 +54,8 @@ struct FlightLog {
   bool acceleration_derived = false;               ///< accelerations computed from velocities
   std::vector<std::string> extra_columns;          ///< unknown columns, kept in file order
   std::vector<std::vector<std::string>> extra_values;  ///< extra_values[row][col], verbatim
+  std::vector<TimeWindow> airborne;                ///< airborne windows found by the reader (may be empty)
+  std::vector<LogEvent> events;                    ///< modes, events, mission items (autopilot logs)
 
   /// Duration from first to last sample [s].
   double duration() const { return samples.size() < 2 ? 0.0 : samples.back().t - samples.front().t; }
