@@ -29,6 +29,22 @@ std::string formatNumber(double x) {
   return os.str();
 }
 
+void addLogReadOptions(CLI::App* cmd, energy::LogReadOptions& o) {
+  cmd->add_option("--from", o.from_s, "Keep samples from this time on [s, log clock: autopilot boot time]");
+  cmd->add_option("--to", o.to_s, "Keep samples up to this time [s, log clock]");
+  cmd->add_flag("--airborne", o.airborne_only, "Keep only the airborne part (first take-off to last landing)");
+  cmd->add_flag("--lenient", o.lenient,
+                "Read past corrupt or truncated parts of .bin/.ulg files (each skip is listed as a warning)");
+  cmd->add_option("--battery-instance", o.battery_instance,
+                  "Battery instance to use (default: the first with a voltage above 1 V)")
+      ->check(CLI::Range(0, 255));
+  cmd->add_option("--position-source", o.position_source,
+                  "Position message/topic: XKF1, NKF1, NKF6, EKF1 (.bin) or vehicle_local_position (.ulg)");
+  cmd->add_option("--airborne-current", o.airborne.current_threshold_a,
+                  "Current above which the vehicle counts as flying where no take-off/landing is logged [A]")
+      ->check(CLI::PositiveNumber);
+}
+
 void progress(const std::string& message) { std::cerr << message << std::endl; }
 
 void writeTextFileAtomic(const std::string& path, const std::string& text) {

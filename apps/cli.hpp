@@ -12,6 +12,7 @@
 namespace wattswath::report {
 class HtmlReport;
 }
+#include "wattswath/energy/autopilot_log.hpp"
 
 namespace wattswath::apps {
 
@@ -41,10 +42,14 @@ void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_di
 /// Writes `report` to `html_path` (atomically) and, when `svg_dir` is not empty, each figure as
 /// `svg_dir`/NAME.svg; prints the paths on stderr. Throws std::runtime_error naming a path it cannot write.
 void writeReport(const report::HtmlReport& report, const std::string& html_path, const std::string& svg_dir = "");
+/// Adds the flight-log reading options (--from, --to, --airborne, --lenient, --battery-instance,
+/// --position-source) to `cmd`, storing into `options`. Use with energy::readFlightLog().
+void addLogReadOptions(CLI::App* cmd, energy::LogReadOptions& options);
 
 // Register functions: one per apps/cmd_*.cpp. main.cpp calls each.
 void registerEnergyCommands(CLI::App& app);    ///< hover, vopt, leg, turns (cmd_energy.cpp)
 void registerReproduceCommand(CLI::App& app);  ///< reproduce (cmd_reproduce.cpp)
 void registerLogCommands(CLI::App& app);       ///< replay, diagnose, fit, simulate (cmd_logs.cpp)
+void registerLogFileCommands(CLI::App& app);   ///< log info, log convert (cmd_log.cpp)
 
 }  // namespace wattswath::apps

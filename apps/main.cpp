@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   wattswath::apps::registerEnergyCommands(app);
   wattswath::apps::registerReproduceCommand(app);
   wattswath::apps::registerLogCommands(app);
+  wattswath::apps::registerLogFileCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "wattswath/energy/dataflash.hpp"
+#include "wattswath/energy/log_io.hpp"
 #include "wattswath/energy/ulog.hpp"
 
 namespace wattswath::energy {
@@ -91,15 +92,19 @@ std::vector<double> unwrap(std::vector<double> a) {
   return a;
 }
 
-// Central-difference derivative of `v` over `t` (one-sided at the ends).
-std::vector<Eigen::Vector3d> derivative(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& v) {
-  std::vector<Eigen::Vector3d> d(v.size(), Eigen::Vector3d::Zero());
-  if (v.size() < 2) return d;
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    const std::size_t a = k == 0 ? 0 : k - 1, b = k + 1 == v.size() ? k : k + 1;
-    d[k] = (v[b] - v[a]) / (t[b] - t[a]);
+// Acceleration from the position source's velocities at their native rate (log_io's smoothing).
+std::vector<Eigen::Vector3d> accelerationFrom(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& v) {
+  FlightLog tmp;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    LogSample s;
+    s.t = t[k];
+    s.velocity = v[k];
+    tmp.samples.push_back(s);
   }
-  return d;
+  deriveKinematics(tmp, false, true);
+  std::vector<Eigen::Vector3d> a;
+  for (const auto& s : tmp.samples) a.push_back(s.acceleration);
+  return a;
 }
 
 FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt) {
@@ -113,7 +118,7 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
     raw.warnings.push_back(std::to_string(d) + " battery samples with non-increasing time not used");
   if (const std::size_t d = keepIncreasing(raw.pt, raw.pos, raw.vel, raw.acc, raw.yaw))
     raw.warnings.push_back(std::to_string(d) + " position samples with non-increasing time not used");
-  if (!raw.has_acc) raw.acc = derivative(raw.pt, raw.vel);
+  if (!raw.has_acc) raw.acc = accelerationFrom(raw.pt, raw.vel);
   const std::vector<double> yaw = unwrap(raw.yaw);
 
   FlightLog log;
@@ -197,7 +202,8 @@ std::string copterModeName(int mode) {
   return it == names.end() ? "mode" : it->second;
 }
 
-std::string copterEventName(int id) {
+// AP_Logger LogEvent ids (the same numbering in Copter 3.x and the shared 4.x enum).
+std::string logEventName(int id) {
   static const std::map<int, std::string> names = {
       {10, "ARMED"}, {11, "DISARMED"}, {15, "AUTO_ARMED"}, {17, "LAND_COMPLETE_MAYBE"}, {18, "LAND_COMPLETE"},
       {25, "SET_HOME"}, {28, "NOT_LANDED"}};
@@ -287,7 +293,7 @@ void dataflashPosition(const dataflash::Log& L, const LogReadOptions& opt, Raw& 
   }
   raw.acc.assign(raw.pt.size(), Eigen::Vector3d::Zero());
   raw.position_source = name + (L.has(name, "C") ? " core " + num(use_core) : "") +
-                        " (PN, PE, PD, VN, VE, VD; NED from the EKF origin; acceleration derived from VN, VE, VD)";
+                        " (PN, PE, PD, VN, VE, VD; NED from the EKF origin; acceleration: quadratic least-squares derivative of VN, VE, VD)";
 }
 
 void dataflashEvents(const dataflash::Log& L, Raw& raw, bool copter) {
@@ -297,9 +303,8 @@ void dataflashEvents(const dataflash::Log& L, Raw& raw, bool copter) {
       const auto id = L.column("EV", "Id");
       for (std::size_t k = 0; k < t.size(); ++k) {
         const int e = static_cast<int>(id[k]);
-        const std::string nm = copter ? copterEventName(e) : "";
+        const std::string nm = logEventName(e);
         raw.events.push_back({t[k], "event", "EV " + std::to_string(e) + (nm.empty() ? "" : " " + nm)});
-        if (!copter) continue;
         if (e == 11 || e == 17 || e == 18) raw.landed.push_back({t[k], true, "EV " + std::to_string(e) + " " + nm});
         if (e == 28) raw.landed.push_back({t[k], false, "EV 28 NOT_LANDED"});
       }
@@ -314,7 +319,7 @@ void dataflashEvents(const dataflash::Log& L, Raw& raw, bool copter) {
     const auto mode = L.column("MODE", col);
     for (std::size_t k = 0; k < t.size(); ++k) {
       const int md = static_cast<int>(mode[k]);
-      raw.events.push_back({t[k], "mode", (copter ? copterModeName(md) + " " : std::string("mode ")) + "(" + std::to_string(md) + ")"});
+      raw.events.push_back({t[k], "mode", copter ? copterModeName(md) + " (" + std::to_string(md) + ")" : "mode " + std::to_string(md)});
     }
   }
   if (L.count("CMD") && L.hasTime("CMD") && L.has("CMD", "CId")) {
@@ -568,7 +573,12 @@ std::vector<TimeWindow> detectAirborne(const std::vector<double>& t, const std::
   std::vector<TimeWindow> raw;
   if (t.size() < 2 || current.size() != t.size()) return raw;
   const double t_end = t.back();
-  const double first_change = changes.empty() ? std::numeric_limits<double>::infinity() : changes.front().t;
+  std::vector<LandedChange> ch = changes;
+  std::stable_sort(ch.begin(), ch.end(), [](const LandedChange& a, const LandedChange& b) { return a.t < b.t; });
+  // Before the first change the current decides, unless that change is a take-off (then the
+  // vehicle was on the ground before it).
+  const double first_change = ch.empty() ? std::numeric_limits<double>::infinity()
+                              : ch.front().landed ? ch.front().t : -std::numeric_limits<double>::infinity();
   // Current-based part, up to the first landed-state change.
   auto flying = [&](std::size_t k) { return std::isfinite(current[k]) && current[k] > s.current_threshold_a; };
   auto crossing = [&](std::size_t k) {  // time between samples k-1 and k where current crosses the threshold
@@ -584,9 +594,12 @@ std::vector<TimeWindow> detectAirborne(const std::vector<double>& t, const std::
     if (!f && in) { in = false; raw.push_back({start, crossing(k)}); }
   }
   if (in) raw.push_back({start, std::min(first_change, t_end)});
+  // A first change that is a landing says the vehicle flew until then: the current-based window
+  // that ended shortly before it (low current in the last metres of a descent) runs up to it.
+  if (!ch.empty() && ch.front().landed && !raw.empty() && raw.back().end < first_change &&
+      first_change - raw.back().end <= s.landing_extend_s)
+    raw.back().end = first_change;
   // Event-based part.
-  std::vector<LandedChange> ch = changes;
-  std::stable_sort(ch.begin(), ch.end(), [](const LandedChange& a, const LandedChange& b) { return a.t < b.t; });
   for (std::size_t k = 0; k < ch.size(); ++k) {
     if (ch[k].landed) continue;
     std::size_t m = k + 1;
@@ -667,7 +680,17 @@ FlightLog readFlightLog(const std::string& path, const LogReadOptions& options) 
     case LogFormat::DataFlash: return readDataFlashLog(path, options);
     case LogFormat::Csv: break;
   }
-  throw std::runtime_error(path + ": CSV flight logs are read by readCsvLog (not yet available in this build)");
+  FlightLog log = readCsvLog(path);
+  if (log.airborne.empty()) {
+    std::vector<double> t, i;
+    for (const auto& s : log.samples) {
+      t.push_back(s.t);
+      i.push_back(s.current);
+    }
+    log.airborne = detectAirborne(t, i, {}, options.airborne);
+  }
+  applyTimeWindow(log, options);
+  return log;
 }
 
 }  // namespace wattswath::energy

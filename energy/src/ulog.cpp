@@ -133,6 +133,13 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
                                std::to_string(n - pos - 3) + " remain (truncated file)");
       continue;
     }
+    const auto crossing = std::find_if(appended_offsets.begin(), appended_offsets.end(), [&](std::uint64_t a) {
+      return a > pos && a < pos + 3 + size;
+    });
+    if (crossing != appended_offsets.end()) {
+      pos = bad(pos, type, "runs into the appended data at offset " + std::to_string(*crossing) + " (incomplete message)");
+      continue;
+    }
     if (size == 0 && type == 0) {
       pos = bad(pos, type, "zero-length message of type 0 (corrupt or zero-filled data)");
       continue;
@@ -142,12 +149,10 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
       case 'B': {
         if (size < 40) { error = "flag bits need 40 bytes, got " + std::to_string(size); break; }
         const std::uint8_t* incompat = p + 8;
-        if (incompat[0] & ~std::uint8_t{1}) { error = "unknown incompatible flag bits set; this reader cannot read the file"; break; }
-        for (int i = 1; i < 8; ++i)
-          if (incompat[i]) error = "unknown incompatible flag bits set; this reader cannot read the file";
-        if (!error.empty()) {
-          throw std::runtime_error(where(pos, type) + error);  // never safe to read on
-        }
+        bool unknown = (incompat[0] & 0xFE) != 0;
+        for (int i = 1; i < 8; ++i) unknown = unknown || incompat[i] != 0;
+        if (unknown)  // never safe to read on, lenient or not
+          throw std::runtime_error(where(pos, type) + "unknown incompatible flag bits set; this reader cannot read the file");
         log.appended_ = (incompat[0] & 1) != 0;
         if (log.appended_) {
           for (int i = 0; i < 3; ++i) {

@@ -26,6 +26,7 @@ struct AirborneSettings {
   double current_threshold_a = 5.0;  ///< [A] flying when current exceeds this (where no landed state is logged); > 0
   double merge_gap_s = 1.0;          ///< [s] windows separated by less than this are merged; >= 0
   double min_duration_s = 2.0;       ///< [s] windows shorter than this are dropped; >= 0
+  double landing_extend_s = 5.0;     ///< [s] a current-based window ending at most this long before a logged landing runs up to it; >= 0
 };
 
 /// Options of the flight-log readers.
@@ -49,7 +50,8 @@ struct LandedChange {
 /// Airborne windows: where landed-state changes exist, the state from the first change on is
 /// theirs; before the first change (or everywhere, when there is none) the vehicle counts as
 /// airborne while `current` > settings.current_threshold_a, with crossing times interpolated
-/// linearly between samples. Windows closer than merge_gap_s are merged, shorter than
+/// linearly between samples; when the first change is a landing, the last current-based window
+/// ending at most landing_extend_s before it is extended to it. Windows closer than merge_gap_s are merged, shorter than
 /// min_duration_s dropped. `t` [s] increasing, `current` [A] of the same length.
 std::vector<TimeWindow> detectAirborne(const std::vector<double>& t, const std::vector<double>& current,
                                        const std::vector<LandedChange>& changes, const AirborneSettings& settings);
