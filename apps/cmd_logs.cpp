@@ -20,11 +20,12 @@ namespace {
 
 constexpr const char* kPaperEffects = "hover,kinetic,parasitic_drag";
 
-std::vector<en::PreparedLog> prepareAll(const std::vector<std::string>& paths) {
+// Reads each log with readFlightLog (canonical CSV, ArduPilot .bin or PX4 .ulg, by content).
+std::vector<en::PreparedLog> prepareAll(const std::vector<std::string>& paths, const en::LogReadOptions& read) {
   std::vector<en::PreparedLog> out;
   for (const auto& p : paths) {
     progress("reading " + p);
-    out.push_back(en::prepareLog(en::readCsvLog(p)));
+    out.push_back(en::prepareLog(en::readFlightLog(p, read)));
   }
   return out;
 }
@@ -98,6 +99,7 @@ void registerReplay(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects, samples_out;
     std::vector<std::string> logs;
+    en::LogReadOptions read;
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -105,13 +107,14 @@ void registerReplay(CLI::App& app) {
                                            "phase and flight, residuals binned by speed, climb, acceleration, heading, time");
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--effects", o->effects, "Comma-separated effects of the model")->capture_default_str();
-  cmd->add_option("--log", o->logs, "Canonical CSV flight log (repeatable)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--samples-out", o->samples_out, "Write per-sample measured/modelled power as CSV here");
+  addLogReadOptions(cmd, o->read);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto logs = prepareAll(o->logs);
+    const auto logs = prepareAll(o->logs, o->read);
     std::vector<en::LogReplay> reps;
     for (const auto& l : logs) reps.push_back(en::replay(model, l));
     const auto m = en::errorMetrics(reps);
@@ -144,6 +147,7 @@ void registerDiagnose(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs;
+    en::LogReadOptions read;
     int folds = 3;
     bool json = false;
     std::string report, report_svg;
@@ -153,18 +157,19 @@ void registerDiagnose(CLI::App& app) {
                                              "reduction they bring, with fitted coefficients in physical terms");
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--effects", o->effects, "Comma-separated effects of the model to diagnose")->capture_default_str();
-  cmd->add_option("--log", o->logs, "Canonical CSV flight log (repeatable; 2+ logs: leave-one-flight-out)")
+  cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable; 2+ logs: leave-one-flight-out)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--folds", o->folds, "Time-block folds when only one log is given")
       ->check(CLI::Range(2, 10))
       ->capture_default_str();
+  addLogReadOptions(cmd, o->read);
   addJsonFlag(cmd, o->json);
   addReportOptions(cmd, o->report, o->report_svg);
   cmd->callback([o]() {
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto logs = prepareAll(o->logs);
+    const auto logs = prepareAll(o->logs, o->read);
     en::DiagnoseSettings s;
     s.folds = o->folds;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
@@ -238,6 +243,7 @@ void registerFit(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs, test_logs;
+    en::LogReadOptions read;
     bool json = false;
     std::string report, report_svg;
   };
@@ -246,15 +252,16 @@ void registerFit(CLI::App& app) {
                                         "report the error before and after on training and test logs");
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--effects", o->effects, "Comma-separated effects to fit")->capture_default_str();
-  cmd->add_option("--log", o->logs, "Training log (repeatable)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--log", o->logs, "Training log: CSV, .bin or .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
+  addLogReadOptions(cmd, o->read);
   addJsonFlag(cmd, o->json);
   addReportOptions(cmd, o->report, o->report_svg);
   cmd->callback([o]() {
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto train = prepareAll(o->logs);
-    const auto test = prepareAll(o->test_logs);
+    const auto train = prepareAll(o->logs, o->read);
+    const auto test = prepareAll(o->test_logs, o->read);
     const auto r = en::fitAndCompare(model, train, test);
     if (!o->report.empty() || !o->report_svg.empty()) {
       // The fitted model on the test logs when there are any (an honest picture), else on training.
