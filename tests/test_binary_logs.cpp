@@ -22,7 +22,7 @@ template <typename T>
 void put(Bytes& b, T v) {
   std::uint8_t raw[sizeof(T)];
   std::memcpy(raw, &v, sizeof(T));
-  b.insert(b.end(), raw, raw + sizeof(T));
+  for (std::uint8_t x : raw) b.push_back(x);  // (insert() trips GCC 12's bogus -Wnonnull)
 }
 void putText(Bytes& b, const std::string& s, std::size_t n) {
   for (std::size_t k = 0; k < n; ++k) b.push_back(k < s.size() ? static_cast<std::uint8_t>(s[k]) : 0);
