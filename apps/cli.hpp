@@ -9,10 +9,11 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "wattswath/energy/autopilot_log.hpp"
+
 namespace wattswath::report {
 class HtmlReport;
 }
-#include "wattswath/energy/autopilot_log.hpp"
 
 namespace wattswath::apps {
 
