@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   wattswath::apps::registerReproduceCommand(app);
   wattswath::apps::registerLogCommands(app);
   wattswath::apps::registerLogFileCommands(app);
+  wattswath::apps::registerAreaCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,43 @@
+#pragma once
+/// @file geojson.hpp
+/// GeoJSON output (RFC 7946, lon/lat in degrees) of survey areas and coverage paths, back-projected
+/// through the area's LocalFrame. Writers return strings; apps write the files.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "wattswath/geometry/frame.hpp"
+#include "wattswath/geometry/path.hpp"
+#include "wattswath/geometry/survey_area.hpp"
+
+namespace wattswath::geometry {
+
+/// Options of coveragePathToGeoJson().
+struct PathGeoJsonOptions {
+  /// Extra per-leg numbers, one value per leg, written as per-vertex arrays under the map's key
+  /// (e.g. {"speed_mps", speeds} from the planner). Geometry does not interpret them.
+  std::map<std::string, std::vector<double>> leg_properties;
+  double arc_step_rad = 0.1745329251994330;  ///< [rad] arcs are sampled at most this far apart (10 deg); range (0, pi/2]
+  int indent = 1;                            ///< JSON indentation (-1: one line)
+};
+
+/// One GeoJSON FeatureCollection holding one Feature per path: a LineString through the legs'
+/// vertices (arcs sampled; a turn in place repeats its vertex) with per-vertex property arrays of
+/// the same length as the coordinates: "leg" (index of the leg ending at the vertex; 0 for the
+/// first vertex), "role" ("sweep"/"turn"/"transit"/"climb"), "kind" ("line"/"arc"/"turn_in_place"),
+/// "altitude_m", and each leg_properties key. Feature properties: "pattern", "cell",
+/// "sweep_angle_deg", "length_m", "legs", "turns". Throws std::invalid_argument when a
+/// leg_properties vector does not have one value per leg.
+std::string coveragePathToGeoJson(const std::vector<CoveragePath>& paths, const LocalFrame& frame,
+                                  const PathGeoJsonOptions& options = {});
+
+/// The area as a GeoJSON FeatureCollection: one Polygon Feature per region (role "area", holes
+/// are the no-fly zones), and the home Point (role "home") when known. Reading it back gives the
+/// same area. Throws SurveyAreaError when the area has no geodetic frame.
+std::string surveyAreaToGeoJson(const SurveyArea& area, int indent = 1);
+
+/// Lower-case name of a leg role ("sweep", "turn", "transit", "climb").
+std::string roleName(LegRole role);
+
+}  // namespace wattswath::geometry
