@@ -53,5 +53,6 @@ void registerReproduceCommand(CLI::App& app);  ///< reproduce (cmd_reproduce.cpp
 void registerLogCommands(CLI::App& app);       ///< replay, diagnose, fit, simulate (cmd_logs.cpp)
 void registerLogFileCommands(CLI::App& app);   ///< log info, log convert (cmd_log.cpp)
 void registerAreaCommands(CLI::App& app);      ///< area info (cmd_area.cpp)
+void registerPlanCommand(CLI::App& app);      ///< plan (cmd_plan.cpp)
 
 }  // namespace wattswath::apps

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   wattswath::apps::registerLogCommands(app);
   wattswath::apps::registerLogFileCommands(app);
   wattswath::apps::registerAreaCommands(app);
+  wattswath::apps::registerPlanCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

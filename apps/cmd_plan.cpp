@@ -1,0 +1,226 @@
+// `wattswath plan`: survey area + vehicle -> minimum-energy coverage mission (.plan, .waypoints,
+// GeoJSON path, CSV of legs) with baselines scored by the same model in the same run.
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cli.hpp"
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/geojson.hpp"
+#include "wattswath/geometry/survey_area.hpp"
+#include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/mission.hpp"
+
+namespace wattswath::apps {
+namespace geo = wattswath::geometry;
+namespace pl = wattswath::planner;
+
+namespace {
+
+struct PlanOpts {
+  std::string area, vehicle, home, out, corners = "auto";
+  std::vector<std::string> no_fly;
+  double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
+  bool force = false, json = false;
+};
+
+pl::GeoPoint toPl(const geo::GeoPoint& g) { return {g.lat_deg, g.lon_deg}; }
+
+geo::Point parseHome(const std::string& s, const geo::LocalFrame& frame) {
+  const auto comma = s.find(',');
+  double lat = NAN, lon = NAN;
+  try {
+    if (comma == std::string::npos) throw std::invalid_argument("no comma");
+    size_t a = 0, b = 0;
+    lat = std::stod(s.substr(0, comma), &a);
+    lon = std::stod(s.substr(comma + 1), &b);
+    if (a != comma || b != s.size() - comma - 1) throw std::invalid_argument("trailing text");
+  } catch (const std::exception&) {
+    throw std::invalid_argument("--home '" + s + "': expected LAT,LON in degrees, e.g. 43.7153,10.4616");
+  }
+  geo::validateGeoPoint({lat, lon, 0.0}, "--home");
+  return frame.toLocal(lat, lon);
+}
+
+nlohmann::json candidateJson(const pl::PlanCandidate& c, double plan_energy) {
+  if (!c.valid) return nullptr;
+  return {{"energy_j", c.flown.energy},
+          {"time_s", c.flown.time},
+          {"length_m", c.flown.length},
+          {"pattern", c.pattern},
+          {"sweep_angle_deg", c.sweep_angle_deg},
+          {"coverage_pct", c.coverage_pct},
+          {"saving_pct", c.flown.energy > 0 ? 100.0 * (c.flown.energy - plan_energy) / c.flown.energy : 0.0}};
+}
+
+// Waypoints: the end of every line or arc, flown at that leg's cruise speed.
+pl::Mission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const geo::LocalFrame& frame) {
+  pl::Mission m;
+  m.home = toPl(frame.toGeodetic(pr.home));
+  m.home_altitude_amsl_m = frame.origin().alt_m;
+  m.takeoff_altitude_m = pr.altitude;
+  const auto& f = r.plan.flown;
+  double vmax = 0.0;
+  for (size_t i = 0; i < f.path.legs.size(); ++i) {
+    const auto& leg = f.path.legs[i];
+    if (leg.kind == geo::PrimitiveKind::TurnInPlace) continue;
+    const double v = std::max(f.speeds.cruise[i], 0.1);
+    vmax = std::max(vmax, v);
+    m.waypoints.push_back({toPl(frame.toGeodetic(leg.end)), pr.altitude, v});
+  }
+  m.cruise_speed_mps = vmax > 0 ? vmax : 5.0;
+  m.hover_speed_mps = m.cruise_speed_mps;
+  for (const auto& z : pr.no_fly) {
+    std::vector<pl::GeoPoint> ring;
+    for (const auto& p : z) ring.push_back(toPl(frame.toGeodetic(p)));
+    m.no_fly.push_back(ring);
+  }
+  return m;
+}
+
+std::vector<pl::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFrame& frame) {
+  std::vector<pl::LegRecord> out;
+  for (size_t i = 0; i < f.path.legs.size(); ++i) {
+    const auto& leg = f.path.legs[i];
+    pl::LegRecord l;
+    l.start = toPl(frame.toGeodetic(leg.start));
+    l.end = toPl(frame.toGeodetic(leg.end));
+    l.kind = leg.kind == geo::PrimitiveKind::Line ? "line" : leg.kind == geo::PrimitiveKind::Arc ? "arc" : "turn_in_place";
+    l.role = geo::roleName(leg.role);
+    l.length_m = leg.length();
+    l.speed_start_mps = f.speeds.junction[i];
+    l.speed_cruise_mps = f.speeds.cruise[i];
+    l.speed_end_mps = f.speeds.junction[i + 1];
+    l.time_s = f.leg_time[i];
+    l.energy_j = f.leg_energy[i];
+    out.push_back(l);
+  }
+  return out;
+}
+
+void runPlan(const PlanOpts& o) {
+  namespace fs = std::filesystem;
+  const auto vehicle = energy::loadVehicle(o.vehicle);
+  geo::ReadOptions ro;
+  ro.no_fly_files = o.no_fly;
+  progress("plan: reading " + o.area);
+  const auto area = geo::readSurveyArea(o.area, ro);
+  if (!area.frame) throw std::invalid_argument(o.area + ": the area has no geodetic frame (metric WKT without an origin); missions need lat/lon");
+  const auto& frame = *area.frame;
+
+  pl::SurveyProblem pr;
+  pr.area = area.polygon();
+  pr.no_fly = area.no_fly;
+  pr.altitude = o.altitude;
+  if (o.spacing > 0.0) {
+    if (o.fov_deg > 0.0 || o.overlap >= 0.0) throw std::invalid_argument("give either --spacing or --altitude/--fov/--overlap, not both");
+    pr.spacing = pr.footprint = o.spacing;
+  } else {
+    if (!(o.fov_deg > 0.0 && o.fov_deg < 180.0))
+      throw std::invalid_argument("--fov = " + std::to_string(o.fov_deg) + " deg: expected (0, 180) (or give --spacing)");
+    if (!(o.overlap >= 0.0 && o.overlap < 1.0))
+      throw std::invalid_argument("--overlap = " + std::to_string(o.overlap) + ": expected a fraction in [0, 1) (or give --spacing)");
+    pr.footprint = 2.0 * o.altitude * std::tan(0.5 * o.fov_deg * M_PI / 180.0);
+    pr.spacing = pr.footprint * (1.0 - o.overlap);
+  }
+  if (!o.home.empty()) pr.home = parseHome(o.home, frame);
+  else if (area.home) pr.home = *area.home;
+  else pr.home = pr.area.outer.front();
+
+  const std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
+  for (const auto& f : files)
+    if (fs::exists(fs::path(o.out) / f) && !o.force)
+      throw std::runtime_error((fs::path(o.out) / f).string() + " exists; pass --force to overwrite it");
+
+  pl::PlannerSettings ps;
+  ps.corners = pl::cornerStrategyFromString(o.corners);
+  ps.camera_max_speed = o.camera_max_speed;
+  const auto model = energy::marinsModel(vehicle);
+  const auto r = pl::planCoverage(pr, vehicle, model, ps, [](const std::string& s) { progress(s); });
+  const auto problems = pl::checkPlan(pr, r.plan.flown.path);
+  if (!problems.empty()) throw std::runtime_error("plan failed its own check: " + problems.front());
+
+  const auto mission = missionOf(r, pr, frame);
+  geo::PathGeoJsonOptions go;
+  go.leg_properties["speed_mps"] = r.plan.flown.speeds.cruise;
+  go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
+  go.leg_properties["time_s"] = r.plan.flown.leg_time;
+  const fs::path dir(o.out);
+  writeTextFileAtomic((dir / "mission.plan").string(), pl::toQgcPlan(mission));
+  writeTextFileAtomic((dir / "mission.waypoints").string(), pl::toQgcWpl(mission));
+  writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
+  writeTextFileAtomic((dir / "legs.csv").string(), pl::toLegCsv(legRecords(r.plan.flown, frame)));
+
+  const double e = r.plan.flown.energy;
+  nlohmann::json j = {
+      {"energy_j", e},
+      {"time_s", r.plan.flown.time},
+      {"length_m", r.plan.flown.length},
+      {"pattern", r.plan.pattern},
+      {"sweep_angle_deg", r.plan.sweep_angle_deg},
+      {"coverage_pct", r.plan.coverage_pct},
+      {"lower_bound_j", r.lower_bound_j},
+      {"bound_ratio", r.lower_bound_j > 0 ? e / r.lower_bound_j : 0.0},
+      {"spacing_m", pr.spacing},
+      {"footprint_m", pr.footprint},
+      {"altitude_m", pr.altitude},
+      {"corner_strategy", o.corners},
+      {"corners", {{"sharp", r.plan.flown.sharp_corners}, {"rounded", r.plan.flown.rounded_corners}}},
+      {"cells", r.plan.cells},
+      {"candidates", r.candidates},
+      {"baselines",
+       {{"shortest_path", candidateJson(r.shortest_path, e)},
+        {"ground_station_default", candidateJson(r.ground_station_default, e)},
+        {"best_spiral", r.best_spiral ? candidateJson(*r.best_spiral, e) : nlohmann::json(nullptr)}}},
+      {"battery", nullptr},
+      {"files", {(dir / "mission.plan").string(), (dir / "mission.waypoints").string(), (dir / "path.geojson").string(),
+                 (dir / "legs.csv").string()}},
+      {"notes", r.notes}};
+  if (o.json) {
+    printJson(j);
+    return;
+  }
+  std::cout << "plan: " << r.plan.pattern << " at " << r.plan.sweep_angle_deg << " deg, " << e << " J, "
+            << r.plan.flown.time << " s, " << r.plan.flown.length << " m, coverage " << r.plan.coverage_pct << " %\n"
+            << "lower bound " << r.lower_bound_j << " J (plan / bound " << e / r.lower_bound_j << ")\n";
+  for (const auto& [name, c] : {std::pair<const char*, const pl::PlanCandidate*>{"shortest path", &r.shortest_path},
+                                {"ground-station default", &r.ground_station_default}})
+    std::cout << name << ": " << c->flown.energy << " J (plan saves " << 100.0 * (c->flown.energy - e) / c->flown.energy << " %)\n";
+  if (r.best_spiral)
+    std::cout << "best spiral: " << r.best_spiral->flown.energy << " J (plan saves "
+              << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " %)\n";
+  for (const auto& n : r.notes) std::cout << "note: " << n << "\n";
+  std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
+}
+
+}  // namespace
+
+void registerPlanCommand(CLI::App& app) {
+  auto o = std::make_shared<PlanOpts>();
+  auto* cmd = app.add_subcommand("plan", "Plan the minimum-energy coverage flight of a survey area and write the mission");
+  cmd->add_option("AREA", o->area, "survey area (GeoJSON, KML, WKT, QGC .waypoints)")->required()->check(CLI::ExistingFile);
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--no-fly", o->no_fly, "no-fly zone file(s)")->check(CLI::ExistingFile);
+  cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
+  cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
+  cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));
+  cmd->add_option("--fov", o->fov_deg, "camera field of view across track [deg]");
+  cmd->add_option("--overlap", o->overlap, "side overlap between neighbouring swaths, fraction in [0, 1)");
+  cmd->add_option("--camera-max-speed", o->camera_max_speed, "largest ground speed on sweep legs the camera allows [m/s] (0: none)")
+      ->check(CLI::Range(0.0, 200.0));
+  cmd->add_option("--corner-strategy", o->corners, "sharp, rounded or auto (cheapest per corner)")
+      ->check(CLI::IsMember({"sharp", "rounded", "auto"}));
+  cmd->add_option("--out", o->out, "output folder for mission.plan, mission.waypoints, path.geojson, legs.csv")->required();
+  cmd->add_flag("--force", o->force, "overwrite existing output files");
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    if (o->spacing <= 0.0 && o->fov_deg <= 0.0)
+      throw std::invalid_argument("give --spacing M, or --altitude M --fov DEG --overlap F");
+    runPlan(*o);
+  });
+}
+
+}  // namespace wattswath::apps
