@@ -1,5 +1,6 @@
 // `wattswath plan`: survey area + vehicle -> minimum-energy coverage mission (.plan, .waypoints,
 // GeoJSON path, CSV of legs) with baselines scored by the same model in the same run.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -26,8 +27,6 @@ struct PlanOpts {
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
   bool force = false, json = false;
 };
-
-pl::GeoPoint toPl(const geo::GeoPoint& g) { return {g.lat_deg, g.lon_deg}; }
 
 geo::Point parseHome(const std::string& s, const geo::LocalFrame& frame) {
   const auto comma = s.find(',');
@@ -57,10 +56,11 @@ nlohmann::json candidateJson(const pl::PlanCandidate& c, double plan_energy) {
 }
 
 // Waypoints: the end of every line or arc, flown at that leg's cruise speed.
-pl::Mission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const geo::LocalFrame& frame) {
+pl::Mission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const geo::LocalFrame& frame,
+                      double home_alt_amsl) {
   pl::Mission m;
-  m.home = toPl(frame.toGeodetic(pr.home));
-  m.home_altitude_amsl_m = frame.origin().alt_m;
+  m.home = frame.toGeodetic(pr.home);
+  m.home_altitude_amsl_m = home_alt_amsl;
   m.takeoff_altitude_m = pr.altitude;
   const auto& f = r.plan.flown;
   double vmax = 0.0;
@@ -69,13 +69,25 @@ pl::Mission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, cons
     if (leg.kind == geo::PrimitiveKind::TurnInPlace) continue;
     const double v = std::max(f.speeds.cruise[i], 0.1);
     vmax = std::max(vmax, v);
-    m.waypoints.push_back({toPl(frame.toGeodetic(leg.end)), pr.altitude, v});
+    m.waypoints.push_back({frame.toGeodetic(leg.end), pr.altitude, v});
   }
   m.cruise_speed_mps = vmax > 0 ? vmax : 5.0;
   m.hover_speed_mps = m.cruise_speed_mps;
-  for (const auto& z : pr.no_fly) {
+  // Geofence: every hole of the area (holes are no-fly zones) and each extra no-fly zone that did
+  // not become a hole (one clipped by the boundary, or outside the area).
+  auto sameRing = [](const geo::Ring& a, const geo::Ring& b) {
+    if (a.size() != b.size()) return false;
+    for (const auto& p : a)
+      if (std::none_of(b.begin(), b.end(), [&](const geo::Point& q) { return (p - q).norm() < 1e-3; })) return false;
+    return true;
+  };
+  std::vector<geo::Ring> fence = pr.area.holes;
+  for (const auto& z : pr.no_fly)
+    if (std::none_of(pr.area.holes.begin(), pr.area.holes.end(), [&](const geo::Ring& h) { return sameRing(h, z); }))
+      fence.push_back(z);
+  for (const auto& z : fence) {
     std::vector<pl::GeoPoint> ring;
-    for (const auto& p : z) ring.push_back(toPl(frame.toGeodetic(p)));
+    for (const auto& p : z) ring.push_back(frame.toGeodetic(p));
     m.no_fly.push_back(ring);
   }
   return m;
@@ -86,8 +98,8 @@ std::vector<pl::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFr
   for (size_t i = 0; i < f.path.legs.size(); ++i) {
     const auto& leg = f.path.legs[i];
     pl::LegRecord l;
-    l.start = toPl(frame.toGeodetic(leg.start));
-    l.end = toPl(frame.toGeodetic(leg.end));
+    l.start = frame.toGeodetic(leg.start);
+    l.end = frame.toGeodetic(leg.end);
     l.kind = leg.kind == geo::PrimitiveKind::Line ? "line" : leg.kind == geo::PrimitiveKind::Arc ? "arc" : "turn_in_place";
     l.role = geo::roleName(leg.role);
     l.length_m = leg.length();
@@ -143,7 +155,7 @@ void runPlan(const PlanOpts& o) {
   const auto problems = pl::checkPlan(pr, r.plan.flown.path);
   if (!problems.empty()) throw std::runtime_error("plan failed its own check: " + problems.front());
 
-  const auto mission = missionOf(r, pr, frame);
+  const auto mission = missionOf(r, pr, frame, area.home_alt_m.value_or(frame.origin().alt_m));
   geo::PathGeoJsonOptions go;
   go.leg_properties["speed_mps"] = r.plan.flown.speeds.cruise;
   go.leg_properties["energy_j"] = r.plan.flown.leg_energy;

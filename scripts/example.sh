@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The README's first quick-start command: install, build, run the main job on a bundled area.
+# The README's first quick-start command: install, build, plan the minimum-energy mission of a bundled area.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 WATTSWATH_SETUP_TESTS=0 scripts/setup.sh
 scripts/build.sh
-build/bin/wattswath hover --vehicle data/vehicles/iris.json
+build/bin/wattswath plan data/areas/iris_area.geojson --vehicle data/vehicles/iris.json --spacing 15 \
+  --out out/example --force

@@ -81,6 +81,7 @@ std::vector<std::vector<Interval>> sweepLines(const Context& ctx, double angle, 
     ymax = std::max(ymax, p.y());
   }
   const double d = pr.spacing;
+  const double half_band = 0.5 * pr.footprint * (1.0 - 1e-9);  // [m] half width of a line's footprint
   const int nlines = std::max(1, static_cast<int>(std::ceil((ymax - ymin) / d - 1e-9)));
   const double y0 = ymin + 0.5 * ((ymax - ymin) - (nlines - 1) * d);
   *first_y = y0;
@@ -90,6 +91,22 @@ std::vector<std::vector<Interval>> sweepLines(const Context& ctx, double angle, 
     std::vector<double> xs;
     crossings(outer, y, xs);
     auto area = pairsOf(xs);
+    // Stretch each interval to the extent of the area inside the line's footprint band: an edge
+    // nearly parallel to the line leaves a long thin wedge the centre line alone would miss. The
+    // extent is reached at the band's edges or at a vertex inside the band.
+    std::vector<double> probes{y - half_band, y + half_band};
+    for (const auto& p : outer)
+      if (std::abs(p.y() - y) < half_band) probes.push_back(p.y());
+    for (double yp : probes) {
+      std::vector<double> px;
+      crossings(outer, yp, px);
+      for (const auto& b : pairsOf(px))
+        for (auto& a : area)
+          if (b.first < a.second && b.second > a.first) {
+            a.first = std::min(a.first, b.first);
+            a.second = std::max(a.second, b.second);
+          }
+    }
     std::vector<std::pair<double, double>> blocked;
     for (const auto& r : obst) {
       std::vector<double> bx;
@@ -309,16 +326,29 @@ AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer,
     g.cost.push_back(g.cost[i]);
   }
   const int n = static_cast<int>(cand.size());
-  std::vector<Point> entry(n + 1), exit(n + 1);
+  // Transit costs between the distinct end points only (a candidate and its reverse share both
+  // ends, and the start corners of a cell share theirs): symmetric, computed once per pair.
+  std::vector<Point> ends{ctx.problem->home};
+  auto indexOf = [&ends](const Point& p) {
+    for (size_t k = 0; k < ends.size(); ++k)
+      if (ends[k] == p) return static_cast<int>(k);
+    ends.push_back(p);
+    return static_cast<int>(ends.size()) - 1;
+  };
+  std::vector<int> entry(n + 1, 0), exit(n + 1, 0);  // index n (depot) is home, end 0
   for (int i = 0; i < n; ++i) {
-    entry[i] = cand[i].points.front();
-    exit[i] = cand[i].points.back();
+    entry[i] = indexOf(cand[i].points.front());
+    exit[i] = indexOf(cand[i].points.back());
   }
-  entry[n] = exit[n] = ctx.problem->home;
+  const int m = static_cast<int>(ends.size());
+  Eigen::MatrixXd between = Eigen::MatrixXd::Zero(m, m);
+  for (int p = 0; p < m; ++p)
+    for (int q = p + 1; q < m; ++q)
+      between(p, q) = between(q, p) = polylineCost(transitPolyline(ctx, ends[p], ends[q]), obj, stop, scorer);
   g.transit = Eigen::MatrixXd::Zero(n + 1, n + 1);
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j)
-      if (i != j || i == n) g.transit(i, j) = polylineCost(transitPolyline(ctx, exit[i], entry[j]), obj, stop, scorer);
+      if (i != j || i == n) g.transit(i, j) = between(exit[i], entry[j]);
   const GtspTour tour = solveGtsp(g, exact_max_cells);
   Route full;
   full.points.push_back(ctx.problem->home);
@@ -558,22 +588,39 @@ double coveragePercent(const SurveyProblem& pr, const geometry::CoveragePath& pa
       inside[static_cast<size_t>(j) * nx + i] = in;
     }
   const double half = 0.5 * pr.footprint;
-  for (const auto& leg : path.legs) {
-    if (leg.role != LegRole::Sweep || leg.kind != geometry::PrimitiveKind::Line) continue;
-    const Point d = leg.end - leg.start;
+  // Marks the square footprint swept along segment s-e, reaching `reach` [m] beyond each end.
+  auto sweep = [&](const Point& st, const Point& en, double reach) {
+    const Point d = en - st;
     const double L = d.norm();
-    if (L <= 0) continue;
+    if (L <= 0) return;
     const Point u = d / L, nrm(-u.y(), u.x());
-    const double bx0 = std::min(leg.start.x(), leg.end.x()) - half, bx1 = std::max(leg.start.x(), leg.end.x()) + half;
-    const double by0 = std::min(leg.start.y(), leg.end.y()) - half, by1 = std::max(leg.start.y(), leg.end.y()) + half;
+    const double bx0 = std::min(st.x(), en.x()) - half, bx1 = std::max(st.x(), en.x()) + half;
+    const double by0 = std::min(st.y(), en.y()) - half, by1 = std::max(st.y(), en.y()) + half;
     const int i0 = std::max(0, static_cast<int>((bx0 - xmin) / step)), i1 = std::min(nx - 1, static_cast<int>((bx1 - xmin) / step) + 1);
     const int j0 = std::max(0, static_cast<int>((by0 - ymin) / step)), j1 = std::min(ny - 1, static_cast<int>((by1 - ymin) / step) + 1);
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) {
-        const Point q = at(i, j) - leg.start;
+        const Point q = at(i, j) - st;
         const double a = q.dot(u), b = q.dot(nrm);
-        if (a >= -half && a <= L + half && std::abs(b) <= half + 1e-9) covered[static_cast<size_t>(j) * nx + i] = 1;
+        if (a >= -reach && a <= L + reach && std::abs(b) <= half + 1e-9) covered[static_cast<size_t>(j) * nx + i] = 1;
       }
+  };
+  for (const auto& leg : path.legs) {
+    if (leg.role != LegRole::Sweep && leg.role != LegRole::Turn) continue;
+    if (leg.kind == geometry::PrimitiveKind::Line) {
+      sweep(leg.start, leg.end, half);
+    } else if (leg.kind == geometry::PrimitiveKind::Arc) {
+      // Arcs (rounded corners) as chords of at most a quarter footprint; no reach beyond the chords.
+      const int k = std::max(1, static_cast<int>(std::ceil(std::abs(leg.turn_angle) * leg.radius / (0.25 * pr.footprint))));
+      const double a0 = std::atan2(leg.start.y() - leg.center.y(), leg.start.x() - leg.center.x());
+      Point prev = leg.start;
+      for (int c = 1; c <= k; ++c) {
+        const double a = a0 + leg.turn_angle * c / k;
+        const Point p = c == k ? leg.end : Point(leg.center + leg.radius * Point(std::cos(a), std::sin(a)));
+        sweep(prev, p, 0.0);
+        prev = p;
+      }
+    }
   }
   size_t n_in = 0, n_cov = 0;
   for (size_t k = 0; k < inside.size(); ++k) {

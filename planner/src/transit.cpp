@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Geometry>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 
@@ -87,18 +88,22 @@ bool segmentEntersRing(const Point& a, const Point& b, const Ring& ring) {
 
 struct TransitRouter::Impl {
   std::vector<Ring> obstacles;
+  std::vector<Eigen::AlignedBox2d> boxes;  // bounding box of each obstacle
   TransitSettings settings;
   std::vector<Point> nodes;  // obstacle vertices pushed outwards by the clearance
   Graph graph;
+  Eigen::MatrixXd dist;                    // [m] shortest node-to-node distance in the graph
+  std::vector<std::vector<size_t>> pred;   // pred[i][j]: node before j on the shortest path from i
 
   bool clear(const Point& a, const Point& b) const {
-    for (const auto& r : obstacles)
-      if (segmentEntersRing(a, b, r)) return false;
+    Eigen::AlignedBox2d seg(a.cwiseMin(b), a.cwiseMax(b));
+    for (size_t i = 0; i < obstacles.size(); ++i)
+      if (seg.intersects(boxes[i]) && segmentEntersRing(a, b, obstacles[i])) return false;
     return true;
   }
   bool blocked(const Point& p) const {
-    for (const auto& r : obstacles)
-      if (insideRing(p, r)) return true;
+    for (size_t i = 0; i < obstacles.size(); ++i)
+      if (boxes[i].contains(p) && insideRing(p, obstacles[i])) return true;
     return false;
   }
 };
@@ -112,6 +117,11 @@ TransitRouter::TransitRouter(std::vector<Ring> obstacles, TransitSettings settin
       throw std::invalid_argument("TransitRouter: obstacle " + std::to_string(i) + " has " +
                                   std::to_string(obstacles[i].size()) + " vertices (at least 3 expected)");
   impl_->obstacles = std::move(obstacles);
+  for (const auto& r : impl_->obstacles) {
+    Eigen::AlignedBox2d box;
+    for (const auto& p : r) box.extend(p);
+    impl_->boxes.push_back(box);
+  }
   impl_->settings = settings;
   // Convex vertices (seen from outside) pushed out along the outward bisector; only those can be on
   // a shortest path. The pushed vertex sits `clearance` from both adjacent edges.
@@ -136,6 +146,17 @@ TransitRouter::TransitRouter(std::vector<Ring> obstacles, TransitSettings settin
     for (size_t j = i + 1; j < impl_->nodes.size(); ++j)
       if (impl_->clear(impl_->nodes[i], impl_->nodes[j]))
         boost::add_edge(i, j, (impl_->nodes[i] - impl_->nodes[j]).norm(), impl_->graph);
+  // All node-to-node shortest paths once (Dijkstra from every node): queries then only connect
+  // their two end points to the nodes they see.
+  const size_t m = impl_->nodes.size();
+  impl_->dist = Eigen::MatrixXd::Constant(m, m, std::numeric_limits<double>::infinity());
+  impl_->pred.assign(m, std::vector<size_t>(m));
+  std::vector<double> d(m);
+  for (size_t i = 0; i < m; ++i) {
+    boost::dijkstra_shortest_paths(impl_->graph, i,
+                                   boost::distance_map(d.data()).predecessor_map(impl_->pred[i].data()));
+    for (size_t j = 0; j < m; ++j) impl_->dist(i, j) = d[j];
+  }
 }
 
 TransitRouter::~TransitRouter() = default;
@@ -150,20 +171,30 @@ std::vector<Point> TransitRouter::route(const Point& a, const Point& b) const {
   if (impl_->blocked(a)) throw std::runtime_error("transit: start point " + fmt(a) + " is inside a no-fly zone");
   if (impl_->blocked(b)) throw std::runtime_error("transit: end point " + fmt(b) + " is inside a no-fly zone");
   if (impl_->clear(a, b)) return {a, b};
-  Graph g = impl_->graph;
   const size_t m = impl_->nodes.size();
-  const size_t sa = boost::add_vertex(g), sb = boost::add_vertex(g);
+  std::vector<std::pair<size_t, double>> from_a, to_b;  // visible nodes and the distance to them
   for (size_t i = 0; i < m; ++i) {
-    if (impl_->clear(a, impl_->nodes[i])) boost::add_edge(sa, i, (a - impl_->nodes[i]).norm(), g);
-    if (impl_->clear(b, impl_->nodes[i])) boost::add_edge(sb, i, (b - impl_->nodes[i]).norm(), g);
+    if (impl_->clear(a, impl_->nodes[i])) from_a.emplace_back(i, (a - impl_->nodes[i]).norm());
+    if (impl_->clear(b, impl_->nodes[i])) to_b.emplace_back(i, (b - impl_->nodes[i]).norm());
   }
-  std::vector<double> dist(m + 2, std::numeric_limits<double>::infinity());
-  std::vector<Graph::vertex_descriptor> pred(m + 2);
-  boost::dijkstra_shortest_paths(g, sa, boost::distance_map(dist.data()).predecessor_map(pred.data()));
-  if (!std::isfinite(dist[sb]))
+  double best = std::numeric_limits<double>::infinity();
+  size_t bi = 0, bj = 0;
+  for (const auto& [i, da] : from_a)
+    for (const auto& [j, db] : to_b) {
+      const double d = da + impl_->dist(i, j) + db;
+      if (d < best) {
+        best = d;
+        bi = i;
+        bj = j;
+      }
+    }
+  if (!std::isfinite(best))
     throw std::runtime_error("transit: no route from " + fmt(a) + " to " + fmt(b) + " around the no-fly zones");
   std::vector<Point> path{b};
-  for (auto v = pred[sb]; v != sa; v = pred[v]) path.push_back(impl_->nodes[v]);
+  for (size_t v = bj;; v = impl_->pred[bi][v]) {
+    path.push_back(impl_->nodes[v]);
+    if (v == bi) break;
+  }
   path.push_back(a);
   std::reverse(path.begin(), path.end());
   return path;

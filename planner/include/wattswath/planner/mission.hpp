@@ -7,13 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "wattswath/geometry/frame.hpp"
+
 namespace wattswath::planner {
 
-/// A WGS84 position [deg].
-struct GeoPoint {
-  double lat_deg = 0.0;  ///< [deg] latitude, in [-90, 90]
-  double lon_deg = 0.0;  ///< [deg] longitude, in [-180, 180]
-};
+/// A WGS84 position [deg]: geometry's geodetic point (its alt_m is not used by the writers).
+using GeoPoint = geometry::GeoPoint;
 
 /// One waypoint of a mission, flown towards at `speed_mps`.
 struct MissionWaypoint {

@@ -1,0 +1,132 @@
+// The `plan` command end to end: the issue's JSON keys, the three mission files (the .plan passes
+// the QGroundControl format check), the plan never costing more than a baseline, clear errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "test_util.hpp"
+#include "wattswath/planner/mission.hpp"
+
+using wattswath::test::cliBinary;
+using wattswath::test::run;
+using wattswath::test::sourcePath;
+
+namespace {
+
+std::string iris() { return sourcePath("data/vehicles/iris.json"); }
+
+std::string outDir(const std::string& name) {
+  const auto d = std::filesystem::temp_directory_path() / ("wattswath_test_plan_" + name);
+  std::filesystem::remove_all(d);
+  return d.string();
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+nlohmann::json planJson(const std::string& area, const std::string& out, const std::string& extra) {
+  const auto r = run(cliBinary() + " plan " + area + " --vehicle " + iris() + " --out " + out + " " + extra +
+                     " --json 2>/dev/null");
+  EXPECT_EQ(r.status, 0) << area << " " << extra << "\n" << r.output;
+  return nlohmann::json::parse(r.output);  // exactly one JSON object on stdout
+}
+
+void expectError(const std::string& args, const std::string& needle) {
+  const auto r = run(cliBinary() + " " + args + " 2>&1");
+  EXPECT_NE(r.status, 0) << args;
+  EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output;
+}
+
+// Checks the JSON contract of issue 5 and the written files.
+void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
+  for (const char* k : {"energy_j", "time_s", "length_m", "sweep_angle_deg", "coverage_pct", "lower_bound_j"})
+    EXPECT_TRUE(j.contains(k) && j.at(k).is_number()) << k;
+  EXPECT_TRUE(j.at("pattern") == "boustrophedon" || j.at("pattern") == "spiral") << j.at("pattern");
+  EXPECT_GE(j.at("coverage_pct").get<double>(), 99.0);
+  const double e = j.at("energy_j").get<double>();
+  EXPECT_GT(e, 0.0);
+  EXPECT_GT(j.at("lower_bound_j").get<double>(), 0.0);
+  EXPECT_LE(j.at("lower_bound_j").get<double>(), e);
+  const auto& b = j.at("baselines");
+  for (const char* name : {"shortest_path", "ground_station_default", "best_spiral"}) {
+    ASSERT_TRUE(b.contains(name)) << name;
+    if (b.at(name).is_null()) continue;  // best_spiral may be absent (noted)
+    for (const char* k : {"energy_j", "time_s", "length_m"}) EXPECT_TRUE(b.at(name).at(k).is_number()) << name << k;
+    EXPECT_LE(e, b.at(name).at("energy_j").get<double>() * (1 + 1e-12)) << name;
+  }
+  EXPECT_TRUE(j.contains("battery"));
+  for (const char* f : {"mission.plan", "mission.waypoints", "path.geojson"})
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
+  const auto problems = wattswath::planner::checkQgcPlan(slurp(out + "/mission.plan"));
+  EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
+  EXPECT_EQ(slurp(out + "/mission.waypoints").rfind("QGC WPL 110", 0), 0u);
+  const auto gj = nlohmann::json::parse(slurp(out + "/path.geojson"));
+  EXPECT_EQ(gj.at("type"), "FeatureCollection");
+  EXPECT_EQ(gj.at("features").at(0).at("geometry").at("type"), "LineString");
+}
+
+}  // namespace
+
+TEST(CliPlan, IrisAreaWithNoFlyZone) {
+  const auto out = outDir("iris");
+  const auto j = planJson(sourcePath("data/areas/iris_area.geojson"), out, "--spacing 15");
+  checkPlanOutput(j, out);
+  // The no-fly zone of the area is a geofence exclusion polygon in the .plan.
+  const auto plan = nlohmann::json::parse(slurp(out + "/mission.plan"));
+  EXPECT_EQ(plan.at("geoFence").at("polygons").size(), 1u);
+  EXPECT_FALSE(plan.at("geoFence").at("polygons").at(0).at("inclusion").get<bool>());
+}
+
+TEST(CliPlan, CameraFootprintAndCornerStrategy) {
+  const auto out = outDir("camera");
+  const auto j = planJson(sourcePath("data/areas/espiral_rectangle.geojson"), out,
+                          "--altitude 20 --fov 60 --overlap 0.2 --corner-strategy sharp --home 43.7187,10.4326");
+  checkPlanOutput(j, out);
+  EXPECT_EQ(j.at("corners").at("rounded").get<int>(), 0);  // sharp: every corner a stop
+}
+
+TEST(CliPlan, RefusesToOverwriteWithoutForce) {
+  const auto out = outDir("force");
+  const std::string area = sourcePath("data/areas/espiral_rectangle.geojson");
+  planJson(area, out, "--spacing 30");
+  expectError("plan " + area + " --vehicle " + iris() + " --spacing 30 --out " + out, "--force");
+  planJson(area, out, "--spacing 30 --force");
+}
+
+TEST(CliPlan, ClearErrors) {
+  const std::string area = sourcePath("data/areas/espiral_rectangle.geojson");
+  const std::string base = "plan " + area + " --vehicle " + iris() + " --out " + outDir("errors");
+  expectError(base, "--spacing");
+  expectError(base + " --spacing 10 --fov 60 --overlap 0.2", "not both");
+  expectError(base + " --fov 60 --overlap 1.5", "--overlap");
+  expectError(base + " --spacing 10 --home 43.7", "LAT,LON");
+  expectError(base + " --spacing 10 --home 95,10", "lat");
+  expectError(base + " --spacing 10 --corner-strategy wiggly", "corner-strategy");
+  expectError("plan " + sourcePath("data/vehicles/iris.json") + " --vehicle " + iris() + " --spacing 10 --out " +
+                  outDir("errors2"),
+              "iris.json");
+}
+
+#ifdef WATTSWATH_TEST_SHARED_DATA
+TEST(CliPlanShared, EspiralRectangleWaypoints) {
+  const auto out = outDir("espiral");
+  const auto j = planJson(wattswath::test::sharedData("espiral/area__rectangle.waypoints"), out, "--spacing 20");
+  checkPlanOutput(j, out);
+}
+
+TEST(CliPlanShared, IrisWaypointsWithNoFlyFile) {
+  const auto out = outDir("iris_wpl");
+  const auto j = planJson(wattswath::test::sharedData("iris-flights/plan__real_flight_area.waypoints"), out,
+                          "--no-fly " + wattswath::test::sharedData("iris-flights/plan__real_flight_obstacles.waypoints") +
+                              " --spacing 15");
+  checkPlanOutput(j, out);
+}
+#endif
