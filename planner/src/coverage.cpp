@@ -318,9 +318,18 @@ AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer,
   }
   if (cand.empty()) return res;
   res.cells = cluster;
-  // Each candidate reversed is also a candidate (same internal cost, swapped ends).
+  // Each candidate reversed is also a candidate (same internal cost, swapped ends), unless a
+  // candidate of the cell already runs between the same two ends (the reverse of a zigzag from one
+  // corner is usually the zigzag from its end corner): the order search then has half the nodes.
   const size_t base = cand.size();
   for (size_t i = 0; i < base; ++i) {
+    const Point& from = cand[i].points.back();
+    const Point& to = cand[i].points.front();
+    bool same_ends = false;
+    for (size_t k = 0; k < base && !same_ends; ++k)
+      same_ends = g.cluster[k] == g.cluster[i] && cand[k].points.front() == from && cand[k].points.back() == to &&
+                  g.cost[k] <= g.cost[i];
+    if (same_ends) continue;
     cand.push_back(reversed(cand[i]));
     g.cluster.push_back(g.cluster[i]);
     g.cost.push_back(g.cost[i]);

@@ -22,6 +22,32 @@ std::vector<std::vector<int>> membersOf(const GtspInstance& g) {
 
 // Best candidate per cluster for a fixed cluster order: shortest path through the layered graph
 // depot -> layer 1 -> ... -> layer k -> depot (dynamic programming over the layers).
+// Cost only of bestForOrder (no allocation once the buffers have grown): the local search calls
+// this for every move and rebuilds the tour only for an accepted one.
+double orderCost(const GtspInstance& g, const std::vector<std::vector<int>>& members, const std::vector<int>& order,
+                 std::vector<double>& cur, std::vector<double>& next) {
+  if (order.empty()) return kInf;
+  const int n = static_cast<int>(g.cluster.size());
+  const auto& first = members[order[0]];
+  cur.resize(first.size());
+  for (size_t b = 0; b < first.size(); ++b) cur[b] = g.transit(n, first[b]) + g.cost[first[b]];
+  for (size_t l = 1; l < order.size(); ++l) {
+    const auto& prev = members[order[l - 1]];
+    const auto& now = members[order[l]];
+    next.assign(now.size(), kInf);
+    for (size_t b = 0; b < now.size(); ++b) {
+      double best = kInf;
+      for (size_t a = 0; a < prev.size(); ++a) best = std::min(best, cur[a] + g.transit(prev[a], now[b]));
+      next[b] = best + g.cost[now[b]];
+    }
+    cur.swap(next);
+  }
+  const auto& last = members[order.back()];
+  double c = kInf;
+  for (size_t b = 0; b < last.size(); ++b) c = std::min(c, cur[b] + g.transit(last[b], n));
+  return c;
+}
+
 GtspTour bestForOrder(const GtspInstance& g, const std::vector<std::vector<int>>& members,
                       const std::vector<int>& order) {
   const int n = static_cast<int>(g.cluster.size());
@@ -182,43 +208,44 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
     order.push_back(g.cluster[bv]);
     at = bv;
   }
-  GtspTour best = bestForOrder(g, members, order);
   // Local search over the cluster order; every order is scored with its optimal candidates.
+  std::vector<double> buf_a, buf_b;
+  std::vector<int> o, rest;
+  double best_cost = orderCost(g, members, order, buf_a, buf_b);
+  auto accept = [&]() {
+    const double c = orderCost(g, members, o, buf_a, buf_b);
+    if (c < best_cost * (1.0 - kImproveRel)) {
+      order = o;
+      best_cost = c;
+      return true;
+    }
+    return false;
+  };
   bool improved = true;
   while (improved) {
     improved = false;
     for (int i = 0; i < k && !improved; ++i) {
       for (int j = i + 1; j < k && !improved; ++j) {  // 2-opt: reverse order[i..j]
-        auto o = order;
+        o = order;
         std::reverse(o.begin() + i, o.begin() + j + 1);
-        auto t = bestForOrder(g, members, o);
-        if (t.cost < best.cost * (1.0 - kImproveRel)) {
-          order = o;
-          best = t;
-          improved = true;
-        }
+        improved = accept();
       }
     }
     for (int len = 1; len <= 3 && !improved; ++len) {  // or-opt: move a run of 1..3 clusters
       for (int i = 0; i + len <= k && !improved; ++i) {
         for (int j = 0; j <= k - len && !improved; ++j) {
           if (j == i) continue;
-          std::vector<int> rest(order.begin(), order.begin() + i);
+          rest.assign(order.begin(), order.begin() + i);
           rest.insert(rest.end(), order.begin() + i + len, order.end());
-          std::vector<int> run(order.begin() + i, order.begin() + i + len);
-          auto o = rest;
-          o.insert(o.begin() + std::min<int>(j, static_cast<int>(rest.size())), run.begin(), run.end());
-          auto t = bestForOrder(g, members, o);
-          if (t.cost < best.cost * (1.0 - kImproveRel)) {
-            order = o;
-            best = t;
-            improved = true;
-          }
+          o = rest;
+          o.insert(o.begin() + std::min<int>(j, static_cast<int>(rest.size())), order.begin() + i,
+                   order.begin() + i + len);
+          improved = accept();
         }
       }
     }
   }
-  return best;
+  return bestForOrder(g, members, order);
 }
 
 GtspTour solveGtsp(const GtspInstance& g, int exact_max_clusters) {
