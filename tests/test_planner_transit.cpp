@@ -69,3 +69,19 @@ TEST(Transit, SegmentTestsSeeDiagonalsAndEdges) {
   EXPECT_FALSE(segmentEntersRing({-20, 10}, {20, 10}, s));   // touching the top edge
   EXPECT_THROW(TransitRouter({{{0, 0}, {1, 0}}}), std::invalid_argument);
 }
+
+TEST(Transit, RouteAllMatchesPairwiseRoutes) {
+  TransitRouter r({square(0, 0, 10), square(40, 5, 8), square(-30, 30, 6)});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-60.0, 60.0);
+  std::vector<Point> pts;
+  while (pts.size() < 25) {
+    const Point p(u(rng), u(rng));
+    if (!r.blocked(p)) pts.push_back(p);
+  }
+  const auto all = r.routeAll(pts);
+  ASSERT_EQ(all.size(), pts.size() * pts.size());
+  for (size_t i = 0; i < pts.size(); ++i)
+    for (size_t j = i + 1; j < pts.size(); ++j)
+      EXPECT_NEAR(length(all[i * pts.size() + j]), length(r.route(pts[i], pts[j])), 1e-9) << i << " " << j;
+}

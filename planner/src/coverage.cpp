@@ -285,10 +285,6 @@ double polylineCost(const std::vector<Point>& pts, Objective obj, const StopTabl
   return c;
 }
 
-std::vector<Point> transitPolyline(const Context& ctx, const Point& a, const Point& b) {
-  return ctx.router->clear(a, b) ? std::vector<Point>{a, b} : ctx.router->route(a, b);
-}
-
 // Boustrophedon at one angle: cells, 4 candidates each, ordered by GTSP, assembled home to home.
 AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer, const StopTable& stop, Objective obj,
                           int exact_max_cells) {
@@ -351,9 +347,10 @@ AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer,
   }
   const int m = static_cast<int>(ends.size());
   Eigen::MatrixXd between = Eigen::MatrixXd::Zero(m, m);
+  const auto routes = ctx.router->routeAll(ends);
   for (int p = 0; p < m; ++p)
     for (int q = p + 1; q < m; ++q)
-      between(p, q) = between(q, p) = polylineCost(transitPolyline(ctx, ends[p], ends[q]), obj, stop, scorer);
+      between(p, q) = between(q, p) = polylineCost(routes[static_cast<size_t>(p) * m + q], obj, stop, scorer);
   g.transit = Eigen::MatrixXd::Zero(n + 1, n + 1);
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j)

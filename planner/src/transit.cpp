@@ -68,15 +68,21 @@ bool segmentEntersRing(const Point& a, const Point& b, const Ring& ring) {
     if (properCross(a, b, ring[i], ring[(i + 1) % n])) return true;
   // No proper crossing: the segment is inside or outside except for touching points. Sample it
   // between the ring vertices it touches (a segment along a diagonal touches two vertices).
-  std::vector<double> ts{0.0, 1.0};
   const Point d = b - a;
   const double len2 = d.squaredNorm();
+  std::vector<double> ts;  // allocated only when the segment touches a vertex
   if (len2 > 0.0) {
     for (const auto& v : ring) {
       const double t = (v - a).dot(d) / len2;
       if (t > 0.0 && t < 1.0 && std::abs(orient(a, b, v)) <= kEps * std::sqrt(len2)) ts.push_back(t);
     }
   }
+  if (ts.empty()) {
+    const Point m = a + 0.5 * d;
+    return insideRing(m, ring) && !onBoundary(m, ring);
+  }
+  ts.push_back(0.0);
+  ts.push_back(1.0);
   std::sort(ts.begin(), ts.end());
   for (size_t i = 0; i + 1 < ts.size(); ++i) {
     if (ts[i + 1] - ts[i] < 1e-12) continue;
@@ -167,21 +173,17 @@ const std::vector<Ring>& TransitRouter::obstacles() const { return impl_->obstac
 bool TransitRouter::clear(const Point& a, const Point& b) const { return impl_->clear(a, b); }
 bool TransitRouter::blocked(const Point& p) const { return impl_->blocked(p); }
 
-std::vector<Point> TransitRouter::route(const Point& a, const Point& b) const {
-  if (impl_->blocked(a)) throw std::runtime_error("transit: start point " + fmt(a) + " is inside a no-fly zone");
-  if (impl_->blocked(b)) throw std::runtime_error("transit: end point " + fmt(b) + " is inside a no-fly zone");
-  if (impl_->clear(a, b)) return {a, b};
-  const size_t m = impl_->nodes.size();
-  std::vector<std::pair<size_t, double>> from_a, to_b;  // visible nodes and the distance to them
-  for (size_t i = 0; i < m; ++i) {
-    if (impl_->clear(a, impl_->nodes[i])) from_a.emplace_back(i, (a - impl_->nodes[i]).norm());
-    if (impl_->clear(b, impl_->nodes[i])) to_b.emplace_back(i, (b - impl_->nodes[i]).norm());
-  }
+namespace {
+
+// Shortest way from `a` to `b` over the node graph, given the nodes each end sees (node, distance).
+std::vector<Point> viaNodes(const Point& a, const Point& b, const std::vector<std::pair<size_t, double>>& from_a,
+                            const std::vector<std::pair<size_t, double>>& to_b, const std::vector<Point>& nodes,
+                            const Eigen::MatrixXd& dist, const std::vector<std::vector<size_t>>& pred) {
   double best = std::numeric_limits<double>::infinity();
   size_t bi = 0, bj = 0;
   for (const auto& [i, da] : from_a)
     for (const auto& [j, db] : to_b) {
-      const double d = da + impl_->dist(i, j) + db;
+      const double d = da + dist(i, j) + db;
       if (d < best) {
         best = d;
         bi = i;
@@ -191,13 +193,52 @@ std::vector<Point> TransitRouter::route(const Point& a, const Point& b) const {
   if (!std::isfinite(best))
     throw std::runtime_error("transit: no route from " + fmt(a) + " to " + fmt(b) + " around the no-fly zones");
   std::vector<Point> path{b};
-  for (size_t v = bj;; v = impl_->pred[bi][v]) {
-    path.push_back(impl_->nodes[v]);
+  for (size_t v = bj;; v = pred[bi][v]) {
+    path.push_back(nodes[v]);
     if (v == bi) break;
   }
   path.push_back(a);
   std::reverse(path.begin(), path.end());
   return path;
+}
+
+}  // namespace
+
+std::vector<std::pair<size_t, double>> TransitRouter::visibleNodes(const Point& p) const {
+  std::vector<std::pair<size_t, double>> out;
+  for (size_t i = 0; i < impl_->nodes.size(); ++i)
+    if (impl_->clear(p, impl_->nodes[i])) out.emplace_back(i, (p - impl_->nodes[i]).norm());
+  return out;
+}
+
+std::vector<Point> TransitRouter::route(const Point& a, const Point& b) const {
+  if (impl_->blocked(a)) throw std::runtime_error("transit: start point " + fmt(a) + " is inside a no-fly zone");
+  if (impl_->blocked(b)) throw std::runtime_error("transit: end point " + fmt(b) + " is inside a no-fly zone");
+  if (impl_->clear(a, b)) return {a, b};
+  return viaNodes(a, b, visibleNodes(a), visibleNodes(b), impl_->nodes, impl_->dist, impl_->pred);
+}
+
+std::vector<std::vector<Point>> TransitRouter::routeAll(const std::vector<Point>& points) const {
+  const size_t n = points.size();
+  for (const auto& p : points)
+    if (impl_->blocked(p)) throw std::runtime_error("transit: point " + fmt(p) + " is inside a no-fly zone");
+  std::vector<std::vector<std::pair<size_t, double>>> seen(n);
+  std::vector<bool> seen_done(n, false);
+  std::vector<std::vector<Point>> out(n * n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      if (impl_->clear(points[i], points[j])) {
+        out[i * n + j] = {points[i], points[j]};
+        continue;
+      }
+      for (size_t k : {i, j})
+        if (!seen_done[k]) {
+          seen[k] = visibleNodes(points[k]);
+          seen_done[k] = true;
+        }
+      out[i * n + j] = viaNodes(points[i], points[j], seen[i], seen[j], impl_->nodes, impl_->dist, impl_->pred);
+    }
+  return out;
 }
 
 }  // namespace wattswath::planner

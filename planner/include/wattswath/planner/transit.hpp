@@ -4,6 +4,7 @@
 /// visibility graph over the obstacles' vertices pushed out by a clearance (Boost.Graph Dijkstra).
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "wattswath/geometry/polygon.hpp"
@@ -35,6 +36,10 @@ class TransitRouter {
   /// When `a` or `b` lies inside an obstacle, or no route exists, throws std::runtime_error
   /// naming the point.
   std::vector<geometry::Point> route(const geometry::Point& a, const geometry::Point& b) const;
+  /// Shortest polylines between all pairs of `points` [m]: element [i * n + j] for i < j is the
+  /// route from points[i] to points[j] (as route()); the others are empty. Each point's view of
+  /// the obstacle vertices is computed once. Throws like route().
+  std::vector<std::vector<geometry::Point>> routeAll(const std::vector<geometry::Point>& points) const;
   /// Whether the straight segment a-b avoids every obstacle.
   bool clear(const geometry::Point& a, const geometry::Point& b) const;
   /// Whether `p` lies inside an obstacle.
@@ -43,6 +48,7 @@ class TransitRouter {
   const std::vector<geometry::Ring>& obstacles() const;
 
  private:
+  std::vector<std::pair<size_t, double>> visibleNodes(const geometry::Point& p) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
