@@ -75,6 +75,38 @@ void run(benchmark::State& state, const planner::SurveyProblem& p, bool energy_s
   }
 }
 
+// A field of about 500 m x 500 m whose outline has `vertices` vertices (a wavy circle: a
+// non-convex outline whose sweep lines meet it in several intervals), no holes.
+planner::SurveyProblem wavy(int vertices) {
+  planner::SurveyProblem p;
+  for (int i = 0; i < vertices; ++i) {
+    const double a = 2.0 * M_PI * i / vertices;
+    const double r = 250.0 * (1.0 + 0.08 * std::sin(5.0 * a));
+    p.area.outer.push_back({250.0 + r * std::cos(a), 250.0 + r * std::sin(a)});
+  }
+  p.spacing = 30.0;
+  p.footprint = 33.0;
+  p.home = {-20, -20};
+  return p;
+}
+
+// Scaling: the full energy search, with the number of cells of the plan as a counter.
+void scaling(benchmark::State& state, const planner::SurveyProblem& p) {
+  const auto v = vehicle();
+  const auto model = energy::marinsModel(v);
+  int cells = 0;
+  for (auto _ : state) {
+    const auto r = planner::planCoverage(p, v, model);
+    cells = r.plan.cells;
+    benchmark::DoNotOptimize(r.plan.flown.energy);
+  }
+  state.counters["cells"] = cells;
+  state.counters["vertices"] = static_cast<double>(p.area.outer.size());
+  state.counters["holes"] = static_cast<double>(p.area.holes.size());
+}
+void BM_Scaling_Holes(benchmark::State& s) { scaling(s, field(1000, static_cast<int>(s.range(0)), 3)); }
+void BM_Scaling_Vertices(benchmark::State& s) { scaling(s, wavy(static_cast<int>(s.range(0)))); }
+
 void BM_Rectangle_EnergySearch(benchmark::State& s) { run(s, rectangle(), true); }
 void BM_Rectangle_Baseline(benchmark::State& s) { run(s, rectangle(), false); }
 void BM_IrisArea_EnergySearch(benchmark::State& s) { run(s, irisLike(), true); }
@@ -94,4 +126,6 @@ BENCHMARK(BM_Field1km2_3holes_EnergySearch)->Unit(benchmark::kMillisecond)->Meas
 BENCHMARK(BM_Field1km2_3holes_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Field100ha_10holes_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Field100ha_10holes_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Scaling_Holes)->Arg(0)->Arg(1)->Arg(3)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Scaling_Vertices)->Arg(8)->Arg(32)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK_MAIN();
