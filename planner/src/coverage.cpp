@@ -20,6 +20,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDeg = M_PI / 180.0;
 constexpr int kStopTableSize = 64;       // samples of the stop-to-stop leg energy table (log spaced)
 constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage estimate
+constexpr double kMinCoveragePct = 99.0;     // [%] coverage a plan must keep (issue 5: >= 99 %)
 
 // A free interval of one sweep line, in the rotated frame (x along the line).
 struct Interval {
@@ -517,13 +518,20 @@ std::optional<AngleResult> bestSpiral(const Context& ctx, RouteScorer& scorer, s
 PlanCandidate finish(const SurveyProblem& pr, RouteScorer& scorer, const AngleResult& a, const std::string& pattern) {
   PlanCandidate c;
   if (!std::isfinite(a.score) || a.route.points.size() < 2) return c;
-  c.flown = scorer.fly(a.route);
+  // Rounded corners must keep coverage: when the arcs leave more than kMinCoveragePct uncovered,
+  // fly the same route with the arcs allowed to cut in less (halving), down to stops everywhere.
+  Route route = a.route;
+  for (double scale : {1.0, 0.5, 0.25, 0.0}) {
+    for (size_t i = 0; i < route.max_tangent.size(); ++i) route.max_tangent[i] = scale * a.route.max_tangent[i];
+    c.flown = scorer.fly(route);
+    c.coverage_pct = coveragePercent(pr, c.flown.path);
+    if (c.coverage_pct >= kMinCoveragePct) break;
+  }
   c.flown.path.pattern = pattern;
   c.flown.path.sweep_angle = a.angle;
   c.pattern = pattern;
   c.sweep_angle_deg = pattern == "spiral" ? 0.0 : normDeg(a.angle);
   c.cells = a.cells;
-  c.coverage_pct = coveragePercent(pr, c.flown.path);
   c.valid = true;
   return c;
 }
