@@ -111,25 +111,26 @@ void validate(const Vehicle& v, const std::string& source) {
   requireRange(source, "air_density_kgpm3", v.air_density_kgpm3, 0.0, true, 5.0, false,
                "an air density in (0, 5] kg/m^3");
   requireRange(source, "gravity_mps2", v.gravity_mps2, 0.0, true, 30.0, false, "a gravity in (0, 30] m/s^2");
-  if (v.battery) {
-    const auto& b = *v.battery;
-    const auto& p = b.pack;
-    requireRange(source, "battery.capacity_ah", p.capacity_ah, 0.0, true, 1e4, false, "a capacity in (0, 10000] A h");
-    requireRange(source, "battery.rated_discharge_time_s", p.rated_discharge_time_s, 0.0, true, 1e7, false,
-                 "a time in (0, 1e7] s");
-    requireRange(source, "battery.voltage_full_v", p.voltage_full_v, 0.0, true, 1e4, false,
-                 "a voltage in (0, 10000] V");
-    requireRange(source, "battery.voltage_standard_v", p.voltage_standard_v, 0.0, true, p.voltage_full_v, true,
-                 "a voltage in (0, voltage_full_v) V");
-    requireRange(source, "battery.mass_kg", p.mass_kg, 0.0, false, 1e4, false, "a mass in [0, 10000] kg");
-    requireRange(source, "battery.usable_fraction", p.usable_fraction, 0.0, true, 1.0, false, "a fraction in (0, 1]");
-    requireRange(source, "battery.peukert_exponent", p.peukert_exponent, 1.0, false, 2.0, false,
-                 "an exponent in [1, 2]");
-    if (b.series < 1 || b.parallel < 1 || b.series > 100 || b.parallel > 100) {
-      throw std::invalid_argument(prefix(source) + "field 'battery.series'/'battery.parallel' = " +
-                                  std::to_string(b.series) + "/" + std::to_string(b.parallel) +
-                                  ", expected integers in [1, 100]");
-    }
+  if (v.battery) validateBattery(*v.battery, source);
+}
+
+void validateBattery(const Battery& b, const std::string& source) {
+  const auto& p = b.pack;
+  requireRange(source, "battery.capacity_ah", p.capacity_ah, 0.0, true, 1e4, false, "a capacity in (0, 10000] A h");
+  requireRange(source, "battery.rated_discharge_time_s", p.rated_discharge_time_s, 0.0, true, 1e7, false,
+               "a time in (0, 1e7] s");
+  requireRange(source, "battery.voltage_full_v", p.voltage_full_v, 0.0, true, 1e4, false,
+               "a voltage in (0, 10000] V");
+  requireRange(source, "battery.voltage_standard_v", p.voltage_standard_v, 0.0, true, p.voltage_full_v, true,
+               "a voltage in (0, voltage_full_v) V");
+  requireRange(source, "battery.mass_kg", p.mass_kg, 0.0, false, 1e4, false, "a mass in [0, 10000] kg");
+  requireRange(source, "battery.usable_fraction", p.usable_fraction, 0.0, true, 1.0, false, "a fraction in (0, 1]");
+  requireRange(source, "battery.peukert_exponent", p.peukert_exponent, 1.0, false, 2.0, false,
+               "an exponent in [1, 2]");
+  if (b.series < 1 || b.parallel < 1 || b.series > 100 || b.parallel > 100) {
+    throw std::invalid_argument(prefix(source) + "field 'battery.series'/'battery.parallel' = " +
+                                std::to_string(b.series) + "/" + std::to_string(b.parallel) +
+                                ", expected integers in [1, 100]");
   }
 }
 
@@ -176,6 +177,13 @@ Vehicle parseVehicle(const std::string& json_text, const std::string& source) {
     bat.parallel = integer(b, "parallel", source, "battery.", 1);
     v.battery = bat;
   }
+  if (j.contains("extensions")) {
+    const json& x = j["extensions"];
+    if (!x.is_object()) {
+      throw std::invalid_argument(prefix(source) + "field 'extensions' = " + x.dump() + ", expected an object");
+    }
+    for (auto it = x.begin(); it != x.end(); ++it) v.extensions[it.key()] = it.value().dump();
+  }
   validate(v, source);
   return v;
 }
@@ -217,6 +225,11 @@ std::string vehicleToJson(const Vehicle& v) {
                     {"peukert_exponent", b.pack.peukert_exponent},
                     {"series", b.series},
                     {"parallel", b.parallel}};
+  }
+  if (!v.extensions.empty()) {
+    json x = json::object();
+    for (const auto& [key, text] : v.extensions) x[key] = json::parse(text);
+    j["extensions"] = x;
   }
   return j.dump(2);
 }

@@ -2,6 +2,7 @@
 /// @file vehicle.hpp
 /// Vehicle descriptions: the physical parameters every energy effect draws its coefficients from.
 
+#include <map>
 #include <optional>
 #include <string>
 
@@ -53,6 +54,9 @@ struct Vehicle {
   double air_density_kgpm3 = 1.225;   ///< [kg/m^3] air density rho
   double gravity_mps2 = 9.81;         ///< [m/s^2] gravitational acceleration g
   std::optional<Battery> battery;     ///< battery, when known (needed for endurance)
+  /// Model-specific data: the JSON text of each entry of the file's `extensions` object, keyed by
+  /// its name (e.g. "hwang"); each model parses and validates its own entry.
+  std::map<std::string, std::string> extensions;
 
   /// Total propulsive efficiency eta_tot = eta_mot * eta_prop [-] (Marins Eq. 1).
   double totalEfficiency() const { return motor_efficiency * propeller_efficiency; }
@@ -63,6 +67,10 @@ struct Vehicle {
 /// Throws std::invalid_argument naming the field, its value and the allowed range when `v` is
 /// not physically valid. `source` (a file name) is prefixed to the message when not empty.
 void validate(const Vehicle& v, const std::string& source = "");
+
+/// Throws std::invalid_argument naming the field ("battery.<name>"), its value and the allowed
+/// range when `b` is not a physically valid battery; `source` is prefixed when not empty.
+void validateBattery(const Battery& b, const std::string& source = "");
 
 /// Reads a vehicle JSON file and validates it; throws std::runtime_error naming the file and field.
 Vehicle loadVehicle(const std::string& path);
