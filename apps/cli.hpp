@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -54,5 +55,10 @@ void registerLogCommands(CLI::App& app);       ///< replay, diagnose, fit, simul
 void registerLogFileCommands(CLI::App& app);   ///< log info, log convert (cmd_log.cpp)
 void registerAreaCommands(CLI::App& app);      ///< area info (cmd_area.cpp)
 void registerPlanCommand(CLI::App& app);      ///< plan (cmd_plan.cpp)
+void registerEnduranceCommands(CLI::App& app); ///< endurance, models (cmd_endurance.cpp)
+
+/// Parses `--speed` text: one speed "U" or a range "FROM:TO:STEP" [m/s]; throws
+/// std::invalid_argument quoting the text otherwise.
+std::vector<double> parseSpeedList(const std::string& text);
 
 }  // namespace wattswath::apps

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   wattswath::apps::registerLogFileCommands(app);
   wattswath::apps::registerAreaCommands(app);
   wattswath::apps::registerPlanCommand(app);
+  wattswath::apps::registerEnduranceCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

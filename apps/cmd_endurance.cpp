@@ -1,0 +1,195 @@
+// `wattswath endurance` (Hwang et al. forward flight + battery) and `wattswath models` (every
+// power model side by side).
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "cli.hpp"
+#include "wattswath/energy/battery.hpp"
+#include "wattswath/energy/forward_flight.hpp"
+#include "wattswath/energy/peers.hpp"
+
+namespace wattswath::apps {
+namespace en = wattswath::energy;
+
+std::vector<double> parseSpeedList(const std::string& text) {
+  auto num = [&](const std::string& s) {
+    size_t used = 0;
+    double x = 0.0;
+    try {
+      x = std::stod(s, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != s.size() || !std::isfinite(x) || x < 0.0) {
+      throw std::invalid_argument("--speed '" + text + "': '" + s + "' is not a speed >= 0 in m/s");
+    }
+    return x;
+  };
+  const auto c1 = text.find(':');
+  if (c1 == std::string::npos) return {num(text)};
+  const auto c2 = text.find(':', c1 + 1);
+  if (c2 == std::string::npos) throw std::invalid_argument("--speed '" + text + "': expected U or FROM:TO:STEP");
+  const double from = num(text.substr(0, c1)), to = num(text.substr(c1 + 1, c2 - c1 - 1));
+  const double step = num(text.substr(c2 + 1));
+  if (!(step > 0.0) || to < from || (to - from) / step > 10000.0) {
+    throw std::invalid_argument("--speed '" + text + "': expected FROM <= TO and 0 < STEP, at most 10000 steps");
+  }
+  std::vector<double> out;
+  for (int k = 0; from + k * step <= to + 1e-9 * step; ++k) out.push_back(from + k * step);
+  return out;
+}
+
+namespace {
+
+nlohmann::json flightJson(const en::ForwardFlightState& s, const en::EnduranceResult& r) {
+  return {{"speed_mps", s.speed_mps},
+          {"endurance_min", r.endurance_s / 60.0},
+          {"power_w", s.electrical_power_w},
+          {"thrust_n", s.thrust_n},
+          {"induced_velocity_mps", s.induced_velocity_mps},
+          {"tilt_deg", s.tilt_rad * 180.0 / M_PI},
+          {"drag_n", s.drag_n},
+          {"rotor_power_w", s.rotor_power_w},
+          {"efficiency", s.efficiency},
+          {"energy_wh", r.energy_j / 3600.0}};
+}
+
+void registerEndurance(CLI::App& app) {
+  struct Opts {
+    std::string vehicle, speed = "0", battery;
+    double payload = 0.0, dt = 1.0;
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand(
+      "endurance", "Endurance in steady level flight: Hwang et al. forward-flight power (Eq. 1-8) and battery (Eq. 9-15)");
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--speed", o->speed, "Speed U [m/s], or a range FROM:TO:STEP (then: the curve and the best speed)")
+      ->capture_default_str();
+  cmd->add_option("--payload", o->payload, "Payload added to the vehicle mass [kg]")->check(CLI::Range(0.0, 1e4));
+  cmd->add_option("--battery", o->battery,
+                  "Battery configuration of the vehicle's pack, e.g. 2S2P (mass = extensions.hwang.airframe_mass_kg + packs)");
+  cmd->add_option("--dt", o->dt, "Time step of the discharge [s]")->check(CLI::Range(1e-3, 600.0))->capture_default_str();
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    en::Vehicle v = en::loadVehicle(o->vehicle);
+    if (!v.battery) throw std::runtime_error(o->vehicle + ": no 'battery' object: endurance needs one (data/README.md)");
+    if (!o->battery.empty()) {
+      const auto [s, p] = en::parseBatteryConfiguration(o->battery);
+      v = en::withBatteryConfiguration(v, s, p);
+    }
+    const auto params = en::forwardFlightParameters(v, o->payload);
+    const auto speeds = parseSpeedList(o->speed);
+    nlohmann::json curve = nlohmann::json::array();
+    double best_u = 0.0, best_t = -1.0;
+    for (double u : speeds) {
+      const auto s = en::forwardFlight(params, u);
+      if (!params.efficiency.inTableRange(s.thrust_n)) {
+        progress("warning: thrust " + std::to_string(s.thrust_n) + " N at " + std::to_string(u) +
+                 " m/s is outside the efficiency table; eta held at the table's end value");
+      }
+      en::DischargeSettings ds;
+      ds.dt_s = o->dt;
+      ds.keep_series = false;
+      const auto r = en::endurance(*v.battery, s.electrical_power_w, ds);
+      curve.push_back(flightJson(s, r));
+      if (r.endurance_s / 60.0 > best_t) best_t = r.endurance_s / 60.0, best_u = u;
+    }
+    nlohmann::json out = {{"vehicle", v.name}, {"mass_kg", params.mass_kg}, {"payload_kg", o->payload},
+                          {"battery", std::to_string(v.battery->series) + "S" + std::to_string(v.battery->parallel) + "P"}};
+    if (speeds.size() == 1) {
+      for (auto it = curve[0].begin(); it != curve[0].end(); ++it) out[it.key()] = it.value();
+    } else {
+      out["curve"] = curve;
+      out["max_endurance_speed_mps"] = best_u;
+      out["max_endurance_min"] = best_t;
+    }
+    if (o->json) {
+      printJson(out);
+      return;
+    }
+    std::cout << "vehicle: " << v.name << " (" << params.mass_kg << " kg, battery " << out["battery"].get<std::string>()
+              << ")\n"
+              << "  U [m/s]  endurance [min]  power [W]  thrust [N]  U_i [m/s]  tilt [deg]  eta\n"
+              << std::fixed;
+    for (const auto& c : curve) {
+      std::cout << std::setprecision(2) << std::setw(9) << c["speed_mps"].get<double>() << std::setw(17)
+                << c["endurance_min"].get<double>() << std::setprecision(1) << std::setw(11) << c["power_w"].get<double>()
+                << std::setw(12) << c["thrust_n"].get<double>() << std::setprecision(3) << std::setw(11)
+                << c["induced_velocity_mps"].get<double>() << std::setprecision(2) << std::setw(12)
+                << c["tilt_deg"].get<double>() << std::setprecision(3) << std::setw(7) << c["efficiency"].get<double>()
+                << "\n";
+    }
+    if (speeds.size() > 1) std::cout << "max endurance " << best_t << " min at " << best_u << " m/s\n";
+  });
+}
+
+struct ModelColumn {
+  std::string name, applies_to;
+  en::EnergyModel model;
+};
+
+std::vector<ModelColumn> peerModels(const en::Vehicle& v) {
+  std::vector<ModelColumn> out;
+  out.push_back({"marins", "this vehicle (Marins et al. 2018 closed form)", en::marinsModel(v)});
+  out.push_back({"hwang", "this vehicle (Hwang et al. 2018 Eq. 1-8; efficiency from extensions.hwang or eta_mot*eta_prop)",
+                 en::hwangModel(v)});
+  en::LiuParameters liu;
+  liu.mass_kg = v.mass_kg;
+  liu.gravity_mps2 = v.gravity_mps2;
+  out.push_back({"liu", "this vehicle's weight with the IRIS+ fit of Liu et al. 2017 (k1, k2, c2, c4, c5)",
+                 en::singleEffectModel(en::LiuEffect(liu))});
+  out.push_back({"difranco", "3DR IRIS+ only (measured polynomial of Di Franco & Buttazzo)",
+                 en::singleEffectModel(en::DiFrancoEffect())});
+  out.push_back({"zeng", "published defaults of Zeng, Xu & Zhang 2019 (W 20 N, single rotor), not this vehicle",
+                 en::singleEffectModel(en::ZengRotaryWingEffect())});
+  return out;
+}
+
+void registerModels(CLI::App& app) {
+  struct Opts {
+    std::string vehicle, speed = "0:16:2";
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("models", "Level-flight power of every model (Marins, Hwang, Liu, Di Franco, Zeng) vs speed");
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--speed", o->speed, "Speeds FROM:TO:STEP or one speed [m/s]")->capture_default_str();
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    const en::Vehicle v = en::loadVehicle(o->vehicle);
+    const auto speeds = parseSpeedList(o->speed);
+    const auto models = peerModels(v);
+    nlohmann::json jm = nlohmann::json::array();
+    for (const auto& m : models) {
+      nlohmann::json p = nlohmann::json::array();
+      for (double u : speeds) p.push_back(m.model.levelPower(u));
+      jm.push_back({{"name", m.name}, {"applies_to", m.applies_to}, {"effects", m.model.effectNames()}, {"power_w", p}});
+    }
+    if (o->json) {
+      printJson({{"vehicle", v.name}, {"speeds_mps", speeds}, {"models", jm}});
+      return;
+    }
+    std::cout << "vehicle: " << v.name << "\nlevel-flight electrical power [W]\n  U [m/s]";
+    for (const auto& m : models) std::cout << std::setw(11) << m.name;
+    std::cout << "\n" << std::fixed;
+    for (size_t i = 0; i < speeds.size(); ++i) {
+      std::cout << std::setprecision(2) << std::setw(9) << speeds[i] << std::setprecision(1);
+      for (const auto& m : jm) std::cout << std::setw(11) << m["power_w"][i].get<double>();
+      std::cout << "\n";
+    }
+    for (const auto& m : models) std::cout << m.name << ": " << m.applies_to << "\n";
+  });
+}
+
+}  // namespace
+
+void registerEnduranceCommands(CLI::App& app) {
+  registerEndurance(app);
+  registerModels(app);
+}
+
+}  // namespace wattswath::apps
