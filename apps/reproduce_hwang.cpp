@@ -246,7 +246,9 @@ ReproSection reproducePeers(const ReproContext& ctx) {
     const double ours = dm.stopToStopOptimalSpeed(d);
     md << "| " << f(d, 0) << " | " << f(pv) << " | " << f(ours) << " | " << f(100.0 * (ours - pv) / pv, 1) << " % |\n";
     jd.push_back(reproRow("v_opt stop-to-stop " + f(d, 0) + " m", pv, ours, "m/s",
-                          ours * ours >= d - 1e-9 ? "triangular limit sqrt(a d)" : ""));
+                          std::string("published table from the measured non-linear ramps; ours uses the code's "
+                                      "constant 1 m/s^2 ramps") +
+                              (ours * ours >= d - 1e-9 ? " (triangular limit sqrt(a d))" : "")));
   }
   // Zeng.
   const en::ZengParameters zp;
