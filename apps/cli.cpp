@@ -51,6 +51,10 @@ void writeTextFileAtomic(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
   const fs::path target(path);
   std::error_code ec;
+  // Renaming over a device, FIFO or folder would replace it with a plain file (seen: /dev/null).
+  if (fs::exists(fs::symlink_status(target, ec)) && !fs::is_regular_file(fs::symlink_status(target, ec))) {
+    throw std::runtime_error(path + ": exists and is not a regular file; expected a file path to write");
+  }
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
   const fs::path tmp = target.string() + ".tmp." + std::to_string(::getpid());
   {

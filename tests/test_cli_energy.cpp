@@ -1,5 +1,6 @@
 // The energy commands' JSON contract (keys named in issue 2) and their errors on bad arguments.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <nlohmann/json.hpp>
 
@@ -89,4 +90,15 @@ TEST(CliEnergy, ReproduceMarinsEveryDifferenceOver1PercentIsExplained) {
   }
   EXPECT_EQ(rows, 29);  // 3 hover + 2 optimal velocity + 12 strategy + 12 Table V rows
   EXPECT_NEAR(j.at("eq4_over_ideal").get<double>(), 2.0, 1e-12);
+}
+
+// Regression: writing a report through a temporary file and a rename once replaced /dev/null
+// with a plain file. Non-regular targets must be refused and left as they are.
+TEST(CliEnergy, ReproduceOutDevNullIsRefusedAndDevNullSurvives) {
+  const auto r = run(cliBinary() + " reproduce --out /dev/null 2>&1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("/dev/null: exists and is not a regular file"), std::string::npos) << r.output;
+  struct stat st {};
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
 }
