@@ -55,6 +55,14 @@ nlohmann::json candidateJson(const pl::PlanCandidate& c, double plan_energy) {
           {"saving_pct", c.flown.energy > 0 ? 100.0 * (c.flown.energy - plan_energy) / c.flown.energy : 0.0}};
 }
 
+nlohmann::json batteryJson(const std::optional<pl::BatteryUse>& b) {
+  if (!b) return nullptr;
+  return {{"usable_energy_j", b->usable_energy_j}, {"mission_energy_j", b->mission_energy_j},
+          {"margin_j", b->margin_j},             {"margin_pct", b->margin_pct},
+          {"remaining_pct", b->remaining_pct},   {"reserve_pct", b->reserve_pct},
+          {"fits", b->fits},                     {"warning", b->warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(b->warning)}};
+}
+
 // Waypoints: the end of every line or arc, flown at that leg's cruise speed.
 pl::Mission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const geo::LocalFrame& frame,
                       double home_alt_amsl) {
@@ -152,6 +160,7 @@ void runPlan(const PlanOpts& o) {
   ps.camera_max_speed = o.camera_max_speed;
   const auto model = energy::marinsModel(vehicle);
   const auto r = pl::planCoverage(pr, vehicle, model, ps, [](const std::string& s) { progress(s); });
+  if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
   const auto problems = pl::checkPlan(pr, r.plan.flown.path);
   if (!problems.empty()) throw std::runtime_error("plan failed its own check: " + problems.front());
 
@@ -187,7 +196,7 @@ void runPlan(const PlanOpts& o) {
        {{"shortest_path", candidateJson(r.shortest_path, e)},
         {"ground_station_default", candidateJson(r.ground_station_default, e)},
         {"best_spiral", r.best_spiral ? candidateJson(*r.best_spiral, e) : nlohmann::json(nullptr)}}},
-      {"battery", nullptr},
+      {"battery", batteryJson(r.battery)},
       {"files", {(dir / "mission.plan").string(), (dir / "mission.waypoints").string(), (dir / "path.geojson").string(),
                  (dir / "legs.csv").string()}},
       {"notes", r.notes}};
@@ -204,6 +213,10 @@ void runPlan(const PlanOpts& o) {
   if (r.best_spiral)
     std::cout << "best spiral: " << r.best_spiral->flown.energy << " J (plan saves "
               << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " %)\n";
+  if (r.battery)
+    std::cout << "battery: mission " << r.battery->mission_energy_j << " J of " << r.battery->usable_energy_j
+              << " J usable (margin " << r.battery->margin_pct << " %, " << r.battery->remaining_pct
+              << " % of the usable charge left on landing)\n";
   for (const auto& n : r.notes) std::cout << "note: " << n << "\n";
   std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
 }

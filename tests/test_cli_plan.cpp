@@ -130,3 +130,23 @@ TEST(CliPlanShared, IrisWaypointsWithNoFlyFile) {
   checkPlanOutput(j, out);
 }
 #endif
+
+TEST(CliPlan, BatteryWhenTheVehicleHasOne) {
+  const auto out = outDir("battery");
+  const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/espiral_rectangle.geojson") + " --vehicle " +
+                     sourcePath("data/vehicles/hwang-hexacopter.json") + " --spacing 30 --out " + out + " --json 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  const auto& b = j.at("battery");
+  ASSERT_TRUE(b.is_object());
+  for (const char* k : {"usable_energy_j", "mission_energy_j", "margin_j", "margin_pct", "remaining_pct"})
+    EXPECT_TRUE(b.at(k).is_number()) << k;
+  EXPECT_NEAR(b.at("mission_energy_j").get<double>(), j.at("energy_j").get<double>(), 1e-6);
+  EXPECT_NEAR(b.at("margin_j").get<double>(),
+              b.at("usable_energy_j").get<double>() - b.at("mission_energy_j").get<double>(), 1e-6);
+  EXPECT_EQ(b.at("fits").get<bool>(), b.at("warning").is_null());
+  // The IRIS vehicle file has no battery: null, not a guess.
+  EXPECT_TRUE(planJson(sourcePath("data/areas/espiral_rectangle.geojson"), outDir("battery2"), "--spacing 30")
+                  .at("battery")
+                  .is_null());
+}

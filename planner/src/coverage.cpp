@@ -757,6 +757,10 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   for (size_t i = 0; i < outer.size(); ++i)
     approach = std::min(approach, distanceToSegment(problem.home, outer[i], outer[(i + 1) % outer.size()]));
   res.lower_bound_j = e_min * (std::max(0.0, free_area / problem.footprint - problem.footprint) + 2.0 * approach);
+  if (vehicle.battery) {
+    res.battery = predictBatteryUse(res.plan.flown, *vehicle.battery);
+    if (!res.battery->fits) res.notes.push_back(res.battery->warning);
+  }
   say("plan: done, " + std::to_string(res.candidates) + " candidates scored");
   return res;
 }

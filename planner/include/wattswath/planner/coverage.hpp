@@ -13,6 +13,7 @@
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/polygon.hpp"
+#include "wattswath/planner/battery_use.hpp"
 #include "wattswath/planner/speed.hpp"
 
 namespace wattswath::planner {
@@ -64,6 +65,7 @@ struct PlanResult {
   double lower_bound_j = 0.0;             ///< [J] physical lower bound on the coverage energy
   int candidates = 0;                     ///< candidate plans scored
   std::vector<std::string> notes;         ///< facts for the user (e.g. why no spiral)
+  std::optional<BatteryUse> battery;      ///< predicted battery use of the plan (when the vehicle has a battery)
 };
 
 /// Progress callback: a line of text (the app prints it on stderr).
