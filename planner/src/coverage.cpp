@@ -286,6 +286,9 @@ double polylineCost(const std::vector<Point>& pts, Objective obj, const StopTabl
   return c;
 }
 
+AngleResult assemble(const Context& ctx, std::vector<Route> cand, GtspInstance g, AngleResult res, RouteScorer& scorer,
+                     const StopTable& stop, Objective obj, int exact_max_cells);
+
 // Boustrophedon at one angle: cells, 4 candidates each, ordered by GTSP, assembled home to home.
 AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer, const StopTable& stop, Objective obj,
                           int exact_max_cells) {
@@ -315,6 +318,13 @@ AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer,
   }
   if (cand.empty()) return res;
   res.cells = cluster;
+  return assemble(ctx, std::move(cand), std::move(g), res, scorer, stop, obj, exact_max_cells);
+}
+
+// Orders per-cell candidates (`g.cluster` / `g.cost` filled, one route each in `cand`) by GTSP
+// and joins them from home back to home with transits; fills res.route and res.score.
+AngleResult assemble(const Context& ctx, std::vector<Route> cand, GtspInstance g, AngleResult res, RouteScorer& scorer,
+                     const StopTable& stop, Objective obj, int exact_max_cells) {
   // Each candidate reversed is also a candidate (same internal cost, swapped ends), unless a
   // candidate of the cell already runs between the same two ends (the reverse of a zigzag from one
   // corner is usually the zigzag from its end corner): the order search then has half the nodes.
