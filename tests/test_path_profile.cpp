@@ -64,7 +64,7 @@ TEST(ProfileFromPath, RejectsMismatchedPlans) {
   plan.cruise = {8.0, 5.0, 8.0};  // arc cruise differs from its junction speeds
   EXPECT_THROW(en::profileFromPath(path, plan, {}, 2.1), std::invalid_argument);
   plan.cruise = {8.0, 4.0, 8.0};
-  plan.junction = {0.0, 4.0, 4.0, 9.0};  // 9 m/s exit needs more than the leg
+  plan.junction = {0.0, 4.0, 4.0, 30.0};  // 30 m/s exit needs 442 m, the leg has 98 m
   try {
     en::profileFromPath(path, plan, {}, 2.1);
     FAIL() << "expected an exception";
