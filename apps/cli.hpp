@@ -60,5 +60,6 @@ void registerEnduranceCommands(CLI::App& app); ///< endurance, models (cmd_endur
 /// Parses `--speed` text: one speed "U" or a range "FROM:TO:STEP" [m/s]; throws
 /// std::invalid_argument quoting the text otherwise.
 std::vector<double> parseSpeedList(const std::string& text);
+void registerCoverageCommand(CLI::App& app);   ///< coverage (cmd_coverage.cpp)
 
 }  // namespace wattswath::apps

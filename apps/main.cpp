@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   wattswath::apps::registerAreaCommands(app);
   wattswath::apps::registerPlanCommand(app);
   wattswath::apps::registerEnduranceCommands(app);
+  wattswath::apps::registerCoverageCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -14,6 +14,13 @@ namespace wattswath::geometry {
 namespace {
 
 constexpr double kWallTol = 1e-9;  // [m] sweep-frame x values closer than this are the same wall
+// A corner gets a spike when it lies this many times farther than the footprint's half-diagonal
+// (corners under about 69 deg); nearly right corners lose only a negligible sliver without one.
+constexpr double kSpikeFactor = 1.25;
+// Spiral waypoints turning less than this [rad] and this close to the straight line past them
+// [fraction of the spacing] are dropped.
+constexpr double kKinkAngle = 2.0 * M_PI / 180.0;
+constexpr double kKinkOffset = 0.02;
 
 double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -182,7 +189,7 @@ double rayToRing(const Ring& ring, const Point& o, const Point& u) {
 }
 
 /// A lap with an out-and-back spike along the outward bisector of every acute corner whose
-/// bisector meets `reference` farther than margin * sqrt(2): the spike ends `margin` short of it,
+/// bisector meets `reference` farther than kSpikeFactor * margin * sqrt(2): the spike ends `margin` short of it,
 /// so the footprint reaches into the corner.
 Ring withSpikes(const Ring& lap, const Ring& reference, double margin) {
   Ring out;
@@ -196,7 +203,7 @@ Ring withSpikes(const Ring& lap, const Ring& reference, double margin) {
     if (cross(din, dout) <= 0.0 || din.dot(dout) >= 0.0) continue;  // reflex or not acute
     const Point outward = (din.normalized() - dout.normalized()).normalized();
     const double g = rayToRing(reference, v, outward);
-    if (!std::isfinite(g) || g <= margin * std::sqrt(2.0) + tol::kPosition) continue;
+    if (!std::isfinite(g) || g <= kSpikeFactor * margin * std::sqrt(2.0)) continue;
     out.push_back(v + (g - margin) * outward);
     out.push_back(v);
   }
@@ -481,6 +488,20 @@ Route spiralRoute(const SpiralCell& cell, const SpiralSettings& settings) {
       r.points.push_back(p);
     }
     last = r.points.back();
+  }
+  // Drop waypoints where the spiral only kinks slightly (a lap joining the next one along almost
+  // the same line, as on a rectangle that is not exactly rectangular).
+  for (size_t i = 1; i + 1 < r.points.size();) {
+    const Point a = r.points[i] - r.points[i - 1], b = r.points[i + 1] - r.points[i];
+    const double turn = std::atan2(std::abs(cross(a, b)), a.dot(b));
+    const Point chord = r.points[i + 1] - r.points[i - 1];
+    const double offset = chord.norm() > 0.0 ? std::abs(cross(chord, r.points[i] - r.points[i - 1])) / chord.norm() : 0.0;
+    if (turn < kKinkAngle && offset < kKinkOffset * s) {
+      r.points.erase(r.points.begin() + static_cast<long>(i));
+      r.roles.erase(r.roles.begin() + static_cast<long>(i));
+    } else {
+      ++i;
+    }
   }
   return r;
 }

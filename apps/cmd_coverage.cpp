@@ -1,0 +1,159 @@
+// `wattswath coverage`: coverage candidates (boustrophedon or spiral) over a survey area.
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "cli.hpp"
+#include "wattswath/geometry/check.hpp"
+#include "wattswath/geometry/coverage.hpp"
+#include "wattswath/geometry/geojson.hpp"
+#include "wattswath/geometry/survey_area.hpp"
+#include "wattswath/geometry/swath.hpp"
+
+namespace wattswath::apps {
+namespace g = wattswath::geometry;
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+}  // namespace
+
+void registerCoverageCommand(CLI::App& app) {
+  struct Opts {
+    std::string area;
+    std::string pattern = "boustrophedon";
+    double angle_deg = 0.0;
+    double spacing = 0.0;
+    double altitude = 0.0;
+    double fov_deg = 0.0;
+    double overlap = 0.0;
+    std::string corners = "sharp";
+    double radius = 0.0;
+    std::string start = "bottom-left";
+    bool clockwise = false;
+    int start_vertex = 0;
+    std::vector<std::string> no_fly;
+    std::string out;
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("coverage", "Coverage path over a survey area: boustrophedon or spiral");
+  cmd->add_option("AREA", o->area, "Survey area (GeoJSON, KML, WKT or QGC .waypoints)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--pattern", o->pattern, "Coverage pattern")
+      ->check(CLI::IsMember({"spiral", "boustrophedon"}))
+      ->capture_default_str();
+  cmd->add_option("--angle", o->angle_deg, "Sweep direction [deg] (0 = lines along east, counter-clockwise), 0..180")
+      ->check(CLI::Range(-360.0, 360.0))
+      ->capture_default_str();
+  auto* spacing = cmd->add_option("--spacing", o->spacing, "Distance between passes [m], > 0")->check(CLI::PositiveNumber);
+  auto* alt = cmd->add_option("--altitude", o->altitude, "Camera height above ground [m], > 0")->check(CLI::PositiveNumber);
+  auto* fov = cmd->add_option("--fov", o->fov_deg, "Camera field of view across track [deg], 0..180")->check(CLI::Range(0.0, 180.0));
+  auto* overlap = cmd->add_option("--overlap", o->overlap, "Side overlap fraction, 0..1")->check(CLI::Range(0.0, 0.99));
+  spacing->excludes(alt)->excludes(fov)->excludes(overlap);
+  alt->needs(fov);
+  fov->needs(alt);
+  cmd->add_option("--corners", o->corners, "Corner shape: sharp (stop, turn in place) or rounded (arc)")
+      ->check(CLI::IsMember({"sharp", "rounded"}))
+      ->capture_default_str();
+  cmd->add_option("--radius", o->radius, "Arc radius of rounded corners [m] (v / omega_max), >= 0")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--start", o->start, "Boustrophedon start corner in the sweep frame")
+      ->check(CLI::IsMember({"bottom-left", "bottom-right", "top-left", "top-right"}))
+      ->capture_default_str();
+  cmd->add_option("--start-vertex", o->start_vertex, "Spiral: start vertex of the first lap")->capture_default_str();
+  cmd->add_flag("--clockwise", o->clockwise, "Spiral: fly the laps clockwise");
+  cmd->add_option("--no-fly", o->no_fly, "Extra no-fly zone files, subtracted from the area")->check(CLI::ExistingFile);
+  cmd->add_option("--out", o->out, "Path file to write (GeoJSON LineString, lat/lon, per-vertex properties)");
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o]() {
+    if (o->spacing <= 0.0 && o->altitude <= 0.0) {
+      throw std::runtime_error("coverage: give --spacing M or --altitude M --fov DEG [--overlap F]");
+    }
+    g::ReadOptions ro;
+    ro.no_fly_files = o->no_fly;
+    const g::SurveyArea area = g::readSurveyArea(o->area, ro);
+    double spacing = o->spacing;
+    if (spacing <= 0.0) {
+      g::CameraSettings cam;
+      cam.altitude = o->altitude;
+      cam.fov = o->fov_deg * kDeg;
+      cam.side_overlap = o->overlap;
+      spacing = g::swathSpacing(cam);
+    }
+    g::CornerSettings corners;
+    corners.style = o->corners == "rounded" ? g::CornerStyle::Rounded : g::CornerStyle::Sharp;
+    corners.radius = o->radius;
+    std::vector<g::CoveragePath> paths;
+    std::vector<std::string> problems;
+    double required = 0.0, covered = 0.0;
+    int cells = 0;
+    for (size_t r = 0; r < area.regions.size(); ++r) {
+      const auto& region = area.regions[r];
+      std::vector<g::Route> routes;
+      if (o->pattern == "spiral") {
+        g::SpiralSettings sp;
+        sp.spacing = spacing;
+        sp.start_vertex = o->start_vertex;
+        sp.clockwise = o->clockwise;
+        sp.split_angle = o->angle_deg * kDeg;
+        for (const auto& c : g::decomposeSpiral(region, spacing, sp.split_angle)) routes.push_back(g::spiralRoute(c, sp));
+      } else {
+        g::BoustrophedonSettings bs;
+        bs.spacing = spacing;
+        bs.sweep_angle = o->angle_deg * kDeg;
+        const char* names[] = {"bottom-left", "bottom-right", "top-left", "top-right"};
+        for (int k = 0; k < 4; ++k)
+          if (o->start == names[k]) bs.start = static_cast<g::StartCorner>(k);
+        const auto d = g::decomposeBoustrophedon(region, bs.sweep_angle);
+        for (size_t c = 0; c < d.cells.size(); ++c) routes.push_back(g::boustrophedonRoute(region, d, static_cast<int>(c), bs));
+      }
+      cells += static_cast<int>(routes.size());
+      progress("coverage: region " + std::to_string(r) + ": " + std::to_string(routes.size()) + " cells");
+      g::CoveragePath p = g::shapeCorners(g::joinRoutes(region, routes), corners, o->altitude, region);
+      p.pattern = o->pattern;
+      p.sweep_angle = o->angle_deg * kDeg;
+      for (const auto& problem : g::checkPath(p, region)) problems.push_back("region " + std::to_string(r) + ": " + problem);
+      const auto report = g::checkCoverage(region, {p}, spacing);
+      required += report.required_area;
+      covered += report.covered_area;
+      paths.push_back(std::move(p));
+    }
+    size_t legs = 0;
+    double length = 0.0;
+    int turns = 0;
+    for (const auto& p : paths) {
+      legs += p.legs.size();
+      length += p.length();
+      turns += p.turnCount();
+    }
+    const double coverage_pct = required > 0.0 ? 100.0 * covered / required : 100.0;
+    if (!o->out.empty()) {
+      if (!area.frame) throw std::runtime_error(o->area + ": no geodetic frame, cannot write lat/lon to " + o->out);
+      writeTextFileAtomic(o->out, g::coveragePathToGeoJson(paths, *area.frame));
+    }
+    if (o->json) {
+      printJson({{"legs", legs},
+                 {"length_m", length},
+                 {"turns", turns},
+                 {"coverage_pct", coverage_pct},
+                 {"cells", cells},
+                 {"pattern", o->pattern},
+                 {"angle_deg", o->angle_deg},
+                 {"spacing_m", spacing},
+                 {"problems", problems}});
+    } else {
+      std::cout << "pattern:  " << o->pattern << " (sweep angle " << o->angle_deg << " deg)\n"
+                << "spacing:  " << spacing << " m\n"
+                << "cells:    " << cells << "\n"
+                << "legs:     " << legs << " (" << turns << " turns)\n"
+                << "length:   " << length << " m\n"
+                << "coverage: " << coverage_pct << " %\n";
+      for (const auto& p : problems) std::cout << "problem:  " << p << "\n";
+      if (!o->out.empty()) std::cerr << "wrote " << o->out << std::endl;
+    }
+  });
+}
+
+}  // namespace wattswath::apps

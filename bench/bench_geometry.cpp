@@ -1,0 +1,91 @@
+// Geometry benchmarks: boustrophedon decomposition and candidate generation (boustrophedon at one
+// angle, all cells, and spiral) for the real IRIS survey area with its no-fly zone and for a
+// synthetic 100 ha field with 10 holes. Baseline in the same run: the same 100 ha field without
+// holes. Run: build/bin/bench_geometry (docs/performance.md, section "Geometry").
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+#include "wattswath/geometry/check.hpp"
+#include "wattswath/geometry/coverage.hpp"
+#include "wattswath/geometry/survey_area.hpp"
+
+namespace g = wattswath::geometry;
+
+namespace {
+
+constexpr double kSpacing = 21.45;  // [m] E-Spiral camera (10 m, 100 deg, 10 %)
+
+/// 1000 m x 1000 m field (100 ha) with `holes` square holes of 40 m on a jittered grid (seed 7).
+g::PolygonWithHoles field(int holes) {
+  g::PolygonWithHoles a;
+  a.outer = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-60.0, 60.0), rot(0.0, M_PI / 2);
+  for (int k = 0; k < holes; ++k) {
+    const g::Point c(150.0 + 175.0 * (k % 5) + jitter(rng), 300.0 + 400.0 * (k / 5) + jitter(rng));
+    const double r = 20.0 * std::sqrt(2.0), t0 = rot(rng);
+    g::Ring h;
+    for (int j = 3; j >= 0; --j) h.push_back(c + r * g::Point(std::cos(t0 + j * M_PI / 2), std::sin(t0 + j * M_PI / 2)));
+    a.holes.push_back(h);
+  }
+  return a;
+}
+
+const g::PolygonWithHoles& irisArea() {
+  static const g::PolygonWithHoles area = [] {
+    // data/areas/iris_area.geojson: the real IRIS+ flight area with its no-fly zone as a hole.
+    return g::readSurveyArea(std::string(WATTSWATH_SOURCE_DIR) + "/data/areas/iris_area.geojson").polygon();
+  }();
+  return area;
+}
+
+void decompose(benchmark::State& st, const g::PolygonWithHoles& area) {
+  for (auto _ : st) {
+    auto d = g::decomposeBoustrophedon(area, 30.0 * M_PI / 180.0);
+    benchmark::DoNotOptimize(d);
+  }
+}
+
+void candidates(benchmark::State& st, const g::PolygonWithHoles& area) {
+  g::BoustrophedonSettings bs;
+  bs.spacing = kSpacing;
+  bs.sweep_angle = 30.0 * M_PI / 180.0;
+  g::SpiralSettings sp;
+  sp.spacing = kSpacing;
+  for (auto _ : st) {
+    auto b = g::boustrophedonPaths(area, bs, {});
+    auto s = g::spiralPaths(area, sp, {});
+    benchmark::DoNotOptimize(b);
+    benchmark::DoNotOptimize(s);
+  }
+}
+
+void coverageCheck(benchmark::State& st, const g::PolygonWithHoles& area) {
+  g::BoustrophedonSettings bs;
+  bs.spacing = kSpacing;
+  const auto paths = g::boustrophedonPaths(area, bs, {});
+  for (auto _ : st) benchmark::DoNotOptimize(g::checkCoverage(area, paths, kSpacing));
+}
+
+}  // namespace
+
+void BM_Decompose_Field100ha_NoHoles_Baseline(benchmark::State& st) { decompose(st, field(0)); }
+void BM_Decompose_Field100ha_10Holes(benchmark::State& st) { decompose(st, field(10)); }
+void BM_Candidates_Field100ha_NoHoles_Baseline(benchmark::State& st) { candidates(st, field(0)); }
+void BM_Candidates_Field100ha_10Holes(benchmark::State& st) { candidates(st, field(10)); }
+void BM_CoverageCheck_Field100ha_10Holes(benchmark::State& st) { coverageCheck(st, field(10)); }
+
+BENCHMARK(BM_Decompose_Field100ha_NoHoles_Baseline)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Decompose_Field100ha_10Holes)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Candidates_Field100ha_NoHoles_Baseline)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Candidates_Field100ha_10Holes)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CoverageCheck_Field100ha_10Holes)->Unit(benchmark::kMillisecond);
+
+void BM_Decompose_IrisArea_NoFly(benchmark::State& st) { decompose(st, irisArea()); }
+void BM_Candidates_IrisArea_NoFly(benchmark::State& st) { candidates(st, irisArea()); }
+BENCHMARK(BM_Decompose_IrisArea_NoFly)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Candidates_IrisArea_NoFly)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
