@@ -2,9 +2,11 @@
 // baseline, above the lower bound; speeds and corners optimal for their geometry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "wattswath/energy/model.hpp"
+#include "wattswath/geometry/check.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/planner/coverage.hpp"
 #include "wattswath/planner/speed.hpp"
@@ -23,6 +25,14 @@ void expectValid(const SurveyProblem& pr, const PlanResult& r) {
   ASSERT_TRUE(r.plan.valid);
   EXPECT_TRUE(checkPlan(pr, r.plan.flown.path).empty()) << checkPlan(pr, r.plan.flown.path).front();
   EXPECT_GE(r.plan.coverage_pct, 99.0);
+  // Independent oracle: geometry's exact coverage checker (CGAL Booleans of the swaths), with the
+  // no-fly zones (all inside the area in these tests) as holes.
+  geometry::PolygonWithHoles free_area = pr.area;
+  for (auto z : pr.no_fly) {
+    if (geometry::signedArea(z) > 0) std::reverse(z.begin(), z.end());
+    free_area.holes.push_back(z);
+  }
+  EXPECT_GE(geometry::checkCoverage(free_area, {r.plan.flown.path}, pr.footprint).fraction(), 0.99);
   EXPECT_LE(r.plan.flown.energy, r.shortest_path.flown.energy + 1e-6);
   EXPECT_LE(r.plan.flown.energy, r.ground_station_default.flown.energy + 1e-6);
   if (r.best_spiral) {

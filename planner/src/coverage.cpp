@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "wattswath/geometry/check.hpp"
+#include "wattswath/geometry/coverage.hpp"
 #include "wattswath/planner/order.hpp"
 #include "wattswath/planner/transit.hpp"
 
@@ -20,6 +22,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDeg = M_PI / 180.0;
 constexpr int kStopTableSize = 64;       // samples of the stop-to-stop leg energy table (log spaced)
 constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage estimate
+constexpr int kMaxSpiralStarts = 32;         // start vertices tried per spiral cell (evenly spread)
+constexpr double kMaxRoundedTurn = 3.0;      // [rad] sharper corners (a spiral's out-and-back spikes) are stops
 constexpr double kMinCoveragePct = 99.0;     // [%] coverage a plan must keep (issue 5: >= 99 %)
 
 // A free interval of one sweep line, in the rotated frame (x along the line).
@@ -434,38 +438,6 @@ double normDeg(double rad) {
   return d;
 }
 
-// Convex inward offset of a convex counter-clockwise ring by `delta` (half-plane clipping).
-Ring offsetConvex(const Ring& ring, double delta) {
-  Ring poly = ring;
-  const size_t n = ring.size();
-  for (size_t i = 0; i < n && poly.size() >= 3; ++i) {
-    const Point a = ring[i], b = ring[(i + 1) % n];
-    const Point u = (b - a).normalized();
-    const Point nin(-u.y(), u.x());  // inward for a counter-clockwise ring
-    const Point o = a + nin * delta;
-    auto side = [&](const Point& p) { return (p - o).dot(nin); };
-    Ring out;
-    for (size_t k = 0; k < poly.size(); ++k) {
-      const Point& p = poly[k];
-      const Point& q = poly[(k + 1) % poly.size()];
-      const double sp = side(p), sq = side(q);
-      if (sp >= 0) out.push_back(p);
-      if ((sp >= 0) != (sq >= 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
-    }
-    poly = out;
-  }
-  return geometry::signedArea(poly) > 1e-6 ? poly : Ring{};
-}
-
-bool isConvex(const Ring& r) {
-  const size_t n = r.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Point u = r[(i + 1) % n] - r[i], v = r[(i + 2) % n] - r[(i + 1) % n];
-    if (u.x() * v.y() - u.y() * v.x() < -1e-9) return false;
-  }
-  return true;
-}
-
 // Largest tangent of an arc at a corner of deflection `theta` that stays within `margin` of the vertex.
 double tangentWithin(double theta, double margin) {
   const double h = 0.5 * std::abs(theta);
@@ -473,56 +445,87 @@ double tangentWithin(double theta, double margin) {
   return margin * std::tan(h) / (1.0 / std::cos(h) - 1.0);
 }
 
-// Spirals over a convex area without obstacles: rings inset by (k + 1/2) spacing, each start vertex,
-// both directions; the best by energy.
-std::optional<AngleResult> bestSpiral(const Context& ctx, RouteScorer& scorer, std::string* why) {
+// Spiral plan: geometry's straight-skeleton spirals (an area with holes is first cut into hole-free
+// boustrophedon pieces at `split_angle`; narrow necks split laps into further cells). Candidates of
+// each spiral cell: every start vertex of its first lap (at most kMaxSpiralStarts, evenly spread),
+// both directions; then GTSP order and transits as for boustrophedon.
+std::optional<AngleResult> spiralPlan(const Context& ctx, RouteScorer& scorer, const StopTable& stop, Objective obj,
+                                      int exact_max_cells, double split_angle, int* count, std::string* why) {
   const auto& pr = *ctx.problem;
-  Ring outer = pr.area.outer;
-  if (geometry::signedArea(outer) < 0) std::reverse(outer.begin(), outer.end());
-  if (!pr.area.holes.empty() || !ctx.obstacles.empty() || !isConvex(outer)) {
-    *why = "spiral baseline needs a convex area without holes or no-fly zones (straight-skeleton spirals come with the geometry module)";
-    return std::nullopt;
-  }
-  std::vector<Ring> rings;
-  for (int k = 0;; ++k) {
-    Ring r = offsetConvex(outer, (k + 0.5) * pr.spacing);
-    if (r.size() < 3) break;
-    rings.push_back(r);
-  }
-  if (rings.empty()) {
-    *why = "area narrower than one swath: no spiral";
-    return std::nullopt;
-  }
-  std::optional<AngleResult> best;
-  const size_t m = rings.front().size();
-  for (size_t start = 0; start < m; ++start) {
-    for (int dir = 0; dir < 2; ++dir) {
-      Route r;
-      r.points.push_back(pr.home);
-      r.max_tangent.push_back(0.0);
-      Point at = rings.front()[start];
-      for (const auto& ring0 : rings) {
-        Ring ring = ring0;
-        if (dir == 1) std::reverse(ring.begin(), ring.end());
-        size_t s = 0;
-        for (size_t i = 1; i < ring.size(); ++i)
-          if ((ring[i] - at).squaredNorm() < (ring[s] - at).squaredNorm()) s = i;
-        r.add(ring[s], LegRole::Transit, 0.0);
-        for (size_t i = 1; i <= ring.size(); ++i) {
-          const Point& p = ring[(s + i - 1) % ring.size()];
-          const Point& q = ring[(s + i) % ring.size()];
-          const Point& nx = ring[(s + i + 1) % ring.size()];
-          const double th = std::atan2((q - p).x() * (nx - q).y() - (q - p).y() * (nx - q).x(), (q - p).dot(nx - q));
-          r.add(q, LegRole::Sweep, tangentWithin(th, ctx.overlap_margin));
-        }
-        at = ring[s];
-      }
-      r.add(pr.home, LegRole::Transit, 0.0);
-      const double e = scorer.energy(r);
-      if (!best || e < best->score) best = AngleResult{0.0, e, r, 1};
+  geometry::PolygonWithHoles area = pr.area;
+  for (const auto& z : pr.no_fly) {
+    const bool inside = std::all_of(z.begin(), z.end(), [&](const Point& p) { return insideRing(p, pr.area.outer); });
+    const bool is_hole = std::any_of(pr.area.holes.begin(), pr.area.holes.end(), [&](const Ring& h) {
+      return h.size() == z.size() && std::all_of(z.begin(), z.end(), [&](const Point& p) {
+               return std::any_of(h.begin(), h.end(), [&](const Point& q) { return (p - q).norm() < 1e-6; });
+             });
+    });
+    if (is_hole) continue;
+    if (!inside) {
+      *why = "no spiral: a no-fly zone crosses the area boundary (subtract it from the area first, as `plan` does)";
+      return std::nullopt;
     }
+    Ring h = z;
+    if (geometry::signedArea(h) > 0) std::reverse(h.begin(), h.end());
+    area.holes.push_back(h);
   }
-  return best;
+  std::vector<geometry::SpiralCell> cells;
+  try {
+    cells = geometry::decomposeSpiral(area, pr.spacing, split_angle);
+  } catch (const std::exception& e) {
+    *why = std::string("no spiral: ") + e.what();
+    return std::nullopt;
+  }
+  std::vector<Route> cand;
+  GtspInstance g;
+  int cluster = 0;
+  for (const auto& cell : cells) {
+    if (cell.laps.empty() || cell.laps.front().empty()) continue;
+    const int m = static_cast<int>(cell.laps.front().size());
+    const int step = std::max(1, m / kMaxSpiralStarts);
+    bool any = false;
+    for (int start = 0; start < m; start += step)
+      for (bool cw : {false, true}) {
+        geometry::SpiralSettings st;
+        st.spacing = pr.spacing;
+        st.start_vertex = start;
+        st.clockwise = cw;
+        st.split_angle = split_angle;
+        const auto gr = geometry::spiralRoute(cell, st);
+        Route r;
+        for (size_t k = 0; k < gr.points.size(); ++k) {
+          if (!r.points.empty() && (gr.points[k] - r.points.back()).norm() < 1e-9) continue;
+          if (r.points.empty()) {
+            r.points.push_back(gr.points[k]);
+            r.max_tangent.push_back(0.0);
+            continue;
+          }
+          r.add(gr.points[k], LegRole::Sweep, 0.0);
+        }
+        if (r.points.size() < 2) continue;
+        for (size_t k = 1; k + 1 < r.points.size(); ++k) {
+          const Point u = r.points[k] - r.points[k - 1], v = r.points[k + 1] - r.points[k];
+          const double th = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
+          r.max_tangent[k] = std::abs(th) < kMaxRoundedTurn ? tangentWithin(th, ctx.overlap_margin) : 0.0;
+        }
+        const double cost = obj == Objective::Length ? r.length() : scorer.energy(r);
+        ++*count;
+        if (!std::isfinite(cost)) continue;
+        cand.push_back(std::move(r));
+        g.cluster.push_back(cluster);
+        g.cost.push_back(cost);
+        any = true;
+      }
+    cluster += any;
+  }
+  if (cand.empty()) {
+    *why = "no spiral: the area is narrower than one swath";
+    return std::nullopt;
+  }
+  AngleResult res;
+  res.angle = split_angle;
+  res.cells = cluster;
+  return assemble(ctx, std::move(cand), std::move(g), res, scorer, stop, obj, exact_max_cells);
 }
 
 PlanCandidate finish(const SurveyProblem& pr, RouteScorer& scorer, const AngleResult& a, const std::string& pattern) {
@@ -655,13 +658,11 @@ double coveragePercent(const SurveyProblem& pr, const geometry::CoveragePath& pa
 }
 
 std::vector<std::string> checkPlan(const SurveyProblem& pr, const geometry::CoveragePath& path) {
-  std::vector<std::string> problems;
-  std::vector<Ring> obstacles = pr.area.holes;
-  obstacles.insert(obstacles.end(), pr.no_fly.begin(), pr.no_fly.end());
+  // Continuity, headings, arcs and holes: geometry's path checker; then the no-fly zones.
+  std::vector<std::string> problems = geometry::checkPath(path, pr.area);
+  const std::vector<Ring>& obstacles = pr.no_fly;
   for (size_t i = 0; i < path.legs.size(); ++i) {
     const auto& leg = path.legs[i];
-    if (i > 0 && (path.legs[i - 1].end - leg.start).norm() > 1e-6)
-      problems.push_back("leg " + std::to_string(i) + " does not start where leg " + std::to_string(i - 1) + " ends");
     std::vector<Point> pts{leg.start, leg.end};
     if (leg.kind == geometry::PrimitiveKind::Arc) {
       pts.clear();
@@ -675,8 +676,7 @@ std::vector<std::string> checkPlan(const SurveyProblem& pr, const geometry::Cove
       for (size_t o = 0; o < obstacles.size(); ++o)
         if (segmentEntersRing(pts[k], pts[k + 1], obstacles[o]) || insideRing(pts[k], obstacles[o]))
           problems.push_back("leg " + std::to_string(i) + " enters " +
-                             (o < pr.area.holes.size() ? "hole " + std::to_string(o)
-                                                       : "no-fly zone " + std::to_string(o - pr.area.holes.size())));
+                             "no-fly zone " + std::to_string(o));
   }
   return problems;
 }
@@ -736,10 +736,11 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   ++res.candidates;
   // (c) best spiral.
   std::string why;
-  const auto spiral = bestSpiral(ctx, scorer, &why);
-  if (spiral) {
+  say("plan: spirals");
+  const auto spiral = spiralPlan(ctx, scorer, stop, Objective::Energy, ps.exact_max_cells, best.angle,
+                                 &res.candidates, &why);
+  if (spiral && std::isfinite(spiral->score)) {
     res.best_spiral = finish(problem, scorer, *spiral, "spiral");
-    res.candidates += static_cast<int>(2 * outer.size());
   } else {
     res.notes.push_back(why);
   }
