@@ -72,8 +72,8 @@ EnergyTransit planEnergyTransit(const Point& a, const Point& b, const std::vecto
     if (insideRing(b, r)) throw std::invalid_argument("energy transit: the goal point is inside a no-fly zone");
   }
   static const bool seeded = [&s]() {
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);  // library code never prints (set before any OMPL call)
     ompl::RNG::setSeed(s.seed);
-    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);  // library code never prints
     return true;
   }();
   (void)seeded;
