@@ -8,7 +8,10 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
+#include "wattswath/energy/path_profile.hpp"
+#include "wattswath/report/reports.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -18,6 +21,7 @@
 namespace wattswath::apps {
 namespace geo = wattswath::geometry;
 namespace pl = wattswath::planner;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -25,8 +29,103 @@ struct PlanOpts {
   std::string area, vehicle, home, out, corners = "auto";
   std::vector<std::string> no_fly;
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
-  bool force = false, json = false;
+  bool force = false, json = false, no_report = false;
+  std::string report_svg;
 };
+
+/// Polyline of one leg for the map [m] (arcs sampled every 10 deg; a turn in place is one point).
+std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
+  if (leg.kind == geo::PrimitiveKind::TurnInPlace) return {leg.start};
+  if (leg.kind == geo::PrimitiveKind::Line) return {leg.start, leg.end};
+  const double a0 = std::atan2(leg.start.y() - leg.center.y(), leg.start.x() - leg.center.x());
+  const int n = std::max(2, static_cast<int>(std::ceil(std::abs(leg.turn_angle) / (M_PI / 18.0))) + 1);
+  std::vector<geo::Point> pts;
+  for (int i = 0; i < n; ++i) {
+    const double a = a0 + leg.turn_angle * i / (n - 1);
+    pts.emplace_back(leg.center.x() + leg.radius * std::cos(a), leg.center.y() + leg.radius * std::sin(a));
+  }
+  return pts;
+}
+
+/// The plan report's data from the planner's result: map legs, Table III-style breakdown of the
+/// coverage and transit legs (each leg re-profiled with energy::profileFromPath and the same
+/// model), the plan and baselines as scored candidates, and the Hwang battery trace when known.
+report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyProblem& pr, const energy::Vehicle& v,
+                                      const energy::EnergyModel& model, const std::string& area_file) {
+  report::PlanReportData d;
+  d.title = "wattswath plan: " + fs::path(area_file).filename().string();
+  const auto& f = r.plan.flown;
+  auto num = [](double x, int prec) {
+    std::ostringstream os;
+    os.setf(std::ios::fixed);
+    os.precision(prec);
+    os << x;
+    return os.str();
+  };
+  d.facts = {{"area", area_file},
+             {"vehicle", v.name},
+             {"plan", r.plan.pattern + " at " + num(r.plan.sweep_angle_deg, 0) + " deg, " + std::to_string(r.plan.cells) +
+                          " cell(s), coverage " + num(r.plan.coverage_pct, 1) + " %"},
+             {"energy", num(f.energy, 0) + " J over " + num(f.time, 0) + " s and " + num(f.length, 0) + " m"},
+             {"lower bound", num(r.lower_bound_j, 0) + " J (plan / bound " +
+                                 num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ")"},
+             {"spacing", num(pr.spacing, 2) + " m, altitude " + num(pr.altitude, 1) + " m"}};
+  d.areas = {pr.area};
+  d.no_fly = pr.no_fly;
+  d.home = pr.home;
+  const energy::ProfileLimits lim{v.max_acceleration_mps2, v.max_acceleration_mps2};
+  d.coverage = model.emptyBreakdown();
+  d.transit = model.emptyBreakdown();
+  bool any_transit = false;
+  for (size_t i = 0; i < f.path.legs.size(); ++i) {
+    const auto& leg = f.path.legs[i];
+    report::PlanLeg pl_leg;
+    pl_leg.points = legPolyline(leg);
+    pl_leg.role = geo::roleName(leg.role);
+    pl_leg.speed = f.speeds.cruise[i];
+    pl_leg.energy = f.leg_energy[i];
+    pl_leg.time = f.leg_time[i];
+    pl_leg.length = leg.length();
+    d.legs.push_back(pl_leg);
+    geo::CoveragePath one;
+    one.legs = {leg};
+    const energy::SpeedPlan sp{{f.speeds.cruise[i]}, {f.speeds.junction[i], f.speeds.junction[i + 1]}};
+    const bool transit = leg.role == geo::LegRole::Transit || leg.role == geo::LegRole::Climb;
+    any_transit = any_transit || transit;
+    model.accumulate(energy::profileFromPath(one, sp, lim, v.max_yaw_rate_radps), transit ? d.transit : d.coverage);
+  }
+  if (!any_transit) d.transit = energy::Breakdown{};
+  const auto cand = [&](const pl::PlanCandidate& c, bool chosen) {
+    return report::PlanCandidate{c.pattern, c.sweep_angle_deg * M_PI / 180.0, c.flown.energy, chosen};
+  };
+  d.candidates.push_back(cand(r.plan, true));
+  d.baselines.push_back({"shortest path", r.shortest_path.flown.energy, r.shortest_path.flown.length,
+                         r.shortest_path.flown.time});
+  d.baselines.push_back({"ground-station default", r.ground_station_default.flown.energy,
+                         r.ground_station_default.flown.length, r.ground_station_default.flown.time});
+  d.candidates.push_back(cand(r.shortest_path, false));
+  d.candidates.push_back(cand(r.ground_station_default, false));
+  if (r.best_spiral) {
+    d.baselines.push_back({"best spiral", r.best_spiral->flown.energy, r.best_spiral->flown.length,
+                           r.best_spiral->flown.time});
+    d.candidates.push_back(cand(*r.best_spiral, false));
+  }
+  if (v.battery) {
+    std::vector<energy::PowerStep> steps;
+    for (size_t i = 0; i < f.leg_time.size(); ++i)
+      if (f.leg_time[i] > 0.0) steps.push_back({f.leg_time[i], f.leg_energy[i] / f.leg_time[i]});
+    const auto res = energy::simulateProfile(*v.battery, steps);
+    report::BatteryTrace bt;
+    bt.model = "Hwang et al. 2018 Eq. 9-15 (Peukert, linear voltage drop)";
+    for (const auto& smp : res.series) {
+      bt.t.push_back(smp.t);
+      bt.soc.push_back(100.0 * smp.usable_left);
+      bt.voltage.push_back(smp.voltage_v);
+    }
+    d.battery = bt;
+  }
+  return d;
+}
 
 geo::Point parseHome(const std::string& s, const geo::LocalFrame& frame) {
   const auto comma = s.find(',');
@@ -122,7 +221,6 @@ std::vector<pl::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFr
 }
 
 void runPlan(const PlanOpts& o) {
-  namespace fs = std::filesystem;
   const auto vehicle = energy::loadVehicle(o.vehicle);
   geo::ReadOptions ro;
   ro.no_fly_files = o.no_fly;
@@ -150,7 +248,8 @@ void runPlan(const PlanOpts& o) {
   else if (area.home) pr.home = *area.home;
   else pr.home = pr.area.outer.front();
 
-  const std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
+  std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
+  if (!o.no_report) files.push_back("report.html");
   for (const auto& f : files)
     if (fs::exists(fs::path(o.out) / f) && !o.force)
       throw std::runtime_error((fs::path(o.out) / f).string() + " exists; pass --force to overwrite it");
@@ -174,6 +273,10 @@ void runPlan(const PlanOpts& o) {
   writeTextFileAtomic((dir / "mission.waypoints").string(), pl::toQgcWpl(mission));
   writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
   writeTextFileAtomic((dir / "legs.csv").string(), pl::toLegCsv(legRecords(r.plan.flown, frame)));
+  if (!o.no_report || !o.report_svg.empty()) {
+    const auto report = report::planReport(planReportData(r, pr, vehicle, model, o.area));
+    writeReport(report, o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg);
+  }
 
   const double e = r.plan.flown.energy;
   nlohmann::json j = {
@@ -240,6 +343,8 @@ void registerPlanCommand(CLI::App& app) {
       ->check(CLI::IsMember({"sharp", "rounded", "auto"}));
   cmd->add_option("--out", o->out, "output folder for mission.plan, mission.waypoints, path.geojson, legs.csv")->required();
   cmd->add_flag("--force", o->force, "overwrite existing output files");
+  cmd->add_flag("--no-report", o->no_report, "do not write DIR/report.html (the HTML plan report, on by default)");
+  cmd->add_option("--report-svg", o->report_svg, "also write the report's figures as SVG files into this folder");
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
     if (o->spacing <= 0.0 && o->fov_deg <= 0.0)

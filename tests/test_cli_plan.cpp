@@ -71,6 +71,12 @@ void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
   const auto gj = nlohmann::json::parse(slurp(out + "/path.geojson"));
   EXPECT_EQ(gj.at("type"), "FeatureCollection");
   EXPECT_EQ(gj.at("features").at(0).at("geometry").at("type"), "LineString");
+  // The HTML plan report is on by default with --out: map, Table III-style breakdown, candidates.
+  const std::string html = slurp(out + "/report.html");
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("Energy by part and effect"), std::string::npos);
+  EXPECT_NE(html.find("Candidate plans"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
 }
 
 }  // namespace
