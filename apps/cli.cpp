@@ -75,4 +75,23 @@ void writeTextFileAtomic(const std::string& path, const std::string& text) {
   }
 }
 
+CLI::Option* addForceFlag(CLI::App* cmd, bool& force) {
+  return cmd->add_flag("--force", force, "Replace output files that already exist");
+}
+
+void checkWritable(const std::string& path, bool force, const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path target(path);
+  if (path.empty()) throw std::runtime_error("output path is empty, expected a file name");
+  if (fs::is_directory(target, ec)) throw std::runtime_error(path + ": is a folder, expected an output file name");
+  if (!fs::exists(target, ec)) return;
+  for (const auto& in : inputs) {
+    if (fs::equivalent(target, fs::path(in), ec)) {
+      throw std::runtime_error(path + ": is also an input file; refusing to overwrite an input, choose another output");
+    }
+  }
+  if (!force) throw std::runtime_error(path + ": already exists; use --force to replace it");
+}
+
 }  // namespace wattswath::apps

@@ -48,6 +48,14 @@ void writeReport(const report::HtmlReport& report, const std::string& html_path,
 /// --position-source) to `cmd`, storing into `options`. Use with energy::readFlightLog().
 void addLogReadOptions(CLI::App* cmd, energy::LogReadOptions& options);
 
+/// Adds the common `--force` flag (allow replacing existing output files) to `cmd`.
+CLI::Option* addForceFlag(CLI::App* cmd, bool& force);
+
+/// Checks, before any work is done, that `path` may be written: throws std::runtime_error naming
+/// the path when it is a folder, when it already exists and `force` is false ("use --force"), or
+/// when it is one of `inputs` (an input is never overwritten, even with --force).
+void checkWritable(const std::string& path, bool force, const std::vector<std::string>& inputs = {});
+
 // Register functions: one per apps/cmd_*.cpp. main.cpp calls each.
 void registerEnergyCommands(CLI::App& app);    ///< hover, vopt, leg, turns (cmd_energy.cpp)
 void registerReproduceCommand(CLI::App& app);  ///< reproduce (cmd_reproduce.cpp)

@@ -10,6 +10,7 @@
 #include "report_data.hpp"
 #include "wattswath/energy/diagnose.hpp"
 #include "wattswath/energy/log_io.hpp"
+#include "wattswath/energy/tolerances.hpp"
 #include "wattswath/energy/vehicle.hpp"
 
 namespace wattswath::apps {
@@ -100,7 +101,7 @@ void registerReplay(CLI::App& app) {
     std::string vehicle, effects = kPaperEffects, samples_out;
     std::vector<std::string> logs;
     en::LogReadOptions read;
-    bool json = false;
+    bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("replay", "Replay a model on measured kinematics: power per sample, energy per leg, "
@@ -110,8 +111,14 @@ void registerReplay(CLI::App& app) {
   cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--samples-out", o->samples_out, "Write per-sample measured/modelled power as CSV here");
   addLogReadOptions(cmd, o->read);
+  addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
+    if (!o->samples_out.empty()) {
+      auto inputs = o->logs;
+      inputs.push_back(o->vehicle);
+      checkWritable(o->samples_out, o->force, inputs);
+    }
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto logs = prepareAll(o->logs, o->read);
@@ -314,6 +321,12 @@ void registerFit(CLI::App& app) {
   });
 }
 
+std::string fmtNumber(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
 // Waypoints "x y z" or "x,y,z" per line (ENU metres); '#' comments and a header line are skipped.
 std::vector<Eigen::Vector3d> readPath(const std::string& path) {
   std::ifstream in(path);
@@ -328,9 +341,17 @@ std::vector<Eigen::Vector3d> readPath(const std::string& path) {
     if (line.find_first_not_of(' ') == std::string::npos || line[line.find_first_not_of(' ')] == '#') continue;
     std::istringstream is(line);
     double x, y, z;
-    if (!(is >> x >> y >> z)) {
-      if (w.empty() && ln == 1) continue;  // header
+    std::string rest;
+    if (!(is >> x >> y >> z) || (is >> rest)) {
+      std::istringstream first(line);
+      double probe = 0.0;
+      if (w.empty() && ln == 1 && !(first >> probe)) continue;  // a header (not a row of numbers)
       throw std::runtime_error(path + ":" + std::to_string(ln) + ": expected three numbers x y z [m], got '" + line + "'");
+    }
+    if (std::abs(x) > en::tol::kLogMaxMagnitude || std::abs(y) > en::tol::kLogMaxMagnitude ||
+        std::abs(z) > en::tol::kLogMaxMagnitude) {
+      throw std::runtime_error(path + ":" + std::to_string(ln) + ": expected three numbers x y z [m] of magnitude at most " +
+                               fmtNumber(en::tol::kLogMaxMagnitude) + ", got '" + line + "'");
     }
     w.emplace_back(x, y, z);
   }
@@ -343,7 +364,7 @@ void registerSimulate(CLI::App& app) {
     std::string vehicle, effects = kPaperEffects, out, path;
     std::vector<std::string> sets;
     en::SimulationSettings sim;
-    bool json = false;
+    bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("simulate", "Write a canonical CSV log of a model (with chosen hidden effects) flown "
@@ -361,8 +382,10 @@ void registerSimulate(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", o->sim.seed, "Random seed")->capture_default_str();
   cmd->add_option("--out", o->out, "Output CSV log")->required();
+  addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
+    checkWritable(o->out, o->force, {o->vehicle, o->path});
     const auto v = en::loadVehicle(o->vehicle);
     auto model = en::buildModel(v, en::splitEffectList(o->effects));
     for (const auto& s : o->sets) {
@@ -402,7 +425,13 @@ void registerSimulate(CLI::App& app) {
                                                        {0, 25, 15},  {0, 50, 15},   {160, 50, 15}, {160, 50, 25},
                                                        {80, 90, 25}, {0, 0, 25},    {0, 0, 0}}
                         : readPath(o->path);
-    auto log = en::simulateFlight(path, model, o->sim);
+    en::FlightLog log;
+    try {
+      log = en::simulateFlight(path, model, o->sim);
+    } catch (const std::invalid_argument& e) {
+      if (o->path.empty()) throw;
+      throw std::runtime_error(o->path + ": " + e.what());
+    }
     log.metadata["vehicle"] = v.name;
     writeTextFileAtomic(o->out, en::writeCsvLog(log));
     if (o->json) {

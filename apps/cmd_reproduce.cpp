@@ -102,15 +102,19 @@ void registerReproduceCommand(CLI::App& app) {
     std::string source_dir = WATTSWATH_SOURCE_DIR;
     std::string shared = WATTSWATH_SOURCE_DIR "/../shared/data";
     std::string out;
-    bool json = false;
+    bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("reproduce", "Reproduce the seed papers' numbers side by side with ours");
   cmd->add_option("--source-dir", o->source_dir, "wattswath checkout (for data/vehicles)")->capture_default_str();
   cmd->add_option("--shared-data", o->shared, "Reference data folder (../shared/data)")->capture_default_str();
-  cmd->add_option("--out", o->out, "Markdown report to write (default: SOURCE_DIR/docs/reproduction.md)");
+  cmd->add_option("--out", o->out,
+                  "Markdown report to write (default: SOURCE_DIR/docs/reproduction.md, the generated report, which "
+                  "is always regenerated; any other existing file needs --force)");
+  addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
+    if (!o->out.empty()) checkWritable(o->out, o->force);
     ReproContext ctx{o->source_dir, o->shared};
     const ReproSection all = runAllReproSections(ctx);
     const std::string out = o->out.empty() ? o->source_dir + "/docs/reproduction.md" : o->out;

@@ -59,7 +59,7 @@ TEST(Vehicle, EfficiencyOutsideUnitIntervalIsRejected) {
   t.replace(t.find("0.65"), 4, "1.5");
   const std::string msg = errorOf(t);
   EXPECT_NE(msg.find("propeller_efficiency"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("(0, 1]"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("[0.01, 1]"), std::string::npos) << msg;
 }
 
 TEST(Vehicle, MissingFieldIsNamed) {

@@ -486,6 +486,11 @@ FitReport fitAndCompare(const EnergyModel& model, const std::vector<PreparedLog>
 FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyModel& truth,
                          const SimulationSettings& s) {
   if (wps.size() < 2) throw std::invalid_argument("simulateFlight: need at least 2 waypoints");
+  for (size_t k = 0; k < wps.size(); ++k) {
+    if (!wps[k].allFinite()) {
+      throw std::invalid_argument("simulateFlight: waypoint " + std::to_string(k + 1) + " is not finite, expected x y z in m");
+    }
+  }
   if (!(s.rate_hz >= 0.1 && s.rate_hz <= 1000.0)) {
     throw std::invalid_argument("SimulationSettings.rate_hz = " + std::to_string(s.rate_hz) + ", expected 0.1..1000");
   }
@@ -545,6 +550,13 @@ FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyMo
   log.metadata["seed"] = std::to_string(s.seed);
   const double total = t;
   const double dt = 1.0 / s.rate_hz;
+  // A waypoint 1e300 m away would otherwise loop for ever filling memory.
+  if (!(std::isfinite(total) && total * s.rate_hz < s.max_samples)) {
+    throw std::invalid_argument("simulateFlight: the flight lasts " + std::to_string(total) + " s, " +
+                                std::to_string(total * s.rate_hz) + " samples at " + std::to_string(s.rate_hz) +
+                                " Hz, expected at most " + std::to_string(s.max_samples) +
+                                " samples (waypoints too far apart?)");
+  }
   size_t k = 0;
   for (double tt = 0.0; tt <= total; tt += dt) {
     while (k + 1 < spans.size() && tt >= spans[k].t0 + spans[k].piece.duration) ++k;

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "local_fit.hpp"
+#include "wattswath/energy/tolerances.hpp"
 
 namespace wattswath::energy {
 namespace {
@@ -244,6 +245,11 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
         fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) + "): value '" + cell +
                              "' is not a finite number");
       }
+      const bool bounded_elsewhere = k == knownIndex("time_s") || k == knownIndex("lat_deg") || k == knownIndex("lon_deg");
+      if (!bounded_elsewhere && std::abs(v) > tol::kLogMaxMagnitude) {
+        fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) + "): value '" + cell +
+                             "' is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
+      }
       return v;
     };
     LogSample s;
@@ -275,11 +281,16 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
     s.voltage = num("voltage_v");
     s.current = num("current_a");
     s.power = have_power ? num("power_w") : s.voltage * s.current;
+
     s.mass = num("mass_kg");
     s.wind = {num("wind_x_mps"), num("wind_y_mps")};
     if (!log.samples.empty() && !(s.t > log.samples.back().t)) {
       fail(source, ln, "column 'time_s': time " + fmt(s.t) + " s does not increase (previous row: " +
                            fmt(log.samples.back().t) + " s)");
+    }
+    if (!log.samples.empty() && s.t - log.samples.back().t < tol::kLogMinTimeStep) {
+      fail(source, ln, "column 'time_s': time " + fmt(s.t) + " s is only " + fmt(s.t - log.samples.back().t) +
+                           " s after the previous row, expected steps of at least " + fmt(tol::kLogMinTimeStep) + " s");
     }
     std::vector<std::string> extra;
     extra.reserve(extra_idx.size());
@@ -290,21 +301,38 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
   // A local-frame log written from a geodetic one keeps its origin in the metadata.
   if (local && log.metadata.count("origin_lat_deg") && log.metadata.count("origin_lon_deg") &&
       log.metadata.count("origin_alt_m")) {
-    try {
-      log.origin_lat_deg = std::stod(log.metadata["origin_lat_deg"]);
-      log.origin_lon_deg = std::stod(log.metadata["origin_lon_deg"]);
-      log.origin_alt_m = std::stod(log.metadata["origin_alt_m"]);
-      log.has_geodetic_origin = true;
-      for (const char* k : {"origin_lat_deg", "origin_lon_deg", "origin_alt_m"}) log.metadata.erase(k);
-    } catch (const std::exception&) {
-      fail(source, header_line, "metadata 'origin_lat_deg/origin_lon_deg/origin_alt_m' is not numeric");
-    }
+    // Whole-text, finite, in range: std::stod would read "43.7abc" as 43.7 and accept "nan".
+    auto origin = [&](const char* key, double limit, const char* expected) {
+      const std::string& text = log.metadata[key];
+      double v = 0.0;
+      const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v) ||
+          std::abs(v) > limit) {
+        fail(source, header_line, "metadata '" + std::string(key) + "': value '" + text + "', expected " + expected);
+      }
+      return v;
+    };
+    log.origin_lat_deg = origin("origin_lat_deg", 90.0, "a latitude in -90..90 degrees");
+    log.origin_lon_deg = origin("origin_lon_deg", 180.0, "a longitude in -180..180 degrees");
+    log.origin_alt_m = origin("origin_alt_m", 1e5, "an altitude in -100000..100000 m");
+    log.has_geodetic_origin = true;
+    for (const char* k : {"origin_lat_deg", "origin_lon_deg", "origin_alt_m"}) log.metadata.erase(k);
   }
   if (log.samples.size() < 2) {
     throw std::runtime_error(source + ":" + std::to_string(line_no) + ": the log has " +
                              std::to_string(log.samples.size()) + " sample(s), at least 2 are needed");
   }
   deriveKinematics(log, !have_vel, !have_acc, d);
+  // Finite inputs can still give non-finite derivatives (positions near 1e308, time steps of
+  // 1e-320 s); every later sum would turn NaN silently, so name the first such row.
+  for (size_t i = 0; i < log.samples.size(); ++i) {
+    const auto& x = log.samples[i];
+    if (!x.velocity.allFinite() || !x.acceleration.allFinite()) {
+      fail(source, rows[i].first,
+           std::string("derived ") + (x.velocity.allFinite() ? "acceleration" : "velocity") + " at time " + fmt(x.t) +
+               " s is not finite, expected finite derivatives (check for huge positions or near-zero time steps)");
+    }
+  }
   return log;
 }
 

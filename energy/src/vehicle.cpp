@@ -1,10 +1,13 @@
 #include "wattswath/energy/vehicle.hpp"
 
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -81,9 +84,14 @@ int integer(const json& j, const char* key, const std::string& source, const std
     throw std::invalid_argument(prefix(source) + "missing field '" + where + key + "' (an integer)");
   }
   const json& v = j.at(key);
-  if (!v.is_number_integer()) {
+  // Range-checked before narrowing: get<int>() would wrap 4294967300 to 4 and accept it.
+  const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(INT_MAX)
+                                           : v.is_number_integer() && v.get<std::int64_t>() >= INT_MIN &&
+                                                 v.get<std::int64_t>() <= INT_MAX;
+  if (!fits) {
     throw std::invalid_argument(prefix(source) + "field '" + where + key + "' = " + v.dump() +
-                                ", expected an integer");
+                                ", expected an integer" +
+                                (v.is_number_integer() ? std::string(" of at most 2147483647 in magnitude") : ""));
   }
   return v.get<int>();
 }
@@ -91,26 +99,29 @@ int integer(const json& j, const char* key, const std::string& source, const std
 }  // namespace
 
 void validate(const Vehicle& v, const std::string& source) {
-  requireRange(source, "mass_kg", v.mass_kg, 0.0, true, 1e4, false, "a mass in (0, 10000] kg");
+  requireRange(source, "mass_kg", v.mass_kg, 1e-3, false, 1e4, false, "a mass in [0.001, 10000] kg");
   if (v.rotor_count < 1 || v.rotor_count > 64) {
     throw std::invalid_argument(prefix(source) + "field 'rotor_count' = " + std::to_string(v.rotor_count) +
                                 ", expected an integer in [1, 64]");
   }
-  requireRange(source, "rotor_diameter_m", v.rotor_diameter_m, 0.0, true, 20.0, false,
-               "a diameter in (0, 20] m");
-  requireRange(source, "disk_area_m2", v.disk_area_m2, 0.0, true, 1e3, false, "an area in (0, 1000] m^2");
-  requireRange(source, "motor_efficiency", v.motor_efficiency, 0.0, true, 1.0, false, "an efficiency in (0, 1]");
-  requireRange(source, "propeller_efficiency", v.propeller_efficiency, 0.0, true, 1.0, false,
-               "an efficiency in (0, 1]");
+  // Lower bounds are physical minima, not 0: a 1e-320 m^2 disk or efficiency is "positive" but
+  // turns the hover power (Marins Eq. 4-5) into infinity.
+  requireRange(source, "rotor_diameter_m", v.rotor_diameter_m, 0.01, false, 20.0, false,
+               "a diameter in [0.01, 20] m");
+  requireRange(source, "disk_area_m2", v.disk_area_m2, 1e-4, false, 1e3, false, "an area in [0.0001, 1000] m^2");
+  requireRange(source, "motor_efficiency", v.motor_efficiency, 0.01, false, 1.0, false,
+               "an efficiency in [0.01, 1]");
+  requireRange(source, "propeller_efficiency", v.propeller_efficiency, 0.01, false, 1.0, false,
+               "an efficiency in [0.01, 1]");
   requireRange(source, "drag_area_m2", v.drag_area_m2, 0.0, false, 100.0, false, "an area in [0, 100] m^2");
   requireRange(source, "max_acceleration_mps2", v.max_acceleration_mps2, 0.0, true, 100.0, false,
                "an acceleration in (0, 100] m/s^2");
   requireRange(source, "max_yaw_rate_radps", v.max_yaw_rate_radps, 0.0, true, 100.0, false,
                "a yaw rate in (0, 100] rad/s");
   requireRange(source, "max_speed_mps", v.max_speed_mps, 0.0, true, 200.0, false, "a speed in (0, 200] m/s");
-  requireRange(source, "air_density_kgpm3", v.air_density_kgpm3, 0.0, true, 5.0, false,
-               "an air density in (0, 5] kg/m^3");
-  requireRange(source, "gravity_mps2", v.gravity_mps2, 0.0, true, 30.0, false, "a gravity in (0, 30] m/s^2");
+  requireRange(source, "air_density_kgpm3", v.air_density_kgpm3, 0.01, false, 5.0, false,
+               "an air density in [0.01, 5] kg/m^3");
+  requireRange(source, "gravity_mps2", v.gravity_mps2, 0.01, false, 30.0, false, "a gravity in [0.01, 30] m/s^2");
   if (v.battery) validateBattery(*v.battery, source);
 }
 
@@ -136,10 +147,28 @@ void validateBattery(const Battery& b, const std::string& source) {
 
 Vehicle parseVehicle(const std::string& json_text, const std::string& source) {
   json j;
+  // A field given twice would silently keep the last value: reject it, naming the field.
+  std::vector<std::set<std::string>> keys_seen;
+  std::string duplicate;
+  const json::parser_callback_t check_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      keys_seen.emplace_back();
+    } else if (event == json::parse_event_t::object_end && !keys_seen.empty()) {
+      keys_seen.pop_back();
+    } else if (event == json::parse_event_t::key && !keys_seen.empty() && parsed.is_string()) {
+      const auto& k = parsed.get_ref<const std::string&>();
+      if (!keys_seen.back().insert(k).second && duplicate.empty()) duplicate = k;
+    }
+    return true;
+  };
   try {
-    j = json::parse(json_text);
-  } catch (const json::parse_error& e) {
+    j = json::parse(json_text, check_duplicates);
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
     throw std::invalid_argument(prefix(source) + "not valid JSON (" + e.what() + ")");
+  }
+  if (!duplicate.empty()) {
+    throw std::invalid_argument(prefix(source) + "field '" + duplicate +
+                                "' appears twice, expected each field once");
   }
   if (!j.is_object()) throw std::invalid_argument(prefix(source) + "expected a JSON object at the top level");
   rejectUnknown(j, knownVehicleKeys(), source, "");

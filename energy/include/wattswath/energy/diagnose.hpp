@@ -127,12 +127,15 @@ struct SimulationSettings {
   double voltage_start_v = 12.4;   ///< [V] battery voltage at the start (linear sag); 1..1000
   double voltage_end_v = 11.2;     ///< [V] battery voltage at the end
   unsigned seed = 1;               ///< random seed (fixed: same log every time)
+  double max_samples = 2e7;        ///< [-] refuse flights needing more samples (about 2 GB of log); 1..1e9
 };
 
 /// A canonical log of `truth` flown through `waypoints` (ENU [m]): at each waypoint the vehicle
 /// stops, turns in place to the next leg, then flies it with accelerate / cruise / brake pieces
 /// (buildLegProfile). Power is the model's plus Gaussian noise; velocity gets Gaussian noise;
 /// current = power / voltage. format = "simulated"; the hidden effects are not written.
+/// Throws std::invalid_argument for fewer than 2 waypoints, a non-finite waypoint, or a flight
+/// needing more than `s.max_samples` samples (instead of running out of memory).
 FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& waypoints, const EnergyModel& truth,
                          const SimulationSettings& s = {});
 

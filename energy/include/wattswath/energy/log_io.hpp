@@ -23,8 +23,10 @@ struct DerivativeSettings {
 /// unknown columns verbatim; converts lat/lon/alt to local ENU metres at the first sample
 /// (GeographicLib LocalCartesian on WGS84); derives velocity/acceleration when absent (`d`).
 /// Throws std::runtime_error "FILE:LINE: column 'NAME': ..." for a missing required column, a
-/// non-numeric or non-finite value in a used column, a row with the wrong number of fields,
-/// time that does not increase, or fewer than two samples. Never drops rows. Empty cells are
+/// non-numeric or non-finite value in a used column, a value beyond tol::kLogMaxMagnitude (not
+/// time, lat, lon), a row with the wrong number of fields, time that does not increase by at least
+/// tol::kLogMinTimeStep, lat/lon (or origin metadata) out of range, derived velocities or
+/// accelerations that are not finite, or fewer than two samples. Never drops rows. Empty cells are
 /// allowed only in the optional columns yaw_rad, mass_kg, wind_x_mps, wind_y_mps (NaN: not measured).
 FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d = {});
 

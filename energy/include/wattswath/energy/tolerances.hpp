@@ -8,5 +8,12 @@ inline constexpr double kLength = 1e-9;   ///< [m] pieces shorter than this are 
 inline constexpr double kSpeed = 1e-9;    ///< [m/s] speeds closer than this are equal
 inline constexpr double kRoot = 1e-12;    ///< [m/s] bracket width at which root finders stop
 inline constexpr double kEnergyRel = 1e-9;  ///< [-] relative agreement of closed forms and quadrature
+/// [SI unit of the column] largest magnitude a flight-log value may have (positions, velocities,
+/// accelerations, voltage, current, power, mass, wind; not time): beyond it squares and cubes in
+/// the model overflow to infinity instead of giving an error.
+inline constexpr double kLogMaxMagnitude = 1e9;
+/// [s] smallest time step between flight-log samples (1 MHz): closer samples make the derived
+/// velocities meaningless.
+inline constexpr double kLogMinTimeStep = 1e-6;
 
 }  // namespace wattswath::energy::tol

@@ -45,8 +45,8 @@ struct Vehicle {
   int rotor_count = 0;                ///< [-] number of rotors N
   double rotor_diameter_m = 0.0;      ///< [m] propeller diameter (2 r)
   double disk_area_m2 = 0.0;          ///< [m^2] total rotor disk area A = N pi r^2 (Hwang Eq. 7)
-  double motor_efficiency = 0.0;      ///< [-] eta_mot in (0, 1] (Marins Eq. 1)
-  double propeller_efficiency = 0.0;  ///< [-] eta_prop in (0, 1] (Marins Eq. 1)
+  double motor_efficiency = 0.0;      ///< [-] eta_mot in [0.01, 1] (Marins Eq. 1)
+  double propeller_efficiency = 0.0;  ///< [-] eta_prop in [0.01, 1] (Marins Eq. 1)
   double drag_area_m2 = 0.0;          ///< [m^2] C_D times frontal area (Marins Eq. 8; Hwang S*Cd)
   double max_acceleration_mps2 = 0.0; ///< [m/s^2] acceleration and braking magnitude a
   double max_yaw_rate_radps = 0.0;    ///< [rad/s] maximum yaw rate omega_max (Marins Eq. 13)

@@ -1,0 +1,166 @@
+// Data-driven robustness test (issue 8): runs the CLI on every malformed or degenerate input of
+// tests/data/bad/ as listed in tests/data/bad/EXPECTED.tsv and checks that it answers with a
+// clear error: a non-zero exit status, never a signal (crash, sanitizer abort or the hang
+// watchdog), stderr naming the file, the line or field and what was expected, and the input file
+// byte-for-byte unchanged afterwards.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "test_util.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using wattswath::test::fingerprint;
+using wattswath::test::Outcome;
+using wattswath::test::readAll;
+using wattswath::test::runCli;
+using wattswath::test::sourcePath;
+
+/// One row of EXPECTED.tsv: the input, the command that reads it, what stderr must contain.
+struct Case {
+  std::string file;                     ///< file name under tests/data/bad/
+  std::string command;                  ///< wattswath arguments; {} is replaced by the file's path
+  std::vector<std::string> substrings;  ///< each must appear in stderr
+  int line = 0;                         ///< line of EXPECTED.tsv (for messages)
+};
+
+std::vector<std::string> split(const std::string& s, const std::string& sep) {
+  std::vector<std::string> out;
+  size_t pos = 0;
+  while (true) {
+    const size_t at = s.find(sep, pos);
+    out.push_back(s.substr(pos, at == std::string::npos ? std::string::npos : at - pos));
+    if (at == std::string::npos) break;
+    pos = at + sep.size();
+  }
+  return out;
+}
+
+std::string trimmed(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+std::vector<Case> loadCases() {
+  std::vector<Case> out;
+  std::ifstream in(sourcePath("tests/data/bad/EXPECTED.tsv"));
+  std::string line;
+  int ln = 0;
+  while (std::getline(in, line)) {
+    ++ln;
+    if (trimmed(line).empty() || line[0] == '#') continue;
+    const auto cols = split(line, "\t");
+    Case c;
+    c.line = ln;
+    c.file = cols.size() > 0 ? trimmed(cols[0]) : "";
+    c.command = cols.size() > 1 ? trimmed(cols[1]) : "";
+    if (cols.size() > 2)
+      for (const auto& s : split(cols[2], "|"))
+        if (!trimmed(s).empty()) c.substrings.push_back(trimmed(s));
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<std::string> argsOf(const std::string& command, const std::string& file) {
+  std::vector<std::string> args;
+  std::istringstream is(command);
+  std::string a;
+  while (is >> a) {
+    const size_t at = a.find("{}");
+    if (at != std::string::npos) a.replace(at, 2, file);
+    args.push_back(a);
+  }
+  return args;
+}
+
+/// Prints a case as its file and command (instead of gtest's byte dump).
+void PrintTo(const Case& c, std::ostream* os) { *os << c.file << " (EXPECTED.tsv:" << c.line << ")"; }
+
+class BadInput : public ::testing::TestWithParam<Case> {};
+
+TEST_P(BadInput, ClearErrorNoSignalInputUnchanged) {
+  const Case& c = GetParam();
+  ASSERT_FALSE(c.file.empty()) << "EXPECTED.tsv:" << c.line << ": empty file column";
+  ASSERT_FALSE(c.command.empty()) << "EXPECTED.tsv:" << c.line << ": empty command column";
+  ASSERT_FALSE(c.substrings.empty()) << "EXPECTED.tsv:" << c.line << ": no expected substrings";
+  const std::string rel = "tests/data/bad/" + c.file;
+  ASSERT_TRUE(fs::exists(sourcePath(rel))) << rel;
+  const auto before = fingerprint(sourcePath(rel));
+  const Outcome r = runCli(argsOf(c.command, rel));
+  EXPECT_FALSE(r.signalled) << c.file << ": killed by signal " << r.signal << " (" << strsignal(r.signal)
+                            << ")\nstderr:\n"
+                            << r.err;
+  EXPECT_NE(r.status, 0) << c.file << ": accepted a bad input\nstdout:\n" << r.out;
+  for (const auto& s : c.substrings) {
+    EXPECT_NE(r.err.find(s), std::string::npos) << c.file << ": stderr lacks '" << s << "'\nstderr:\n" << r.err;
+  }
+  EXPECT_EQ(fingerprint(sourcePath(rel)), before) << c.file << " was modified";
+}
+
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+  std::string n = info.param.file + "_" + std::to_string(info.param.line);
+  for (char& ch : n)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return n;
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, BadInput, ::testing::ValuesIn(loadCases()), caseName);
+
+// Every file of the corpus is exercised: a fixture without an expectation is a test nobody runs.
+TEST(BadInputCorpus, EveryFileHasAnExpectation) {
+  std::set<std::string> listed;
+  for (const auto& c : loadCases()) listed.insert(c.file);
+  ASSERT_GT(listed.size(), 40u);
+  for (const auto& e : fs::directory_iterator(sourcePath("tests/data/bad"))) {
+    const std::string n = e.path().filename().string();
+    if (n == "EXPECTED.tsv" || n == "README.md") continue;
+    EXPECT_TRUE(listed.count(n)) << "tests/data/bad/" << n << " has no row in EXPECTED.tsv";
+  }
+}
+
+// The same vehicle with a UTF-8 byte-order mark and CRLF line ends reads as the plain file.
+TEST(GoodVariants, VehicleWithBomAndCrlfReadsLikePlainFile) {
+  const Outcome plain = runCli({"hover", "--json", "--vehicle", "data/vehicles/iris.json"});
+  const Outcome bom = runCli({"hover", "--json", "--vehicle", "tests/data/good/vehicle_bom_crlf.json"});
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(bom.status, 0) << bom.err;
+  EXPECT_NE(plain.out.find("p_hover_w"), std::string::npos);
+  auto withoutName = [](const std::string& s) {
+    std::string r;
+    std::istringstream is(s);
+    std::string l;
+    while (std::getline(is, l))
+      if (l.find("\"vehicle\"") == std::string::npos) r += l + "\n";
+    return r;
+  };
+  EXPECT_EQ(withoutName(bom.out), withoutName(plain.out));
+}
+
+// A geodetic log with a BOM and CRLF line ends replays (the reader's own test checks the values).
+TEST(GoodVariants, LogWithBomAndCrlfReplays) {
+  const Outcome r =
+      runCli({"replay", "--vehicle", "data/vehicles/iris.json", "--log", "tests/data/good/bom_crlf_geodetic.csv"});
+  EXPECT_FALSE(r.signalled);
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+}  // namespace

@@ -1,0 +1,132 @@
+// Regression tests of the bugs the robustness work (issue 8) found, one per bug, named after it
+// (docs/robustness.md, "Findings"). Each failed before its fix.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "test_util.hpp"
+#include "wattswath/energy/diagnose.hpp"
+#include "wattswath/energy/log_io.hpp"
+#include "wattswath/energy/vehicle.hpp"
+
+using namespace wattswath::energy;
+using wattswath::test::readAll;
+using wattswath::test::runCli;
+using wattswath::test::sourcePath;
+
+namespace {
+
+std::string iris() { return readAll(sourcePath("data/vehicles/iris.json")); }
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string vehicleError(const std::string& text) {
+  try {
+    parseVehicle(text, "v.json");
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string logError(const std::string& text) {
+  try {
+    parseCsvLog(text, "log.csv");
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+// get<int>() wrapped 4294967300 to 4: a typo'd rotor count was accepted as a quadcopter.
+TEST(Regression, VehicleRotorCountIntOverflowWrappedTo4) {
+  const std::string m = vehicleError(replaced(iris(), "\"rotor_count\": 4", "\"rotor_count\": 4294967300"));
+  EXPECT_NE(m.find("v.json: field 'rotor_count' = 4294967300, expected an integer"), std::string::npos) << m;
+}
+
+// nlohmann keeps the last of two equal keys: "mass_kg" given twice silently used the second.
+TEST(Regression, VehicleDuplicateFieldSilentlyKeptLast) {
+  const std::string m = vehicleError(replaced(iris(), "\"mass_kg\": 1.3,", "\"mass_kg\": 1.3, \"mass_kg\": 13,"));
+  EXPECT_NE(m.find("v.json: field 'mass_kg' appears twice"), std::string::npos) << m;
+}
+
+// 1e999 raised json out_of_range, which was not caught: the message did not name the file.
+TEST(Regression, VehicleNumberOverflowMessageLackedFileName) {
+  const std::string m = vehicleError(replaced(iris(), "\"mass_kg\": 1.3", "\"mass_kg\": 1e999"));
+  EXPECT_NE(m.find("v.json: not valid JSON"), std::string::npos) << m;
+}
+
+// A positive but subnormal disk area or efficiency passed "(0, x]" and made the hover power infinite.
+TEST(Regression, VehicleTinyDiskAreaGaveInfiniteHoverPower) {
+  EXPECT_NE(vehicleError(replaced(iris(), "\"disk_area_m2\": 0.2027", "\"disk_area_m2\": 1e-320")).find("disk_area_m2"),
+            std::string::npos);
+  EXPECT_NE(vehicleError(replaced(iris(), "\"motor_efficiency\": 0.90", "\"motor_efficiency\": 1e-300"))
+                .find("motor_efficiency"),
+            std::string::npos);
+  const Vehicle v = parseVehicle(replaced(iris(), "\"disk_area_m2\": 0.2027", "\"disk_area_m2\": 0.0001"), "v.json");
+  EXPECT_TRUE(std::isfinite(marinsHoverPowerW(v)));
+}
+
+// Positions of 1e306 m were read; the model's v^3 overflowed and replay printed null energies.
+TEST(Regression, LogHugePositionsGaveNullEnergies) {
+  const std::string m = logError("time_s,x_m,y_m,z_m,power_w\n0,0,0,0,200\n1,1e306,0,0,200\n2,2e306,0,0,200\n");
+  EXPECT_NE(m.find("log.csv:3: column 'x_m' (field 2): value '1e306' is too large"), std::string::npos) << m;
+}
+
+// Time steps of 1e-320 s were accepted and gave a 4e-320 s flight with meaningless energies.
+TEST(Regression, LogSubnormalTimeStepsAccepted) {
+  const std::string m = logError("time_s,x_m,y_m,z_m,power_w\n0,0,0,0,200\n1e-320,1,0,0,200\n2e-320,2,0,0,200\n");
+  EXPECT_NE(m.find("log.csv:3: column 'time_s'"), std::string::npos) << m;
+  EXPECT_NE(m.find("expected steps of at least"), std::string::npos) << m;
+}
+
+// std::stod read the origin "43.7abc" as 43.7 (and accepted "nan" and 143.7).
+TEST(Regression, LogOriginMetadataPartiallyParsed) {
+  const std::string body = "# origin_lon_deg: 10.4\n# origin_alt_m: 7\ntime_s,x_m,y_m,z_m,power_w\n0,0,0,0,200\n1,1,0,0,200\n";
+  for (const std::string lat : {"43.7abc", "nan", "143.7"}) {
+    const std::string m = logError("# origin_lat_deg: " + lat + "\n" + body);
+    EXPECT_NE(m.find("metadata 'origin_lat_deg': value '" + lat + "', expected a latitude"), std::string::npos) << m;
+  }
+  const FlightLog ok = parseCsvLog("# origin_lat_deg: 43.7\n" + body, "log.csv");
+  EXPECT_TRUE(ok.has_geodetic_origin);
+  EXPECT_DOUBLE_EQ(ok.origin_lat_deg, 43.7);
+}
+
+// A waypoint 4e7 m away made simulateFlight loop for 5e7 samples (and 1e300 m for ever).
+TEST(Regression, SimulateFarWaypointRanOutOfMemory) {
+  const EnergyModel m = buildModel(loadVehicle(sourcePath("data/vehicles/iris.json")), {"hover", "kinetic"});
+  try {
+    simulateFlight({{0, 0, 10}, {4e7, 0, 10}}, m);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("expected at most"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(simulateFlight({{0, 0, 10}, {NAN, 0, 10}}, m), std::invalid_argument);
+}
+
+// readPath skipped ANY unreadable first line as a header, so a typo in the first waypoint
+// silently dropped it; a fourth number on a line was silently ignored.
+TEST(Regression, PathFirstRowOfNumbersSkippedAsHeader) {
+  const std::string dir = std::filesystem::temp_directory_path() / ("wattswath_path_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/p.txt") << "0 0 1O\n10 0 10\n20 0 10\n";
+  const auto r = runCli({"simulate", "--vehicle", "data/vehicles/iris.json", "--path", dir + "/p.txt", "--out",
+                         dir + "/out.csv"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("p.txt:1: expected three numbers"), std::string::npos) << r.err;
+  std::ofstream(dir + "/h.txt") << "x y z\n0 0 10\n10 0 10\n";
+  const auto ok = runCli({"simulate", "--vehicle", "data/vehicles/iris.json", "--path", dir + "/h.txt", "--out",
+                          dir + "/out.csv"});
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  std::filesystem::remove_all(dir);
+}
