@@ -10,6 +10,8 @@
 
 #include "wattswath/energy/diagnose.hpp"
 #include "wattswath/energy/log_io.hpp"
+#include "wattswath/energy/marins.hpp"
+#include "wattswath/energy/optimal_speed.hpp"
 
 using namespace wattswath::energy;
 
@@ -100,6 +102,42 @@ TEST(NumericalGuards, LegEnergyFiniteFromMillimetresToKilometres) {
     const double e = m.energy(buildLegProfile(len, 0.0, speed, 0.0, lim, 0.0, dz));
     ASSERT_TRUE(std::isfinite(e) && e >= 0.0) << "trial " << trial << ": leg " << len << " m at " << speed
                                               << " m/s -> " << e << " J";
+  }
+}
+
+// The optimal cruise speed (energy/optimal_speed.hpp) of random vehicles, leg lengths from 1 cm to
+// 10 km, and models with a random extra effect: a finite speed inside [min_speed, v_max] with
+// finite energy and time. The paper's Eq. 10 closed form likewise for any drag area > 0.
+TEST(NumericalGuards, OptimalCruiseSpeedFiniteAcrossVehiclesAndLegs) {
+  std::mt19937 rng(1234);
+  auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const std::vector<std::string> paper = {"hover", "kinetic", "parasitic_drag"};
+  std::vector<std::string> extras;
+  for (const auto& n : knownEffectNames())
+    if (std::find(paper.begin(), paper.end(), n) == paper.end()) extras.push_back(n);
+  for (int trial = 0; trial < 150; ++trial) {
+    Vehicle v = randomVehicle(rng);
+    EnergyModel m = buildModel(v, paper);
+    if (trial % 3 == 1) m = withCandidate(m, extras[trial % extras.size()], v);
+    const double d = std::exp(u(std::log(1e-2), std::log(1e4)));
+    ProfileLimits lim;
+    lim.acceleration = lim.deceleration = v.max_acceleration_mps2;
+    const double v_max = v.max_speed_mps;
+    const double v_in = trial % 4 == 0 ? u(0.0, std::min(v_max, std::sqrt(v.max_acceleration_mps2 * d))) : 0.0;
+    const std::string what = "trial " + std::to_string(trial) + " d " + std::to_string(d) + " v_in " +
+                             std::to_string(v_in) + " model " + (m.effects().size() > 3 ? m.effects().back()->name() : "paper");
+    CruiseSpeedOptimum o;
+    ASSERT_NO_THROW(o = optimalCruiseSpeed(m, d, v_in, 0.0, lim, v_max)) << what;
+    EXPECT_TRUE(std::isfinite(o.speed) && std::isfinite(o.energy) && std::isfinite(o.time)) << what;
+    // The searched range is [min(min_speed, upper_bound / 2), upper_bound] (optimal_speed.cpp):
+    // legs too short to reach min_speed search below it.
+    EXPECT_GE(o.speed, std::min(CruiseSpeedSettings{}.min_speed, 0.5 * o.upper_bound) * (1 - 1e-9)) << what;
+    EXPECT_LE(o.speed, o.upper_bound * (1 + 1e-9)) << what;
+    EXPECT_LE(o.upper_bound, v_max * (1 + 1e-9)) << what;
+    if (v.drag_area_m2 > 1e-4) {
+      const double eq10 = MarinsClosedForm::fromVehicle(v).eq10OptimalSpeed(d);
+      EXPECT_TRUE(std::isfinite(eq10) && eq10 > 0.0) << what << ": Eq. 10 speed " << eq10;
+    }
   }
 }
 
