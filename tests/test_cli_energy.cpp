@@ -78,7 +78,7 @@ TEST(CliEnergy, BadArgumentsGiveClearErrors) {
 }
 
 TEST(CliEnergy, ReproduceMarinsEveryDifferenceOver1PercentIsExplained) {
-  const auto r = run(cliBinary() + " reproduce --out /tmp/wattswath_test_reproduction.md --json 2>/dev/null");
+  const auto r = run(cliBinary() + " reproduce --out /tmp/wattswath_test_reproduction.md --force --json 2>/dev/null");
   ASSERT_EQ(r.status, 0);
   const auto j = nlohmann::json::parse(r.output).at("marins");
   int rows = 0;
