@@ -38,12 +38,19 @@ void progress(const std::string& message);
 void writeTextFileAtomic(const std::string& path, const std::string& text);
 
 /// Adds the common `--report FILE.html` option (self-contained HTML report) and `--report-svg DIR`
-/// (the same figures as separate .svg files) to `cmd`.
-void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_dir);
+/// (the same figures as separate .svg files) and `--force` (replace existing report files) to `cmd`.
+void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_dir, bool& force);
+
+/// Checks before any work that the report may be written (checkWritable on `html_path`; `svg_dir`
+/// must not be a file); throws std::runtime_error naming the path.
+void checkReportWritable(const std::string& html_path, const std::string& svg_dir, bool force,
+                         const std::vector<std::string>& inputs = {});
 
 /// Writes `report` to `html_path` (atomically) and, when `svg_dir` is not empty, each figure as
 /// `svg_dir`/NAME.svg; prints the paths on stderr. Throws std::runtime_error naming a path it cannot write.
-void writeReport(const report::HtmlReport& report, const std::string& html_path, const std::string& svg_dir = "");
+void writeReport(const report::HtmlReport& report, const std::string& html_path, const std::string& svg_dir = "",
+                 bool force = false);
+
 /// Adds the flight-log reading options (--from, --to, --airborne, --lenient, --battery-instance,
 /// --position-source) to `cmd`, storing into `options`. Use with energy::readFlightLog().
 void addLogReadOptions(CLI::App* cmd, energy::LogReadOptions& options);

@@ -147,6 +147,7 @@ void registerVopt(CLI::App& app) {
     double distance = 0.0, entry = 0.0, exit = 0.0, max_speed = 0.0;
     bool json = false;
     std::string report, report_svg;
+    bool force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand(
@@ -160,8 +161,9 @@ void registerVopt(CLI::App& app) {
   cmd->add_option("--max-speed", o->max_speed, "Speed limit [m/s] (default: the vehicle's max_speed_mps)");
   addDragOption(cmd, o->drag);
   addJsonFlag(cmd, o->json);
-  addReportOptions(cmd, o->report, o->report_svg);
+  addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
+    checkReportWritable(o->report, o->report_svg, o->force, {o->vehicle});
     requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
     requireRange("--entry-speed", o->entry, 0.0, false, 200.0, "a speed in [0, 200] m/s");
     requireRange("--exit-speed", o->exit, 0.0, false, 200.0, "a speed in [0, 200] m/s");
@@ -186,7 +188,7 @@ void registerVopt(CLI::App& app) {
                                      formatNumber(o->exit) + " m/s, drag " + o->drag},
                          {"optimal cruise speed", report::formatNumber(best.speed, 2) + " m/s (" + report::formatNumber(best.energy, 0) +
                                                       " J); Marins Eq. 10: " + report::formatNumber(eq10, 2) + " m/s"}});
-      writeReport(report::speedReport(data), o->report, o->report_svg);
+      writeReport(report::speedReport(data), o->report, o->report_svg, o->force);
     }
     if (o->json) {
       printJson({{"vehicle", v.name},
@@ -217,6 +219,7 @@ void registerTurns(CLI::App& app) {
     double distance = 0.0, angle = 0.0, max_speed = 0.0, sharp_speed = 0.0, rounded_speed = 0.0;
     bool from_rest = false, json = false;
     std::string report, report_svg;
+    bool force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand(
@@ -231,8 +234,9 @@ void registerTurns(CLI::App& app) {
                 "The rounded path also starts and ends at rest (Marins Eq. 16 flies it at constant speed)");
   addDragOption(cmd, o->drag);
   addJsonFlag(cmd, o->json);
-  addReportOptions(cmd, o->report, o->report_svg);
+  addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
+    checkReportWritable(o->report, o->report_svg, o->force, {o->vehicle});
     requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
     requireRange("--angle", o->angle, 0.0, true, 180.0, "an interior angle in (0, 180] deg");
     const auto v = en::loadVehicle(o->vehicle);
@@ -259,7 +263,7 @@ void registerTurns(CLI::App& app) {
                                           (o->from_rest ? ", rounded path from rest" : ", rounded path at constant speed (Eq. 16)")},
                          {"this corner", formatNumber(o->distance) + " m legs at " + formatNumber(o->angle) +
                                              " deg: saving " + report::formatNumber(c.saving_pct, 1) + " %"}});
-      writeReport(report::turnReport(data), o->report, o->report_svg);
+      writeReport(report::turnReport(data), o->report, o->report_svg, o->force);
     }
     if (o->json) {
       printJson({{"vehicle", v.name},

@@ -158,6 +158,7 @@ void registerDiagnose(CLI::App& app) {
     int folds = 3;
     bool json = false;
     std::string report, report_svg;
+    bool force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("diagnose", "Rank the physical effects missing from a model by the held-out error "
@@ -172,8 +173,11 @@ void registerDiagnose(CLI::App& app) {
       ->capture_default_str();
   addLogReadOptions(cmd, o->read);
   addJsonFlag(cmd, o->json);
-  addReportOptions(cmd, o->report, o->report_svg);
+  addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
+    auto inputs = o->logs;
+    inputs.push_back(o->vehicle);
+    checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto logs = prepareAll(o->logs, o->read);
@@ -190,7 +194,7 @@ void registerDiagnose(CLI::App& app) {
       for (const auto& st : d.staircase) data.staircase.push_back({st.label, st.metrics.rmse_w});
       data.error_label = "held-out sample RMSE";
       data.diagnosis = diagnosisRows(d);
-      writeReport(report::validationReport(data), o->report, o->report_svg);
+      writeReport(report::validationReport(data), o->report, o->report_svg, o->force);
     }
     if (o->json) {
       json cands = json::array();
@@ -253,6 +257,7 @@ void registerFit(CLI::App& app) {
     en::LogReadOptions read;
     bool json = false;
     std::string report, report_svg;
+    bool force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("fit", "Fit the coefficients of a model's effects (bounded least squares, Ceres) and "
@@ -263,8 +268,12 @@ void registerFit(CLI::App& app) {
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
   addLogReadOptions(cmd, o->read);
   addJsonFlag(cmd, o->json);
-  addReportOptions(cmd, o->report, o->report_svg);
+  addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
+    auto inputs = o->logs;
+    inputs.insert(inputs.end(), o->test_logs.begin(), o->test_logs.end());
+    inputs.push_back(o->vehicle);
+    checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto train = prepareAll(o->logs, o->read);
@@ -289,7 +298,7 @@ void registerFit(CLI::App& app) {
         data.diagnosis.push_back({e, std::numeric_limits<double>::quiet_NaN(), fittedValuesText(r.fit.coefficients, e),
                                   en::describeEffect(e, r.fit.coefficients), true});
       }
-      writeReport(report::validationReport(data), o->report, o->report_svg);
+      writeReport(report::validationReport(data), o->report, o->report_svg, o->force);
     }
     auto side = [&](const en::ErrorMetrics& before, const en::ErrorMetrics& after) {
       json j = metricsJson(after);

@@ -6,12 +6,23 @@
 
 namespace wattswath::apps {
 
-void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_dir) {
+void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_dir, bool& force) {
+  addForceFlag(cmd, force);
   cmd->add_option("--report", html_path, "Write a self-contained HTML report (inline SVG, no network) to this file");
   cmd->add_option("--report-svg", svg_dir, "Also write each report figure as DIR/NAME.svg (for papers)");
 }
 
-void writeReport(const report::HtmlReport& report, const std::string& html_path, const std::string& svg_dir) {
+void checkReportWritable(const std::string& html_path, const std::string& svg_dir, bool force,
+                         const std::vector<std::string>& inputs) {
+  if (!html_path.empty()) checkWritable(html_path, force, inputs);
+  std::error_code ec;
+  if (!svg_dir.empty() && std::filesystem::exists(svg_dir, ec) && !std::filesystem::is_directory(svg_dir, ec)) {
+    throw std::runtime_error(svg_dir + ": is a file, expected a folder for --report-svg");
+  }
+}
+
+void writeReport(const report::HtmlReport& report, const std::string& html_path, const std::string& svg_dir,
+                 bool force) {
   if (!html_path.empty()) {
     writeTextFileAtomic(html_path, report.html());
     progress("report: " + html_path);
@@ -19,6 +30,7 @@ void writeReport(const report::HtmlReport& report, const std::string& html_path,
   if (!svg_dir.empty()) {
     for (const auto& f : report::svgFiles(report)) {
       const std::string path = (std::filesystem::path(svg_dir) / f.file_name).string();
+      checkWritable(path, force);
       writeTextFileAtomic(path, f.content);
       progress("figure: " + path);
     }

@@ -113,4 +113,23 @@ TEST_F(OutputSafety, ReproduceOutRefusesExistingWithoutForce) {
   EXPECT_EQ(fingerprint(out), before);
 }
 
+TEST_F(OutputSafety, ReportRefusesExistingHtmlWithoutForceAndNeverTheVehicle) {
+  const std::string html = write("report.html", "<p>mine</p>\n");
+  const auto before = fingerprint(html);
+  Outcome r = runCli({"vopt", "--vehicle", kVehicle, "--distance", "100", "--report", html});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find(html + ": already exists; use --force"), std::string::npos) << r.err;
+  EXPECT_EQ(fingerprint(html), before);
+  const std::string vehicle = path("v.json");
+  fs::copy_file(wattswath::test::sourcePath(kVehicle), vehicle);
+  const auto v_before = fingerprint(vehicle);
+  r = runCli({"vopt", "--vehicle", vehicle, "--distance", "100", "--report", vehicle, "--force"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("is also an input file"), std::string::npos) << r.err;
+  EXPECT_EQ(fingerprint(vehicle), v_before);
+  r = runCli({"vopt", "--vehicle", kVehicle, "--distance", "100", "--report", html, "--force"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(readAll(html).find("<svg"), std::string::npos);
+}
+
 }  // namespace

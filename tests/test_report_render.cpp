@@ -146,7 +146,7 @@ void checkReport(const wr::HtmlReport& report, const std::string& name, int min_
 void checkCommandReport(const std::string& args, const std::string& name, int figures) {
   const std::string dir = renderDir(), html = dir + "/" + name + ".html", svgs = dir + "/" + name + "-svg";
   fs::remove_all(svgs);
-  const auto res = run(cliBinary() + " " + args + " --report '" + html + "' --report-svg '" + svgs + "' 2>&1");
+  const auto res = run(cliBinary() + " " + args + " --force --report '" + html + "' --report-svg '" + svgs + "' 2>&1");
   ASSERT_EQ(res.status, 0) << res.output;
   int n = 0;
   for (const auto& f : fs::directory_iterator(svgs)) {
