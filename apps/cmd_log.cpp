@@ -137,7 +137,7 @@ void registerConvert(CLI::App& log_cmd) {
   struct Opts {
     std::string file, out;
     en::LogReadOptions read;
-    bool json = false;
+    bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = log_cmd.add_subcommand("convert", "Convert a flight log (.bin, .ulg, .csv) to the canonical CSV");
@@ -146,8 +146,10 @@ void registerConvert(CLI::App& log_cmd) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", o->out, "Canonical CSV to write")->required();
   addLogReadOptions(cmd, o->read);
+  addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
+    checkWritable(o->out, o->force, {o->file});
     auto log = en::readFlightLog(o->file, o->read);
     std::string windows;
     for (const auto& w : log.airborne)

@@ -13,10 +13,11 @@ seconds="${FUZZ_SECONDS:-20}"
 declare -A seeds=(
   [fuzz_vehicle_json]="data/vehicles/*.json tests/data/good/*.json tests/data/bad/vehicle_*.json"
   [fuzz_csv_log]="tests/data/good/*.csv tests/data/bad/*.csv"
+  [fuzz_area]="data/areas/* tests/data/bad/*.geojson tests/data/bad/*.kml tests/data/bad/*.wkt tests/data/bad/*.waypoints"
 )
 # target -> extension of the real logs in ../shared/data/autopilot-logs
 declare -A real_logs=([fuzz_dataflash]=bin [fuzz_ulog]=ulg)
-all_targets=(fuzz_vehicle_json fuzz_csv_log fuzz_dataflash fuzz_ulog)
+all_targets=(fuzz_vehicle_json fuzz_csv_log fuzz_area fuzz_dataflash fuzz_ulog)
 shared="../shared/data/autopilot-logs"
 read -r -a targets <<< "${FUZZ_TARGETS:-${all_targets[*]}}"
 

@@ -164,3 +164,12 @@ TEST(GoodVariants, LogWithBomAndCrlfReplays) {
 }
 
 }  // namespace
+
+namespace {
+// A hole touching the outer boundary at one vertex is a valid polygon with holes (CGAL) and is read.
+TEST(GoodVariants, HoleTouchingTheBorderAtOneVertexIsRead) {
+  const Outcome r = runCli({"area", "info", "tests/data/good/geo_hole_touching_border.geojson"});
+  EXPECT_FALSE(r.signalled);
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+}  // namespace

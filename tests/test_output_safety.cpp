@@ -104,6 +104,23 @@ TEST_F(OutputSafety, ReplaySamplesOutRefusesExistingAndNeverItsLog) {
   EXPECT_NE(readAll(out).find("measured_w"), std::string::npos);
 }
 
+TEST_F(OutputSafety, LogConvertRefusesExistingOutAndNeverItsInput) {
+  const std::string log = path("log.csv");
+  ASSERT_EQ(runCli({"simulate", "--vehicle", kVehicle, "--out", log}).status, 0);
+  const auto before = fingerprint(log);
+  Outcome r = runCli({"log", "convert", log, "--out", log, "--force"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("is also an input file"), std::string::npos) << r.err;
+  EXPECT_EQ(fingerprint(log), before);
+  const std::string out = write("converted.csv", "keep\n");
+  r = runCli({"log", "convert", log, "--out", out});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("already exists; use --force"), std::string::npos) << r.err;
+  r = runCli({"log", "convert", log, "--out", out, "--force"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(readAll(out).find("time_s,"), std::string::npos);
+}
+
 TEST_F(OutputSafety, ReproduceOutRefusesExistingWithoutForce) {
   const std::string out = write("report.md", "my notes\n");
   const auto before = fingerprint(out);

@@ -1,0 +1,29 @@
+// libFuzzer target: the survey-area readers (GeoJSON, KML, WKT, QGC WPL 110) on arbitrary bytes,
+// each format forced in turn and then decided by the content. Any std::exception is an accepted
+// answer; a crash, a sanitizer report or an accepted area with a non-finite or non-positive area
+// is a finding.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <string>
+
+#include "wattswath/geometry/survey_area.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  namespace geo = wattswath::geometry;
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  for (geo::AreaFormat f : {geo::AreaFormat::GeoJson, geo::AreaFormat::Kml, geo::AreaFormat::Wkt,
+                            geo::AreaFormat::QgcWpl, geo::AreaFormat::Auto}) {
+    geo::ReadOptions o;
+    o.format = f;
+    try {
+      const geo::SurveyArea a = geo::parseSurveyArea(text, "fuzz.area", o);
+      const double m2 = a.area();
+      if (!std::isfinite(m2) || !(m2 > 0.0)) std::abort();
+    } catch (const std::exception&) {
+    }
+  }
+  return 0;
+}
