@@ -102,9 +102,8 @@ TEST(PlannerDegenerate, NoFlyZoneOverTheWholeAreaIsAnError) {
   SurveyProblem p = problem({{0, 0}, {100, 0}, {100, 100}, {0, 100}});
   p.no_fly = {{{-1, -1}, {101, -1}, {101, 101}, {-1, 101}}};
   p.home = {-20, -20};
-  // The planner's message does not name the no-fly zone yet (reported to its owner).
   const std::string m = errorOf(p);
-  EXPECT_NE(m.find("no coverage path found"), std::string::npos) << "'" << m << "'";
+  EXPECT_NE(m.find("no_fly[0] covers the whole area"), std::string::npos) << "'" << m << "'";
 }
 
 TEST(PlannerDegenerate, BowTieIsAnError) {

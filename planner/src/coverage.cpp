@@ -699,6 +699,19 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   ctx.overlap_margin = 0.5 * (problem.footprint - problem.spacing);
   TransitRouter router(ctx.obstacles, TransitSettings{ps.clearance});
   if (router.blocked(problem.home)) throw std::invalid_argument("home is inside a hole or no-fly zone");
+  // A no-fly zone over the whole area leaves nothing to cover: an error, not an empty plan.
+  for (size_t i = 0; i < problem.no_fly.size(); ++i) {
+    const auto& z = problem.no_fly[i];
+    const bool area_inside = std::all_of(problem.area.outer.begin(), problem.area.outer.end(),
+                                         [&](const geometry::Point& p) { return insideRing(p, z); });
+    const bool zone_reaches_in = std::any_of(z.begin(), z.end(), [&](const geometry::Point& p) {
+      return insideRing(p, problem.area.outer);
+    });
+    if (area_inside && !zone_reaches_in) {
+      throw std::invalid_argument("SurveyProblem.no_fly[" + std::to_string(i) +
+                                  "] covers the whole area; expected a zone leaving part of the area to fly");
+    }
+  }
   ctx.router = &router;
 
   SpeedSettings ss = SpeedSettings::fromVehicle(vehicle);
