@@ -86,6 +86,7 @@ void checkWritable(const std::string& path, bool force, const std::vector<std::s
   if (path.empty()) throw std::runtime_error("output path is empty, expected a file name");
   if (fs::is_directory(target, ec)) throw std::runtime_error(path + ": is a folder, expected an output file name");
   if (!fs::exists(target, ec)) return;
+  if (!fs::is_regular_file(target, ec)) throw std::runtime_error(path + ": exists and is not a regular file");
   for (const auto& in : inputs) {
     if (fs::equivalent(target, fs::path(in), ec)) {
       throw std::runtime_error(path + ": is also an input file; refusing to overwrite an input, choose another output");

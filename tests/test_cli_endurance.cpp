@@ -56,7 +56,7 @@ TEST(CliModels, EveryModelSideBySide) {
 
 TEST(Table3, ReproduceJsonContract) {
   // Write the report to a scratch file (never to a device: the writer renames a temporary over it).
-  const auto r = run(cliBinary() + " reproduce --out " + ::testing::TempDir() + "wattswath_repro_test.md --json 2>/dev/null");
+  const auto r = run(cliBinary() + " reproduce --out " + ::testing::TempDir() + "wattswath_repro_test.md --force --json 2>/dev/null");
   ASSERT_EQ(r.status, 0) << r.output;
   const auto rows = nlohmann::json::parse(r.output).at("hwang_table3");
   ASSERT_EQ(rows.size(), 8u);
