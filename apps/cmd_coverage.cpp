@@ -36,7 +36,7 @@ void registerCoverageCommand(CLI::App& app) {
     int start_vertex = 0;
     std::vector<std::string> no_fly;
     std::string out;
-    bool json = false;
+    bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("coverage", "Coverage path over a survey area: boustrophedon or spiral");
@@ -66,8 +66,14 @@ void registerCoverageCommand(CLI::App& app) {
   cmd->add_flag("--clockwise", o->clockwise, "Spiral: fly the laps clockwise");
   cmd->add_option("--no-fly", o->no_fly, "Extra no-fly zone files, subtracted from the area")->check(CLI::ExistingFile);
   cmd->add_option("--out", o->out, "Path file to write (GeoJSON LineString, lat/lon, per-vertex properties)");
+  addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
+    if (!o->out.empty()) {
+      auto inputs = o->no_fly;
+      inputs.push_back(o->area);
+      checkWritable(o->out, o->force, inputs);
+    }
     if (o->spacing <= 0.0 && o->altitude <= 0.0) {
       throw std::runtime_error("coverage: give --spacing M or --altitude M --fov DEG [--overlap F]");
     }

@@ -24,7 +24,7 @@ nlohmann::json coverageJson(const std::string& args) {
 
 TEST(CliCoverage, SpiralFromCameraSettingsReportsTheContractKeys) {
   const std::string out = std::string(::testing::TempDir()) + "/spiral.geojson";
-  const auto j = coverageJson("--pattern spiral --altitude 10 --fov 100 --overlap 0.1 --corners rounded --radius 2.095 --out " + out);
+  const auto j = coverageJson("--pattern spiral --altitude 10 --fov 100 --overlap 0.1 --corners rounded --radius 2.095 --force --out " + out);
   for (const char* key : {"legs", "length_m", "turns", "coverage_pct", "cells"}) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_NEAR(j["spacing_m"].get<double>(), 21.45, 0.01);
   EXPECT_EQ(j["cells"].get<int>(), 1);
