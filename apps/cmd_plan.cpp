@@ -275,7 +275,7 @@ void runPlan(const PlanOpts& o) {
   writeTextFileAtomic((dir / "legs.csv").string(), pl::toLegCsv(legRecords(r.plan.flown, frame)));
   if (!o.no_report || !o.report_svg.empty()) {
     const auto report = report::planReport(planReportData(r, pr, vehicle, model, o.area));
-    writeReport(report, o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg);
+    writeReport(report, o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
   }
 
   const double e = r.plan.flown.energy;
