@@ -10,8 +10,10 @@
 #include "report_data.hpp"
 #include "wattswath/energy/diagnose.hpp"
 #include "wattswath/energy/log_io.hpp"
+#include "wattswath/energy/plan_prediction.hpp"
 #include "wattswath/energy/tolerances.hpp"
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/survey_area.hpp"
 
 namespace wattswath::apps {
 namespace en = wattswath::energy;
@@ -29,6 +31,13 @@ std::vector<en::PreparedLog> prepareAll(const std::vector<std::string>& paths, c
     out.push_back(en::prepareLog(en::readFlightLog(p, read)));
   }
   return out;
+}
+
+// Path length flown in a log [m] (sum of its legs).
+double loggedDistance(const en::PreparedLog& l) {
+  double d = 0.0;
+  for (const auto& leg : l.legs) d += leg.distance;
+  return d;
 }
 
 json metricsJson(const en::ErrorMetrics& m) {
@@ -98,9 +107,10 @@ void printMetrics(const std::string& label, const en::ErrorMetrics& m) {
 
 void registerReplay(CLI::App& app) {
   struct Opts {
-    std::string vehicle, effects = kPaperEffects, samples_out;
+    std::string vehicle, effects = kPaperEffects, samples_out, plan;
     std::vector<std::string> logs;
     en::LogReadOptions read;
+    en::PlanPredictionSettings plan_settings;
     bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
@@ -110,6 +120,17 @@ void registerReplay(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Comma-separated effects of the model")->capture_default_str();
   cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--samples-out", o->samples_out, "Write per-sample measured/modelled power as CSV here");
+  cmd->add_option("--plan", o->plan, "Plan (QGC .waypoints survey area, home = the logs' home): also predict each "
+                                     "flight from its planned legs and split the error into kinematics and physics")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--plan-corner-fraction", o->plan_settings.corner_speed_fraction,
+                  "Planned corners: 0 = stop and turn in place, else pass at this share of the leg speed")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--plan-snap", o->plan_settings.snap_distance,
+                  "Snap leg end points to plan vertices within this distance [m]")
+      ->check(CLI::Range(0.0, 50.0))
+      ->capture_default_str();
   addLogReadOptions(cmd, o->read);
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
@@ -125,6 +146,31 @@ void registerReplay(CLI::App& app) {
     std::vector<en::LogReplay> reps;
     for (const auto& l : logs) reps.push_back(en::replay(model, l));
     const auto m = en::errorMetrics(reps);
+    json plans = json::array();
+    if (!o->plan.empty()) {
+      const auto area = wattswath::geometry::readSurveyArea(o->plan);
+      if (!area.home) throw std::runtime_error(o->plan + ": the plan has no home row to place it in the logs' frame");
+      std::vector<Eigen::Vector3d> vertices;
+      for (const auto& r : area.regions)
+        for (const auto& q : r.outer) vertices.emplace_back(q.x() - area.home->x(), q.y() - area.home->y(), 0.0);
+      for (std::size_t i = 0; i < logs.size(); ++i) {
+        const auto p = en::predictFromPlan(model, v, logs[i], vertices, o->plan_settings);
+        const auto c = en::comparePlan(reps[i], p);
+        plans.push_back({{"source", reps[i].source},
+                         {"energy_j", p.energy_j},
+                         {"time_s", p.time_s},
+                         {"distance_m", p.distance_m},
+                         {"measured_distance_m", loggedDistance(logs[i])},
+                         {"legs", p.leg_speed.size()},
+                         {"snapped_waypoints", p.snapped},
+                         {"corner_speed_fraction", o->plan_settings.corner_speed_fraction},
+                         {"measured_j", c.measured_j},
+                         {"measured_time_s", c.measured_time_s},
+                         {"replay_j", c.replay_j},
+                         {"kinematics_error_j", c.kinematicsErrorJ()},
+                         {"physics_error_j", c.physicsErrorJ()}});
+      }
+    }
     if (!o->samples_out.empty()) {
       std::ostringstream os;
       os << "log,time_s,phase,leg,measured_w,modelled_w,speed_mps,climb_rate_mps,acceleration_mps2,heading_rad\n";
@@ -139,13 +185,19 @@ void registerReplay(CLI::App& app) {
       printJson({{"effects", model.effectNames()},
                  {"metrics", metricsJson(m)},
                  {"flights", flightsJson(reps)},
-                 {"residuals", residualsJson(en::residualTables(reps))}});
+                 {"residuals", residualsJson(en::residualTables(reps))},
+                 {"plan_prediction", o->plan.empty() ? json(nullptr) : plans}});
       return;
     }
     printMetrics("model " + o->effects, m);
     for (const auto& r : reps) {
       std::cout << r.source << ": measured " << r.flight.measured_j << " J, modelled " << r.flight.modelled_j << " J ("
                 << r.flight.errorPct() << " %), " << r.legs.size() << " legs\n";
+    }
+    for (const auto& p : plans) {
+      std::cout << p["source"].get<std::string>() << ": from the plan " << p["energy_j"].get<double>() << " J in "
+                << p["time_s"].get<double>() << " s (kinematics error " << p["kinematics_error_j"].get<double>()
+                << " J, physics error " << p["physics_error_j"].get<double>() << " J)\n";
     }
   });
 }

@@ -1,5 +1,7 @@
 // The measured IRIS+ flights (../shared/data/iris-flights): every log reads without rejection,
 // and the diagnose / fit commands print the JSON contract of issue 6 with errors that fall.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -57,4 +59,35 @@ TEST(IrisFlights, FitJsonContractAndHeldOutFlightImproves) {
     for (const char* k : {"rmse_w", "energy_error_pct", "leg_energy_mape_pct"}) EXPECT_TRUE(j.at(side).contains(k));
   }
   EXPECT_LT(j.at("test").at("rmse_w").get<double>(), j.at("test").at("before").at("rmse_w").get<double>());
+}
+
+// Issue 6, "Real flights": each flight predicted from its plan (leg end points snapped to the
+// plan's vertices, stop-to-stop with turns in place, or slowing at corners), with the error split
+// into kinematics (plan - replay) and physics (replay - measured). Numbers: docs/validation.md.
+TEST(IrisFlights, PlanPredictionSplitsKinematicsAndPhysics) {
+  for (const char* corner : {"0", "0.5"}) {
+    const auto r = test::run(test::cliBinary() + " replay --vehicle " + test::sourcePath("data/vehicles/iris.json") +
+                             logArgs() + " --plan " + test::sharedData("iris-flights/plan__real_flight_area.waypoints") +
+                             " --plan-corner-fraction " + corner + " --json 2>/dev/null");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    const auto& p = j.at("plan_prediction");
+    ASSERT_EQ(p.size(), 3u);
+    for (const auto& f : p) {
+      const double e = f.at("energy_j"), t = f.at("time_s"), meas = f.at("measured_j"), rep = f.at("replay_j");
+      ASSERT_TRUE(std::isfinite(e) && std::isfinite(t)) << f;
+      // Stop-to-stop overestimates (up to +30 %), slowing to half speed underestimates (down to
+      // -25 %); beyond 0.6..1.45 x measured the plan would be wrong, not the corners.
+      EXPECT_GT(e, 0.6 * meas) << f;
+      EXPECT_LT(e, 1.45 * meas) << f;
+      // The planned path follows the logged one within the simplification tolerance.
+      EXPECT_NEAR(f.at("distance_m").get<double>(), f.at("measured_distance_m").get<double>(),
+                  0.1 * f.at("measured_distance_m").get<double>());
+      EXPECT_GT(t, 0.6 * f.at("measured_time_s").get<double>()) << f;
+      EXPECT_GT(f.at("legs").get<int>(), 10) << f;
+      // The split adds up: measured + physics + kinematics = plan.
+      EXPECT_NEAR(meas + f.at("physics_error_j").get<double>() + f.at("kinematics_error_j").get<double>(), e, 1e-6 * e);
+      EXPECT_NEAR(f.at("kinematics_error_j").get<double>(), e - rep, 1e-6 * e);
+    }
+  }
 }
