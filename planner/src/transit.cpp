@@ -1,5 +1,7 @@
 #include "wattswath/planner/transit.hpp"
 
+#include "wattswath/geometry/check.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,19 +50,7 @@ using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS
 
 }  // namespace
 
-bool insideRing(const Point& p, const Ring& ring) {
-  bool in = false;
-  const size_t n = ring.size();
-  for (size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Point& a = ring[i];
-    const Point& b = ring[j];
-    if ((a.y() > p.y()) != (b.y() > p.y())) {
-      const double x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
-      if (p.x() < x) in = !in;
-    }
-  }
-  return in;
-}
+bool insideRing(const Point& p, const Ring& ring) { return geometry::insideRing(ring, p, 0.0); }
 
 bool segmentEntersRing(const Point& a, const Point& b, const Ring& ring) {
   const size_t n = ring.size();
