@@ -11,6 +11,7 @@
 #include "wattswath/energy/diagnose.hpp"
 #include "wattswath/energy/log_io.hpp"
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/survey_area.hpp"
 
 using namespace wattswath::energy;
 using wattswath::test::readAll;
@@ -31,6 +32,15 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 std::string vehicleError(const std::string& text) {
   try {
     parseVehicle(text, "v.json");
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string areaError(const std::string& text, const std::string& source) {
+  try {
+    wattswath::geometry::parseSurveyArea(text, source);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -129,4 +139,19 @@ TEST(Regression, PathFirstRowOfNumbersSkippedAsHeader) {
                           dir + "/out.csv"});
   EXPECT_EQ(ok.status, 0) << ok.err;
   std::filesystem::remove_all(dir);
+}
+
+// The KML tag "</>" both starts and ends with its one '/': it was taken as closing and
+// self-closing, the name "" lost its last character (pop_back on an empty string) and the
+// next substr read far past the stack buffer (fuzz_area, ASan stack-buffer-overflow).
+TEST(Regression, KmlEmptyClosingTagOverflowedTheStack) {
+  const std::string fuzzed = readAll(sourcePath("tests/data/bad/geo_kml_empty_closing_tag.kml"));
+  std::string m = areaError(fuzzed, "f.kml");
+  EXPECT_NE(m.find("f.kml: line 1: tag </> has no element name"), std::string::npos) << m;
+  m = areaError("<kml>\n<Placemark>\n</>\n</Placemark></kml>", "g.kml");
+  EXPECT_NE(m.find("g.kml: line 3: tag </> has no element name"), std::string::npos) << m;
+  for (const char* tag : {"<>", "< />", "</ >"}) {
+    m = areaError(std::string("<kml>") + tag + "</kml>", "h.kml");
+    EXPECT_NE(m.find("h.kml: line 1: tag " + std::string(tag) + " has no element name"), std::string::npos) << m;
+  }
 }

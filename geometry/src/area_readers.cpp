@@ -300,11 +300,16 @@ RawArea parseKml(const std::string& text, const std::string& source) {
     if (gt == std::string::npos) fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": unterminated tag");
     std::string tag = text.substr(lt + 1, gt - lt - 1);
     cur.pos = textStart = gt + 1;
-    if (tag.empty() || tag[0] == '?' || tag[0] == '!') continue;
-    const bool closing = tag[0] == '/';
-    const bool selfClosing = tag.back() == '/';
-    if (closing) tag = tag.substr(1);
+    if (!tag.empty() && (tag[0] == '?' || tag[0] == '!')) continue;
+    // "</>" is both: it starts and ends with the one '/', so decide on the closing slash first.
+    const bool closing = !tag.empty() && tag[0] == '/';
+    if (closing) tag.erase(0, 1);
+    const bool selfClosing = !closing && !tag.empty() && tag.back() == '/';
     if (selfClosing) tag.pop_back();
+    if (trim(tag).empty()) {
+      fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": tag <" + text.substr(lt + 1, gt - lt - 1) +
+                       "> has no element name");
+    }
     const size_t sp = tag.find_first_of(" \t\r\n");
     const std::string name = localName(trim(tag.substr(0, sp)));
     if (selfClosing) continue;
