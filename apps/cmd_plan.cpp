@@ -99,17 +99,16 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
     return report::PlanCandidate{c.pattern, c.sweep_angle_deg * M_PI / 180.0, c.flown.energy, chosen};
   };
   d.candidates.push_back(cand(r.plan, true));
+  for (const auto& a : r.sweep_scan)
+    if (std::isfinite(a.energy_j)) d.candidates.push_back({"boustrophedon, one angle", a.sweep_angle_deg * M_PI / 180.0, a.energy_j, false});
+  for (const auto& cp : r.plan.cell_plans) d.cells.push_back({cp.pattern, cp.sweep_angle_deg * M_PI / 180.0, cp.energy_j, cp.area_m2});
   d.baselines.push_back({"shortest path", r.shortest_path.flown.energy, r.shortest_path.flown.length,
                          r.shortest_path.flown.time});
   d.baselines.push_back({"ground-station default", r.ground_station_default.flown.energy,
                          r.ground_station_default.flown.length, r.ground_station_default.flown.time});
-  d.candidates.push_back(cand(r.shortest_path, false));
-  d.candidates.push_back(cand(r.ground_station_default, false));
-  if (r.best_spiral) {
+  if (r.best_spiral)
     d.baselines.push_back({"best spiral", r.best_spiral->flown.energy, r.best_spiral->flown.length,
                            r.best_spiral->flown.time});
-    d.candidates.push_back(cand(*r.best_spiral, false));
-  }
   if (v.battery) {
     std::vector<energy::PowerStep> steps;
     for (size_t i = 0; i < f.leg_time.size(); ++i)
@@ -152,6 +151,23 @@ nlohmann::json candidateJson(const pl::PlanCandidate& c, double plan_energy) {
           {"sweep_angle_deg", c.sweep_angle_deg},
           {"coverage_pct", c.coverage_pct},
           {"saving_pct", c.flown.energy > 0 ? 100.0 * (c.flown.energy - plan_energy) / c.flown.energy : 0.0}};
+}
+
+/// Per-cell choices of the plan (empty unless the per-cell search produced the plan).
+nlohmann::json cellPlansJson(const std::vector<pl::CellPlan>& cells) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& c : cells)
+    a.push_back({{"pattern", c.pattern}, {"sweep_angle_deg", c.sweep_angle_deg}, {"energy_j", c.energy_j}, {"area_m2", c.area_m2}});
+  return a;
+}
+
+/// The one-angle boustrophedon energy at every searched sweep angle (null where none was found).
+nlohmann::json sweepScanJson(const std::vector<pl::AngleScore>& scan) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& s : scan)
+    a.push_back({{"sweep_angle_deg", s.sweep_angle_deg},
+                 {"energy_j", std::isfinite(s.energy_j) ? nlohmann::json(s.energy_j) : nlohmann::json(nullptr)}});
+  return a;
 }
 
 nlohmann::json batteryJson(const std::optional<pl::BatteryUse>& b) {
@@ -294,6 +310,8 @@ void runPlan(const PlanOpts& o) {
       {"corner_strategy", o.corners},
       {"corners", {{"sharp", r.plan.flown.sharp_corners}, {"rounded", r.plan.flown.rounded_corners}}},
       {"cells", r.plan.cells},
+      {"cell_plans", cellPlansJson(r.plan.cell_plans)},
+      {"sweep_scan", sweepScanJson(r.sweep_scan)},
       {"candidates", r.candidates},
       {"baselines",
        {{"shortest_path", candidateJson(r.shortest_path, e)},

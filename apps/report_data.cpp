@@ -117,22 +117,27 @@ report::SpeedReportData speedReportData(const std::vector<std::pair<std::string,
 report::ValidationReportData validationFromReplays(const std::vector<en::LogReplay>& replays) {
   report::ValidationReportData d;
   if (replays.empty()) return d;
-  const auto& r = replays.front();
-  for (const auto& s : r.samples) {
-    d.t.push_back(s.t);
-    d.measured_power.push_back(s.measured_w);
-    d.modelled_power.push_back(s.modelled_w);
-    d.speed.push_back(s.speed);
-    d.climb_rate.push_back(s.climb_rate);
-    d.heading.push_back(s.heading);
-  }
-  // Phase spans: runs of equal phase, each ending where the next begins.
-  for (std::size_t i = 0; i < r.samples.size();) {
-    std::size_t j = i;
-    while (j + 1 < r.samples.size() && r.samples[j + 1].phase == r.samples[i].phase) ++j;
-    const double t1 = j + 1 < r.samples.size() ? r.samples[j + 1].t : r.samples[j].t;
-    d.phases.push_back({r.samples[i].t, t1, en::toString(r.samples[i].phase)});
-    i = j + 1;
+  // Every log's samples one after the other (residuals pool them; power over time per log).
+  for (std::size_t k = 0; k < replays.size(); ++k) {
+    const auto& r = replays[k];
+    d.log_names.push_back(r.source);
+    d.log_start.push_back(d.t.size());
+    for (const auto& s : r.samples) {
+      d.t.push_back(s.t);
+      d.measured_power.push_back(s.measured_w);
+      d.modelled_power.push_back(s.modelled_w);
+      d.speed.push_back(s.speed);
+      d.climb_rate.push_back(s.climb_rate);
+      d.heading.push_back(s.heading);
+    }
+    // Phase spans: runs of equal phase, each ending where the next begins.
+    for (std::size_t i = 0; i < r.samples.size();) {
+      std::size_t j = i;
+      while (j + 1 < r.samples.size() && r.samples[j + 1].phase == r.samples[i].phase) ++j;
+      const double t1 = j + 1 < r.samples.size() ? r.samples[j + 1].t : r.samples[j].t;
+      d.phases.push_back({r.samples[i].t, t1, en::toString(r.samples[i].phase), k});
+      i = j + 1;
+    }
   }
   for (std::size_t k = 0; k < replays.size(); ++k) {
     for (std::size_t i = 0; i < replays[k].legs.size(); ++i) {
@@ -142,12 +147,14 @@ report::ValidationReportData validationFromReplays(const std::vector<en::LogRepl
       d.legs.push_back({label, l.measured_j, l.modelled_j});
     }
   }
-  d.facts.push_back({"time series", r.source + (replays.size() > 1 ? " (first of " + std::to_string(replays.size()) +
-                                                                         " logs; leg energies from all)"
-                                                                   : std::string())});
-  d.facts.push_back({"whole flight", "measured " + report::formatNumber(r.flight.measured_j / 1000.0, 2) +
-                                         " kJ, modelled " + report::formatNumber(r.flight.modelled_j / 1000.0, 2) +
-                                         " kJ (" + report::formatNumber(r.flight.errorPct(), 1) + " %)"});
+  if (replays.size() > 1)
+    d.facts.push_back({"logs", std::to_string(replays.size()) +
+                                   " (power over time for each; residuals and leg energies pool them)"});
+  for (const auto& r : replays)
+    d.facts.push_back({replays.size() > 1 ? "whole flight, " + r.source : std::string("whole flight"),
+                       "measured " + report::formatNumber(r.flight.measured_j / 1000.0, 2) + " kJ, modelled " +
+                           report::formatNumber(r.flight.modelled_j / 1000.0, 2) + " kJ (" +
+                           report::formatNumber(r.flight.errorPct(), 1) + " %)"});
   return d;
 }
 

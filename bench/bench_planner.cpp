@@ -59,10 +59,11 @@ planner::SurveyProblem irisLike() {
   return p;
 }
 
-void run(benchmark::State& state, const planner::SurveyProblem& p, bool energy_search) {
+void run(benchmark::State& state, const planner::SurveyProblem& p, bool energy_search, bool per_cell = true) {
   const auto v = vehicle();
   const auto model = energy::marinsModel(v);
   planner::PlannerSettings ps;
+  ps.per_cell = per_cell;
   if (!energy_search) {  // baseline: one angle (longest edge), greedy order, length objective only
     ps.coarse_step_deg = 90.0;
     ps.fine_step_deg = 90.0;
@@ -115,6 +116,11 @@ void BM_Field1km2_3holes_EnergySearch(benchmark::State& s) { run(s, field(1000, 
 void BM_Field1km2_3holes_Baseline(benchmark::State& s) { run(s, field(1000, 3, 1), false); }
 void BM_Field100ha_10holes_EnergySearch(benchmark::State& s) { run(s, field(1000, 10, 2), true); }
 void BM_Field100ha_10holes_Baseline(benchmark::State& s) { run(s, field(1000, 10, 2), false); }
+// The energy search without the per-cell stage (one sweep angle for the whole area): what the
+// per-cell search (each cell its own angle or a spiral) costs on top.
+void BM_IrisArea_OneAngleSearch(benchmark::State& s) { run(s, irisLike(), true, false); }
+void BM_Field1km2_3holes_OneAngleSearch(benchmark::State& s) { run(s, field(1000, 3, 1), true, false); }
+void BM_Field100ha_10holes_OneAngleSearch(benchmark::State& s) { run(s, field(1000, 10, 2), true, false); }
 
 }  // namespace
 
@@ -126,6 +132,9 @@ BENCHMARK(BM_Field1km2_3holes_EnergySearch)->Unit(benchmark::kMillisecond)->Meas
 BENCHMARK(BM_Field1km2_3holes_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Field100ha_10holes_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Field100ha_10holes_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_IrisArea_OneAngleSearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Field1km2_3holes_OneAngleSearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Field100ha_10holes_OneAngleSearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Scaling_Holes)->Arg(0)->Arg(1)->Arg(3)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Scaling_Vertices)->Arg(8)->Arg(32)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK_MAIN();

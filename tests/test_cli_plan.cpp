@@ -49,7 +49,18 @@ void expectError(const std::string& args, const std::string& needle) {
 void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
   for (const char* k : {"energy_j", "time_s", "length_m", "sweep_angle_deg", "coverage_pct", "lower_bound_j"})
     EXPECT_TRUE(j.contains(k) && j.at(k).is_number()) << k;
-  EXPECT_TRUE(j.at("pattern") == "boustrophedon" || j.at("pattern") == "spiral") << j.at("pattern");
+  EXPECT_TRUE(j.at("pattern") == "boustrophedon" || j.at("pattern") == "spiral" || j.at("pattern") == "mixed")
+      << j.at("pattern");
+  // Every angle of the one-angle search, and the per-cell choices when the per-cell search won.
+  EXPECT_GE(j.at("sweep_scan").size(), 18u);
+  for (const auto& a : j.at("sweep_scan")) EXPECT_TRUE(a.at("sweep_angle_deg").is_number());
+  if (j.at("pattern") == "mixed") {
+    EXPECT_GE(j.at("cell_plans").size(), 2u);
+  }
+  for (const auto& c : j.at("cell_plans")) {
+    EXPECT_TRUE(c.at("pattern") == "boustrophedon" || c.at("pattern") == "spiral");
+    EXPECT_GT(c.at("energy_j").get<double>(), 0.0);
+  }
   EXPECT_GE(j.at("coverage_pct").get<double>(), 99.0);
   const double e = j.at("energy_j").get<double>();
   EXPECT_GT(e, 0.0);

@@ -348,3 +348,54 @@ TEST(JoinRoutes, TransitsAvoidHoles) {
   EXPECT_TRUE(g::checkPath(joined, area).empty());
   EXPECT_GE(g::checkCoverage(area, {joined}, s.spacing).fraction(), kMinCoverage);
 }
+
+TEST(ConvexPartition, SplitsAnLIntoTwoConvexPiecesOfTheSameArea) {
+  const g::Ring l = {{0, 0}, {400, 0}, {400, 80}, {80, 80}, {80, 400}, {0, 400}};
+  const auto parts = g::convexPartition(l);
+  ASSERT_EQ(parts.size(), 2u);  // optimal: one cut at the reflex vertex
+  double sum = 0.0;
+  for (const auto& p : parts) {
+    EXPECT_GT(g::signedArea(p), 0.0);  // counter-clockwise
+    // Convex: every turn to the left.
+    for (size_t i = 0; i < p.size(); ++i) {
+      const g::Point u = p[(i + 1) % p.size()] - p[i], v = p[(i + 2) % p.size()] - p[(i + 1) % p.size()];
+      EXPECT_GE(u.x() * v.y() - u.y() * v.x(), -1e-9);
+    }
+    sum += g::signedArea(p);
+  }
+  EXPECT_NEAR(sum, g::signedArea(l), 1e-9);
+}
+
+TEST(ConvexPartition, ConvexClockwiseAndCollinearInputs) {
+  // A clockwise square with a collinear and a repeated vertex: one counter-clockwise piece of 4.
+  const g::Ring sq = {{0, 0}, {0, 10}, {10, 10}, {10, 5}, {10, 5}, {10, 0}};
+  const auto parts = g::convexPartition(sq);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts[0].size(), 4u);
+  EXPECT_NEAR(g::signedArea(parts[0]), 100.0, 1e-9);
+  // A random star-shaped ring: pieces tile it.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.3, 1.0);
+  g::Ring star;
+  for (int i = 0; i < 30; ++i) {
+    const double a = 2 * M_PI * i / 30, r = 100 * u(rng);
+    star.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  double sum = 0.0;
+  for (const auto& p : g::convexPartition(star)) sum += g::signedArea(p);  // 30 vertices: Hertel-Mehlhorn
+  EXPECT_NEAR(sum, g::signedArea(star), 1e-6);
+}
+
+TEST(ConvexPartition, BadRingsGiveClearErrors) {
+  auto expectThrow = [](const g::Ring& r, const std::string& needle) {
+    try {
+      g::convexPartition(r);
+      ADD_FAILURE() << "no error for " << needle;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  expectThrow({{0, 0}, {1, 0}, {2, 0}}, "at least 3");
+  expectThrow({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, "not simple");
+  expectThrow({{0, 0}, {NAN, 0}, {0, 1}}, "not finite");
+}

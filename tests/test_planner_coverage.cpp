@@ -177,6 +177,64 @@ TEST(Planner, SeededRandomAreasWithHolesAreValid) {
   }
 }
 
+TEST(Planner, PerCellSearchSweepsEachArmOfAnLAlongItself) {
+  // An L of two long arms, 400 m x 80 m along east and 80 m x 400 m along north: one sweep angle
+  // for both flies one of the arms across, in many 80 m lines; per cell, each arm along its length.
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  SurveyProblem pr;
+  pr.area.outer = {{0, 0}, {400, 0}, {400, 80}, {80, 80}, {80, 400}, {0, 400}};
+  pr.spacing = pr.footprint = 20.0;
+  pr.home = {-10, -10};
+  PlannerSettings one;
+  one.per_cell = false;
+  const auto r1 = planCoverage(pr, v, model, one);
+  const auto r = planCoverage(pr, v, model);
+  expectValid(pr, r);
+  expectValid(pr, r1);
+  EXPECT_TRUE(r1.plan.cell_plans.empty());
+  // The per-cell plan wins here (over the best one-angle boustrophedon by far, over the spiral the
+  // one-angle search falls back to by a little), with the arms swept near 0 deg and near 90 deg.
+  ASSERT_GE(r.plan.cell_plans.size(), 2u);
+  EXPECT_LT(r.plan.flown.energy, r1.plan.flown.energy);
+  double one_angle = std::numeric_limits<double>::infinity();
+  for (const auto& a : r1.sweep_scan) one_angle = std::min(one_angle, a.energy_j);
+  EXPECT_LT(r.plan.flown.energy, 0.8 * one_angle) << r.plan.flown.energy << " vs " << one_angle;
+  bool along_east = false, along_north = false;
+  double cell_area = 0.0;
+  for (const auto& c : r.plan.cell_plans) {
+    cell_area += c.area_m2;
+    EXPECT_GT(c.energy_j, 0.0);
+    if (c.pattern != "boustrophedon") continue;
+    along_east |= c.sweep_angle_deg < 10.0 || c.sweep_angle_deg > 170.0;
+    along_north |= std::abs(c.sweep_angle_deg - 90.0) < 10.0;
+  }
+  EXPECT_TRUE(along_east && along_north);
+  EXPECT_NEAR(cell_area, geometry::area(pr.area), 1e-6 * geometry::area(pr.area));  // the cells tile the area
+}
+
+TEST(Planner, SweepScanHasEveryAngleSearched) {
+  const auto v = iris();
+  const auto pr = rectangle();
+  PlannerSettings ps;
+  ps.per_cell = false;
+  const auto r = planCoverage(pr, v, energy::marinsModel(v), ps);
+  // 18 coarse angles (10 deg) and 2 x 18 refined ones (1 deg) around the two best.
+  EXPECT_EQ(r.sweep_scan.size(), 18u + 36u);
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < r.sweep_scan.size(); ++i) {
+    EXPECT_GE(r.sweep_scan[i].sweep_angle_deg, 0.0);
+    EXPECT_LT(r.sweep_scan[i].sweep_angle_deg, 180.0);
+    if (i > 0) {
+      EXPECT_GE(r.sweep_scan[i].sweep_angle_deg, r.sweep_scan[i - 1].sweep_angle_deg);
+    }
+    best = std::min(best, r.sweep_scan[i].energy_j);
+  }
+  // The one-angle plan is the best scanned angle (its coverage holds with the arcs it was scored with).
+  ASSERT_EQ(r.plan.pattern, "boustrophedon");
+  EXPECT_NEAR(r.plan.flown.energy, best, 1e-6 * best);
+}
+
 TEST(Planner, BadInputGivesClearErrors) {
   const auto v = iris();
   auto pr = rectangle();

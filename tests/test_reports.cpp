@@ -58,6 +58,27 @@ TEST(Reports, ValidationReportHasPowerResidualsLegsStaircaseDiagnosis) {
   EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
 }
 
+TEST(Reports, ValidationReportDrawsPowerOverTimeForEveryLog) {
+  // Two logs one after the other: one power figure each (its own phases), residuals pooled.
+  auto d = sampleValidation();
+  const std::size_t half = d.t.size() / 2;
+  d.log_names = {"first.csv", "second.csv"};
+  d.log_start = {0, half};
+  for (auto& p : d.phases) p.log = p.t0 >= d.t[half] ? 1 : 0;
+  const auto r = wr::validationReport(d);
+  EXPECT_EQ(checkFigures(r), 7);  // 2 power, 3 residuals, legs, staircase
+  const std::string html = r.html();
+  EXPECT_NE(html.find("Measured and modelled electrical power: first.csv"), std::string::npos);
+  EXPECT_NE(html.find("Measured and modelled electrical power: second.csv"), std::string::npos);
+  EXPECT_NE(html.find("samples of 2 logs"), std::string::npos);
+  auto bad = d;
+  bad.log_start = {0, d.t.size() + 1};
+  EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
+  bad = d;
+  bad.log_names = {"only-one.csv"};
+  EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
+}
+
 TEST(Reports, TurnAndSpeedReports) {
   const auto t = wr::turnReport(sampleTurns());
   EXPECT_EQ(checkFigures(t), 2);

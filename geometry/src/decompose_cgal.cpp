@@ -20,17 +20,27 @@ using EPolygon = CGAL::Polygon_2<EK>;
 using EPolygonWithHoles = CGAL::Polygon_with_holes_2<EK>;
 using IPolygon = CGAL::Polygon_2<IK>;
 
+// Repeated vertices (also the last equal to the first) are dropped: a zero-length edge breaks
+// CGAL's sweeps (a segmentation fault in Release, where its preconditions are not checked).
 EPolygon toExact(const Ring& r, bool ccw) {
   EPolygon p;
-  for (const auto& v : r) p.push_back(EK::Point_2(v.x(), v.y()));
+  for (const auto& v : r) {
+    const EK::Point_2 q(v.x(), v.y());
+    if (p.size() == 0 || q != *(p.vertices_end() - 1)) p.push_back(q);
+  }
+  while (p.size() > 1 && *p.vertices_begin() == *(p.vertices_end() - 1)) p.erase(p.vertices_end() - 1);
   if (p.size() >= 3 && (p.orientation() == CGAL::COUNTERCLOCKWISE) != ccw) p.reverse_orientation();
   return p;
 }
 
+// Exact vertices rounded to doubles; vertices that round onto their predecessor are dropped.
 Ring toRing(const EPolygon& p) {
   Ring r;
-  for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it)
-    r.emplace_back(CGAL::to_double(it->x()), CGAL::to_double(it->y()));
+  for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it) {
+    const Point q(CGAL::to_double(it->x()), CGAL::to_double(it->y()));
+    if (r.empty() || q != r.back()) r.push_back(q);
+  }
+  while (r.size() > 1 && r.front() == r.back()) r.pop_back();
   return r;
 }
 

@@ -23,6 +23,10 @@ constexpr double kDeg = M_PI / 180.0;
 constexpr int kStopTableSize = 64;       // samples of the stop-to-stop leg energy table (log spaced)
 constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage estimate
 constexpr int kMaxSpiralStarts = 32;         // start vertices tried per spiral cell (evenly spread)
+constexpr size_t kMaxSpiralKeep = 6;
+constexpr size_t kFinishBest = 4;
+constexpr size_t kMaxSpiralOrderCandidates = 8;  // cheapest spiral starts per cell the whole-area spiral orders
+constexpr double kKeepWithin = 1.10;         // a cell keeps alternatives costing at most this times its best            // best-ranked angles flown in full before choosing         // cheapest spiral candidates a cell keeps for the order search
 constexpr double kMaxRoundedTurn = 3.0;      // [rad] sharper corners (a spiral's out-and-back spikes) are stops
 constexpr double kMinCoveragePct = 99.0;     // [%] coverage a plan must keep (issue 5: >= 99 %)
 
@@ -50,6 +54,19 @@ struct Context {
 
 Point rot(const Point& p, double c, double s) { return {c * p.x() + s * p.y(), -s * p.x() + c * p.y()}; }
 Point unrot(const Point& p, double c, double s) { return {c * p.x() - s * p.y(), s * p.x() + c * p.y()}; }
+
+double normDeg(double rad) {
+  double d = std::fmod(rad / kDeg, 180.0);
+  if (d < 0) d += 180.0;
+  return d;
+}
+
+// Largest tangent of an arc at a corner of deflection `theta` that stays within `margin` of the vertex.
+double tangentWithin(double theta, double margin) {
+  const double h = 0.5 * std::abs(theta);
+  if (h < 1e-9 || margin <= 0.0) return 0.0;
+  return margin * std::tan(h) / (1.0 / std::cos(h) - 1.0);
+}
 
 // x of the crossings of horizontal line y with `ring` (half-open rule).
 void crossings(const Ring& ring, double y, std::vector<double>& xs) {
@@ -275,6 +292,7 @@ struct AngleResult {
   double score = kInf;  // energy or length, by objective
   Route route;
   int cells = 0;
+  std::vector<int> chosen;  // candidate chosen per visited cell, in flight order (index into the input candidates)
 };
 
 double polylineCost(const std::vector<Point>& pts, Objective obj, const StopTable& stop, const RouteScorer& scorer) {
@@ -291,11 +309,11 @@ double polylineCost(const std::vector<Point>& pts, Objective obj, const StopTabl
 }
 
 AngleResult assemble(const Context& ctx, std::vector<Route> cand, GtspInstance g, AngleResult res, RouteScorer& scorer,
-                     const StopTable& stop, Objective obj, int exact_max_cells);
+                     const StopTable& stop, Objective obj, int exact_max_cells, bool also_length_order = true);
 
 // Boustrophedon at one angle: cells, 4 candidates each, ordered by GTSP, assembled home to home.
 AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer, const StopTable& stop, Objective obj,
-                          int exact_max_cells) {
+                          int exact_max_cells, bool also_length_order = false) {
   AngleResult res;
   res.angle = angle;
   double first_y = 0.0;
@@ -322,17 +340,19 @@ AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer,
   }
   if (cand.empty()) return res;
   res.cells = cluster;
-  return assemble(ctx, std::move(cand), std::move(g), res, scorer, stop, obj, exact_max_cells);
+  return assemble(ctx, std::move(cand), std::move(g), res, scorer, stop, obj, exact_max_cells, also_length_order);
 }
 
 // Orders per-cell candidates (`g.cluster` / `g.cost` filled, one route each in `cand`) by GTSP
 // and joins them from home back to home with transits; fills res.route and res.score.
 AngleResult assemble(const Context& ctx, std::vector<Route> cand, GtspInstance g, AngleResult res, RouteScorer& scorer,
-                     const StopTable& stop, Objective obj, int exact_max_cells) {
+                     const StopTable& stop, Objective obj, int exact_max_cells, bool also_length_order) {
   // Each candidate reversed is also a candidate (same internal cost, swapped ends), unless a
   // candidate of the cell already runs between the same two ends (the reverse of a zigzag from one
   // corner is usually the zigzag from its end corner): the order search then has half the nodes.
   const size_t base = cand.size();
+  std::vector<int> origin(base);
+  for (size_t i = 0; i < base; ++i) origin[i] = static_cast<int>(i);
   for (size_t i = 0; i < base; ++i) {
     const Point& from = cand[i].points.back();
     const Point& to = cand[i].points.front();
@@ -342,6 +362,7 @@ AngleResult assemble(const Context& ctx, std::vector<Route> cand, GtspInstance g
                   g.cost[k] <= g.cost[i];
     if (same_ends) continue;
     cand.push_back(reversed(cand[i]));
+    origin.push_back(static_cast<int>(i));
     g.cluster.push_back(g.cluster[i]);
     g.cost.push_back(g.cost[i]);
   }
@@ -361,27 +382,43 @@ AngleResult assemble(const Context& ctx, std::vector<Route> cand, GtspInstance g
     exit[i] = indexOf(cand[i].points.back());
   }
   const int m = static_cast<int>(ends.size());
-  Eigen::MatrixXd between = Eigen::MatrixXd::Zero(m, m);
   const auto routes = ctx.router->routeAll(ends);
-  for (int p = 0; p < m; ++p)
-    for (int q = p + 1; q < m; ++q)
-      between(p, q) = between(q, p) = polylineCost(routes[static_cast<size_t>(p) * m + q], obj, stop, scorer);
-  g.transit = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j)
-      if (i != j || i == n) g.transit(i, j) = between(exit[i], entry[j]);
-  const GtspTour tour = solveGtsp(g, exact_max_cells);
-  Route full;
-  full.points.push_back(ctx.problem->home);
-  full.max_tangent.push_back(0.0);
-  for (int node : tour.nodes) {
-    const Route& r = cand[node];
-    moveTo(ctx, full, r.points.front(), LegRole::Transit, r.max_tangent.front());
-    for (size_t i = 1; i < r.points.size(); ++i) full.add(r.points[i], r.roles[i - 1], r.max_tangent[i]);
+  // The order search works on estimates (candidates flown alone from rest to rest, transits
+  // stop to stop), so for the energy objective the order that is shortest is also built and the
+  // one whose joined route really costs less energy is kept.
+  std::vector<Objective> orders{obj};
+  if (obj == Objective::Energy && also_length_order) orders.push_back(Objective::Length);
+  for (Objective order : orders) {
+    Eigen::MatrixXd between = Eigen::MatrixXd::Zero(m, m);
+    for (int p = 0; p < m; ++p)
+      for (int q = p + 1; q < m; ++q)
+        between(p, q) = between(q, p) = polylineCost(routes[static_cast<size_t>(p) * m + q], order, stop, scorer);
+    GtspInstance go = g;
+    if (order != obj)
+      for (int i = 0; i < n; ++i) go.cost[static_cast<size_t>(i)] = cand[static_cast<size_t>(i)].length();
+    go.transit = Eigen::MatrixXd::Zero(n + 1, n + 1);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j)
+        if (i != j || i == n) go.transit(i, j) = between(exit[i], entry[j]);
+    const GtspTour tour = solveGtsp(go, exact_max_cells);
+    Route full;
+    std::vector<int> chosen;
+    full.points.push_back(ctx.problem->home);
+    full.max_tangent.push_back(0.0);
+    for (int node : tour.nodes) {
+      chosen.push_back(origin[static_cast<size_t>(node)]);
+      const Route& r = cand[node];
+      moveTo(ctx, full, r.points.front(), LegRole::Transit, r.max_tangent.front());
+      for (size_t i = 1; i < r.points.size(); ++i) full.add(r.points[i], r.roles[i - 1], r.max_tangent[i]);
+    }
+    moveTo(ctx, full, ctx.problem->home, LegRole::Transit, 0.0);
+    const double score = obj == Objective::Length ? full.length() : scorer.energy(full);
+    if (score < res.score) {
+      res.score = score;
+      res.route = std::move(full);
+      res.chosen = std::move(chosen);
+    }
   }
-  moveTo(ctx, full, ctx.problem->home, LegRole::Transit, 0.0);
-  res.route = full;
-  res.score = obj == Objective::Length ? full.length() : scorer.energy(full);
   return res;
 }
 
@@ -412,8 +449,10 @@ std::vector<AngleResult> evaluateAngles(const Context& ctx, const std::vector<do
 }
 
 // Coarse grid over [0, 180) then a fine grid around the best coarse angles.
-AngleResult searchAngles(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
-                         const StopTable& stop, Objective obj, const PlannerSettings& ps, int* count) {
+// Every evaluated angle (coarse and refined), best score first.
+std::vector<AngleResult> searchAngles(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
+                                      const StopTable& stop, Objective obj, const PlannerSettings& ps, int* count,
+                                      std::vector<AngleScore>* scan = nullptr) {
   std::vector<double> coarse;
   for (double a = 0.0; a < 180.0 - 1e-9; a += ps.coarse_step_deg) coarse.push_back(a * kDeg);
   auto res = evaluateAngles(ctx, coarse, model, ss, stop, obj, ps.threads, ps.exact_max_cells);
@@ -427,31 +466,19 @@ AngleResult searchAngles(const Context& ctx, const energy::EnergyModel& model, c
   }
   auto more = evaluateAngles(ctx, fine, model, ss, stop, obj, ps.threads, ps.exact_max_cells);
   *count += static_cast<int>(more.size());
-  for (auto& r : more)
-    if (r.score < res.front().score) res.front() = std::move(r);
-  return res.front();
+  if (scan) {
+    for (const auto* list : {&res, &more})
+      for (const auto& r : *list) scan->push_back({normDeg(r.angle), r.score});
+    std::sort(scan->begin(), scan->end(), [](const auto& a, const auto& b) { return a.sweep_angle_deg < b.sweep_angle_deg; });
+  }
+  for (auto& r : more) res.push_back(std::move(r));
+  std::stable_sort(res.begin(), res.end(), [](const auto& a, const auto& b) { return a.score < b.score; });
+  return res;
 }
 
-double normDeg(double rad) {
-  double d = std::fmod(rad / kDeg, 180.0);
-  if (d < 0) d += 180.0;
-  return d;
-}
-
-// Largest tangent of an arc at a corner of deflection `theta` that stays within `margin` of the vertex.
-double tangentWithin(double theta, double margin) {
-  const double h = 0.5 * std::abs(theta);
-  if (h < 1e-9 || margin <= 0.0) return 0.0;
-  return margin * std::tan(h) / (1.0 / std::cos(h) - 1.0);
-}
-
-// Spiral plan: geometry's straight-skeleton spirals (an area with holes is first cut into hole-free
-// boustrophedon pieces at `split_angle`; narrow necks split laps into further cells). Candidates of
-// each spiral cell: every start vertex of its first lap (at most kMaxSpiralStarts, evenly spread),
-// both directions; then GTSP order and transits as for boustrophedon.
-std::optional<AngleResult> spiralPlan(const Context& ctx, RouteScorer& scorer, const StopTable& stop, Objective obj,
-                                      int exact_max_cells, double split_angle, int* count, std::string* why) {
-  const auto& pr = *ctx.problem;
+// The area with every no-fly zone inside it as a hole (zones already holes are skipped); nullopt
+// with `why` set when a zone crosses the boundary (`plan` subtracts such zones from the area first).
+std::optional<geometry::PolygonWithHoles> areaWithZones(const SurveyProblem& pr, std::string* why) {
   geometry::PolygonWithHoles area = pr.area;
   for (const auto& z : pr.no_fly) {
     const bool inside = std::all_of(z.begin(), z.end(), [&](const Point& p) { return insideRing(p, pr.area.outer); });
@@ -462,16 +489,70 @@ std::optional<AngleResult> spiralPlan(const Context& ctx, RouteScorer& scorer, c
     });
     if (is_hole) continue;
     if (!inside) {
-      *why = "no spiral: a no-fly zone crosses the area boundary (subtract it from the area first, as `plan` does)";
+      *why = "a no-fly zone crosses the area boundary (subtract it from the area first, as `plan` does)";
       return std::nullopt;
     }
     Ring h = z;
     if (geometry::signedArea(h) > 0) std::reverse(h.begin(), h.end());
     area.holes.push_back(h);
   }
+  return area;
+}
+
+// One spiral cell flown from `start` (a vertex of its first lap) in direction `cw`, as a planner
+// route: all segments Sweep, arcs allowed at corners within the footprint overlap, none at the
+// out-and-back spikes.
+Route spiralCellRoute(const Context& ctx, const geometry::SpiralCell& cell, int start, bool cw, double split_angle) {
+  geometry::SpiralSettings st;
+  st.spacing = ctx.problem->spacing;
+  st.start_vertex = start;
+  st.clockwise = cw;
+  st.split_angle = split_angle;
+  const auto gr = geometry::spiralRoute(cell, st);
+  Route r;
+  for (size_t k = 0; k < gr.points.size(); ++k) {
+    if (!r.points.empty() && (gr.points[k] - r.points.back()).norm() < 1e-9) continue;
+    if (r.points.empty()) {
+      r.points.push_back(gr.points[k]);
+      r.max_tangent.push_back(0.0);
+      continue;
+    }
+    r.add(gr.points[k], LegRole::Sweep, 0.0);
+  }
+  for (size_t k = 1; k + 1 < r.points.size(); ++k) {
+    const Point u = r.points[k] - r.points[k - 1], v = r.points[k + 1] - r.points[k];
+    const double th = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
+    r.max_tangent[k] = std::abs(th) < kMaxRoundedTurn ? tangentWithin(th, ctx.overlap_margin) : 0.0;
+  }
+  return r;
+}
+
+// Start vertices tried on a spiral cell: every vertex of its first lap, at most kMaxSpiralStarts
+// evenly spread.
+std::vector<int> spiralStarts(const geometry::SpiralCell& cell) {
+  std::vector<int> out;
+  if (cell.laps.empty() || cell.laps.front().empty()) return out;
+  const int m = static_cast<int>(cell.laps.front().size());
+  const int step = std::max(1, m / kMaxSpiralStarts);
+  for (int start = 0; start < m; start += step) out.push_back(start);
+  return out;
+}
+
+// Spiral plan: geometry's straight-skeleton spirals (an area with holes is first cut into hole-free
+// boustrophedon pieces at `split_angle`; narrow necks split laps into further cells). Candidates of
+// each spiral cell: every start vertex of its first lap (at most kMaxSpiralStarts, evenly spread),
+// both directions; then GTSP order and transits as for boustrophedon.
+std::optional<AngleResult> spiralPlan(const Context& ctx, RouteScorer& scorer, const StopTable& stop, Objective obj,
+                                      int exact_max_cells, double split_angle, int* count, std::string* why) {
+  const auto& pr = *ctx.problem;
+  const auto area = areaWithZones(pr, why);
+  if (!area) {
+    *why = "no spiral: " + *why;
+    return std::nullopt;
+  }
   std::vector<geometry::SpiralCell> cells;
   try {
-    cells = geometry::decomposeSpiral(area, pr.spacing, split_angle);
+    cells = geometry::decomposeSpiral(*area, pr.spacing, split_angle);
   } catch (const std::exception& e) {
     *why = std::string("no spiral: ") + e.what();
     return std::nullopt;
@@ -480,43 +561,25 @@ std::optional<AngleResult> spiralPlan(const Context& ctx, RouteScorer& scorer, c
   GtspInstance g;
   int cluster = 0;
   for (const auto& cell : cells) {
-    if (cell.laps.empty() || cell.laps.front().empty()) continue;
-    const int m = static_cast<int>(cell.laps.front().size());
-    const int step = std::max(1, m / kMaxSpiralStarts);
-    bool any = false;
-    for (int start = 0; start < m; start += step)
+    // Every start vertex and direction scored; the cheapest few go to the order search (each
+    // candidate kept multiplies its work).
+    std::vector<std::pair<double, Route>> scored;
+    for (int start : spiralStarts(cell))
       for (bool cw : {false, true}) {
-        geometry::SpiralSettings st;
-        st.spacing = pr.spacing;
-        st.start_vertex = start;
-        st.clockwise = cw;
-        st.split_angle = split_angle;
-        const auto gr = geometry::spiralRoute(cell, st);
-        Route r;
-        for (size_t k = 0; k < gr.points.size(); ++k) {
-          if (!r.points.empty() && (gr.points[k] - r.points.back()).norm() < 1e-9) continue;
-          if (r.points.empty()) {
-            r.points.push_back(gr.points[k]);
-            r.max_tangent.push_back(0.0);
-            continue;
-          }
-          r.add(gr.points[k], LegRole::Sweep, 0.0);
-        }
+        Route r = spiralCellRoute(ctx, cell, start, cw, split_angle);
         if (r.points.size() < 2) continue;
-        for (size_t k = 1; k + 1 < r.points.size(); ++k) {
-          const Point u = r.points[k] - r.points[k - 1], v = r.points[k + 1] - r.points[k];
-          const double th = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
-          r.max_tangent[k] = std::abs(th) < kMaxRoundedTurn ? tangentWithin(th, ctx.overlap_margin) : 0.0;
-        }
         const double cost = obj == Objective::Length ? r.length() : scorer.energy(r);
         ++*count;
-        if (!std::isfinite(cost)) continue;
-        cand.push_back(std::move(r));
-        g.cluster.push_back(cluster);
-        g.cost.push_back(cost);
-        any = true;
+        if (std::isfinite(cost)) scored.emplace_back(cost, std::move(r));
       }
-    cluster += any;
+    std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (scored.size() > kMaxSpiralOrderCandidates) scored.resize(kMaxSpiralOrderCandidates);
+    for (auto& [cost, r] : scored) {
+      cand.push_back(std::move(r));
+      g.cluster.push_back(cluster);
+      g.cost.push_back(cost);
+    }
+    cluster += !scored.empty();
   }
   if (cand.empty()) {
     *why = "no spiral: the area is narrower than one swath";
@@ -526,6 +589,260 @@ std::optional<AngleResult> spiralPlan(const Context& ctx, RouteScorer& scorer, c
   res.angle = split_angle;
   res.cells = cluster;
   return assemble(ctx, std::move(cand), std::move(g), res, scorer, stop, obj, exact_max_cells);
+}
+
+// A per-cell candidate of the mixed search.
+struct CellCandidate {
+  Route route;
+  double cost = kInf;  // [J] energy of the route alone
+  bool spiral = false;
+  double angle = 0.0;  // [rad] sweep angle (boustrophedon)
+};
+
+// Boustrophedon route over the single cell of `cctx` at `angle`, first row at the top or bottom,
+// first pass starting at the right or left. Where the cell is not monotone at this angle its sweep
+// intervals form several sub-cells: they are flown in line order (from the top when `top`), each
+// from the corner nearest the previous one's exit.
+Route sweepCellRoute(const Context& cctx, double angle, bool top, bool right) {
+  double first_y = 0.0;
+  auto sub = cellsOf(sweepLines(cctx, angle, &first_y));
+  if (sub.empty()) return {};
+  std::stable_sort(sub.begin(), sub.end(), [top](const Cell& a, const Cell& b) {
+    return top ? a.first_line > b.first_line : a.first_line < b.first_line;
+  });
+  Route r = cellRoute(cctx, sub.front(), angle, first_y, top, right);
+  for (size_t k = 1; k < sub.size(); ++k) {
+    Route best;
+    double best_d = kInf;
+    for (int t = 0; t < 2; ++t)
+      for (bool rt : {false, true}) {
+        Route c = cellRoute(cctx, sub[k], angle, first_y, t == 1, rt);
+        if (c.points.empty()) continue;
+        const double d = (c.points.front() - r.points.back()).norm();
+        if (d < best_d) {
+          best_d = d;
+          best = std::move(c);
+        }
+      }
+    if (best.points.empty()) continue;
+    if (r.points.empty()) {
+      r = std::move(best);
+      continue;
+    }
+    moveTo(cctx, r, best.points.front(), LegRole::Transit, best.max_tangent.front());
+    for (size_t i = 1; i < best.points.size(); ++i) r.add(best.points[i], best.roles[i - 1], best.max_tangent[i]);
+  }
+  return r;
+}
+
+// Quick estimate of a route's energy for ranking within a cell: every segment a stop-to-stop leg
+// (tabulated), every corner a stop and a turn in place [J]. An upper bound of the exact energy of
+// the sharp-corner route; the ranking it gives is refined by exact scoring of the few best.
+double stopEstimate(const Route& r, const StopTable& stop, const RouteScorer& scorer) {
+  return polylineCost(r.points, Objective::Energy, stop, scorer);
+}
+
+// Candidates of one boustrophedon cell (ring `boundary`, no holes inside): boustrophedon at every
+// coarse angle, refined around the cell's best (ranked by stopEstimate), then scored exactly with
+// each start corner at the best angle and at the decomposition's angle; and the straight-skeleton
+// spiral from every start vertex both ways (ranked by stopEstimate, the kMaxSpiralKeep best scored
+// exactly). `count` counts the routes scored.
+std::vector<CellCandidate> cellCandidates(const Context& ctx, const Ring& boundary, double decomposition_angle,
+                                          const PlannerSettings& ps, RouteScorer& scorer, const StopTable& stop,
+                                          int* count) {
+  SurveyProblem cell_problem = *ctx.problem;
+  cell_problem.area = geometry::PolygonWithHoles{boundary, {}};
+  Context cctx = ctx;
+  cctx.problem = &cell_problem;
+  std::vector<CellCandidate> out;
+  auto corners = [&](double angle) {
+    for (int top = 0; top < 2; ++top)
+      for (bool right : {false, true}) {
+        CellCandidate c;
+        c.route = sweepCellRoute(cctx, angle, top == 1, right);
+        c.angle = angle;
+        if (c.route.points.size() < 2) continue;
+        c.cost = scorer.energy(c.route);
+        ++*count;
+        if (std::isfinite(c.cost)) out.push_back(std::move(c));
+      }
+  };
+  // Boustrophedon: the angle ranked by the estimate (one start corner), coarse then refined.
+  double best_angle = decomposition_angle, best_estimate = kInf;
+  auto consider = [&](double a) {
+    const Route r = sweepCellRoute(cctx, a, false, false);
+    ++*count;
+    if (r.points.size() < 2) return;
+    const double e = stopEstimate(r, stop, scorer);
+    if (e < best_estimate) {
+      best_estimate = e;
+      best_angle = a;
+    }
+  };
+  for (double a = 0.0; a < 180.0 - 1e-9; a += ps.coarse_step_deg) consider(a * kDeg);
+  const double coarse_best = best_angle;
+  for (double da = -ps.coarse_step_deg + ps.fine_step_deg; da < ps.coarse_step_deg - 1e-9; da += ps.fine_step_deg)
+    if (std::abs(da) > 1e-9) consider(coarse_best + da * kDeg);
+  corners(best_angle);
+  if (std::abs(normDeg(best_angle) - normDeg(decomposition_angle)) > 1e-6) {
+    // The decomposition's angle too (its corners line up with the neighbouring cells'), unless
+    // clearly dearer: every candidate kept multiplies the order search's work.
+    double best_cost = kInf;
+    for (const auto& c : out) best_cost = std::min(best_cost, c.cost);
+    const size_t before = out.size();
+    corners(decomposition_angle);
+    double alt = kInf;
+    for (size_t i = before; i < out.size(); ++i) alt = std::min(alt, out[i].cost);
+    if (alt > kKeepWithin * best_cost) out.resize(before);
+  }
+  // Spirals of the cell (necks split it into several spiral cells: flown one after the other, each
+  // from its first-lap vertex nearest the previous exit).
+  std::vector<geometry::SpiralCell> spirals;
+  try {
+    spirals = geometry::decomposeSpiral(cell_problem.area, cell_problem.spacing, decomposition_angle);
+  } catch (const std::exception&) {
+    spirals.clear();  // no spiral for this cell; its boustrophedon candidates remain
+  }
+  spirals.erase(std::remove_if(spirals.begin(), spirals.end(),
+                               [](const geometry::SpiralCell& c) { return c.laps.empty() || c.laps.front().empty(); }),
+                spirals.end());
+  if (spirals.empty()) return out;
+  std::vector<std::pair<double, CellCandidate>> ranked;
+  for (int start : spiralStarts(spirals.front()))
+    for (bool cw : {false, true}) {
+      CellCandidate c;
+      c.spiral = true;
+      c.route = spiralCellRoute(cctx, spirals.front(), start, cw, decomposition_angle);
+      for (size_t k = 1; k < spirals.size() && c.route.points.size() >= 2; ++k) {
+        const Ring& lap = spirals[k].laps.front();
+        int nearest = 0;
+        for (size_t v = 1; v < lap.size(); ++v)
+          if ((lap[v] - c.route.points.back()).norm() < (lap[nearest] - c.route.points.back()).norm())
+            nearest = static_cast<int>(v);
+        const Route next = spiralCellRoute(cctx, spirals[k], nearest, cw, decomposition_angle);
+        if (next.points.size() < 2) continue;
+        moveTo(cctx, c.route, next.points.front(), LegRole::Transit, 0.0);
+        for (size_t i = 1; i < next.points.size(); ++i) c.route.add(next.points[i], next.roles[i - 1], next.max_tangent[i]);
+      }
+      ++*count;
+      if (c.route.points.size() < 2) continue;
+      const double e = stopEstimate(c.route, stop, scorer);
+      ranked.emplace_back(e, std::move(c));
+    }
+  std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (ranked.size() > kMaxSpiralKeep) ranked.resize(kMaxSpiralKeep);
+  double best_cost = kInf;
+  for (const auto& c : out) best_cost = std::min(best_cost, c.cost);
+  for (auto& [e, c] : ranked) {
+    c.cost = scorer.energy(c.route);
+    ++*count;
+    if (std::isfinite(c.cost) && c.cost <= kKeepWithin * best_cost) out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// Per-cell search on two partitions of the area: (a) geometry's boustrophedon cells at `angle`
+// (holes and inner no-fly zones cut them), (b) those cells cut further into convex pieces
+// (geometry::convexPartition), so that e.g. the two arms of an L can take different sweep angles.
+// Candidates of every distinct piece come from cellCandidates() (pieces spread over `ps.threads`
+// workers); per partition one GTSP picks a candidate per piece and the order; the cheaper partition
+// is returned. `info` receives, per visited piece in flight order, what was chosen.
+std::optional<AngleResult> perCellPlan(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
+                                       RouteScorer& scorer, const StopTable& stop, const PlannerSettings& ps,
+                                       double angle, int* count, std::vector<CellPlan>* info, std::string* why) {
+  const auto& pr = *ctx.problem;
+  const auto area = areaWithZones(pr, why);
+  if (!area) return std::nullopt;
+  geometry::BoustrophedonDecomposition dec;
+  try {
+    dec = geometry::decomposeBoustrophedon(*area, angle);
+  } catch (const std::exception& e) {
+    *why = e.what();
+    return std::nullopt;
+  }
+  if (dec.cells.empty()) {
+    *why = "the decomposition has no cells";
+    return std::nullopt;
+  }
+  std::vector<Ring> pieces;                      // distinct pieces of both partitions
+  std::vector<std::vector<int>> partitions(2);   // piece indices of (a) and (b)
+  for (const auto& cell : dec.cells) {
+    const int id = static_cast<int>(pieces.size());
+    pieces.push_back(cell.boundary);
+    partitions[0].push_back(id);
+    std::vector<Ring> parts;
+    try {
+      parts = geometry::convexPartition(cell.boundary);
+    } catch (const std::exception&) {
+      parts.clear();  // not partitioned: the cell stays whole in (b)
+    }
+    if (parts.size() <= 1) {
+      partitions[1].push_back(id);
+      continue;
+    }
+    for (auto& part : parts) {
+      partitions[1].push_back(static_cast<int>(pieces.size()));
+      pieces.push_back(std::move(part));
+    }
+  }
+  const size_t n = pieces.size();
+  std::vector<std::vector<CellCandidate>> per(n);
+  std::vector<int> counts(n, 0);
+  std::exception_ptr error;
+  std::mutex m;
+  std::vector<std::thread> pool;
+  const int nt = std::max(1, std::min<int>(ps.threads, static_cast<int>(n)));
+  for (int t = 0; t < nt; ++t)
+    pool.emplace_back([&, t]() {
+      try {
+        RouteScorer local(model, ss);
+        for (size_t i = t; i < n; i += nt) per[i] = cellCandidates(ctx, pieces[i], angle, ps, local, stop, &counts[i]);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(m);
+        error = std::current_exception();
+      }
+    });
+  for (auto& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+  for (int c : counts) *count += c;
+
+  std::optional<AngleResult> best;
+  for (size_t v = 0; v < partitions.size(); ++v) {
+    if (v == 1 && partitions[1] == partitions[0]) break;  // every cell already convex
+    std::vector<Route> cand;
+    std::vector<const CellCandidate*> meta;
+    std::vector<int> piece_of;
+    GtspInstance g;
+    int cluster = 0;
+    for (int id : partitions[v]) {
+      if (per[static_cast<size_t>(id)].empty()) continue;  // a sliver with no sweep line
+      for (const auto& c : per[static_cast<size_t>(id)]) {
+        cand.push_back(c.route);
+        meta.push_back(&c);
+        piece_of.push_back(id);
+        g.cluster.push_back(cluster);
+        g.cost.push_back(c.cost);
+      }
+      ++cluster;
+    }
+    if (cand.empty()) continue;
+    AngleResult res;
+    res.angle = angle;
+    res.cells = cluster;
+    res = assemble(ctx, std::move(cand), std::move(g), res, scorer, stop, Objective::Energy, ps.exact_max_cells,
+                   cluster <= ps.exact_max_cells);
+    if (best && best->score <= res.score) continue;
+    info->clear();
+    for (int k : res.chosen) {
+      const CellCandidate& c = *meta[static_cast<size_t>(k)];
+      const Ring& piece = pieces[static_cast<size_t>(piece_of[static_cast<size_t>(k)])];
+      info->push_back({c.spiral ? "spiral" : "boustrophedon", c.spiral ? 0.0 : normDeg(c.angle), c.cost,
+                       std::abs(geometry::signedArea(piece))});
+    }
+    best = std::move(res);
+  }
+  if (!best) *why = "no cell has a candidate route";
+  return best;
 }
 
 PlanCandidate finish(const SurveyProblem& pr, RouteScorer& scorer, const AngleResult& a, const std::string& pattern) {
@@ -726,12 +1043,50 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   PlanResult res;
   say("plan: searching sweep angles (coarse " + std::to_string(ps.coarse_step_deg) + " deg, fine " +
       std::to_string(ps.fine_step_deg) + " deg) on " + std::to_string(ps.threads) + " threads");
-  const AngleResult best = searchAngles(ctx, model, ss, stop, Objective::Energy, ps, &res.candidates);
-  res.plan = finish(problem, scorer, best, "boustrophedon");
+  const auto ranked = searchAngles(ctx, model, ss, stop, Objective::Energy, ps, &res.candidates, &res.sweep_scan);
+  const AngleResult& best = ranked.front();
+  // The search ranks angles by the order search's estimate; the few best are flown in full (with
+  // the coverage check, which may take arcs back) and the cheapest that keeps coverage is kept.
+  for (size_t k = 0; k < std::min(kFinishBest, ranked.size()); ++k) {
+    if (!std::isfinite(ranked[k].score)) break;
+    // Re-assembled with the shortest order as a second choice (see assemble()).
+    const AngleResult both = evaluateAngle(ctx, ranked[k].angle, scorer, stop, Objective::Energy, ps.exact_max_cells, true);
+    PlanCandidate c = finish(problem, scorer, both.score < ranked[k].score ? both : ranked[k], "boustrophedon");
+    const bool covers = c.coverage_pct >= kMinCoveragePct, plan_covers = res.plan.coverage_pct >= kMinCoveragePct;
+    if (!res.plan.valid || (covers && !plan_covers) ||
+        (covers == plan_covers && (covers ? c.flown.energy < res.plan.flown.energy : c.coverage_pct > res.plan.coverage_pct)))
+      res.plan = std::move(c);
+  }
+  const double plan_angle = res.plan.valid ? res.plan.flown.path.sweep_angle : best.angle;  // [rad]
+  if (ps.per_cell && std::isfinite(best.score)) {
+    say("plan: per-cell search (each cell's own sweep angle or spiral)");
+    std::vector<CellPlan> info;
+    std::string why;
+    const auto mixed = perCellPlan(ctx, model, ss, scorer, stop, ps, plan_angle, &res.candidates, &info, &why);
+    if (!mixed) {
+      res.notes.push_back("per-cell search skipped: " + why);
+    } else {
+      const bool all_spiral = std::all_of(info.begin(), info.end(), [](const CellPlan& c) { return c.pattern == "spiral"; });
+      const bool any_spiral = std::any_of(info.begin(), info.end(), [](const CellPlan& c) { return c.pattern == "spiral"; });
+      PlanCandidate c = finish(problem, scorer, *mixed, all_spiral ? "spiral" : any_spiral ? "mixed" : "boustrophedon");
+      // The reported angle: the largest boustrophedon cell's.
+      double largest = -1.0;
+      for (const auto& cp : info)
+        if (cp.pattern == "boustrophedon" && cp.area_m2 > largest) {
+          largest = cp.area_m2;
+          c.sweep_angle_deg = cp.sweep_angle_deg;
+        }
+      if (all_spiral) c.sweep_angle_deg = 0.0;
+      c.cell_plans = std::move(info);
+      if (c.valid && c.coverage_pct >= kMinCoveragePct - 1e-9 &&
+          (c.flown.energy < res.plan.flown.energy || res.plan.coverage_pct < kMinCoveragePct))
+        res.plan = std::move(c);
+    }
+  }
 
   say("plan: baselines");
   // (a) shortest path: length objective for angle and order, flown with our speeds.
-  const AngleResult shortest = searchAngles(ctx, model, ss, stop, Objective::Length, ps, &res.candidates);
+  const AngleResult shortest = searchAngles(ctx, model, ss, stop, Objective::Length, ps, &res.candidates).front();
   res.shortest_path = finish(problem, scorer, shortest, "boustrophedon");
   // (b) ground-station default: parallel to the longest edge, one constant speed, stop at corners.
   const auto& outer = problem.area.outer;
@@ -750,7 +1105,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   // (c) best spiral.
   std::string why;
   say("plan: spirals");
-  const auto spiral = spiralPlan(ctx, scorer, stop, Objective::Energy, ps.exact_max_cells, best.angle,
+  const auto spiral = spiralPlan(ctx, scorer, stop, Objective::Energy, ps.exact_max_cells, plan_angle,
                                  &res.candidates, &why);
   if (spiral && std::isfinite(spiral->score)) {
     res.best_spiral = finish(problem, scorer, *spiral, "spiral");
@@ -769,8 +1124,11 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
     res.plan = *res.best_spiral;
   if (!res.plan.valid) throw std::runtime_error("plan: no coverage path found (area narrower than the clearance?)");
 
-  // Lower bound: the swath length the footprint needs at the best energy per metre, plus the way from
-  // home to the area and back; turns counted at zero (an arc can cost as little per metre).
+  // Lower bound: the swath length the coverage needs at the best energy per metre, plus the way from
+  // home to the area and back; turns counted at zero (an arc can cost as little per metre). A path
+  // of length L sweeps its square footprint w over at most L w + w^2 of ground (counted with
+  // multiplicity); the requested spacing s asks every point to be seen w / s times (side overlap),
+  // so L >= A / s - w (with s = w: A / w - w, the plain coverage bound).
   const double cap = ps.camera_max_speed > 0 ? std::min(ps.camera_max_speed, ss.max_speed) : ss.max_speed;
   const double e_min = model.minEnergyPerMetre(cap);
   double free_area = geometry::area(problem.area);
@@ -780,7 +1138,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   if (insideRing(problem.home, problem.area.outer)) approach = 0.0;
   for (size_t i = 0; i < outer.size(); ++i)
     approach = std::min(approach, distanceToSegment(problem.home, outer[i], outer[(i + 1) % outer.size()]));
-  res.lower_bound_j = e_min * (std::max(0.0, free_area / problem.footprint - problem.footprint) + 2.0 * approach);
+  res.lower_bound_j = e_min * (std::max(0.0, free_area / problem.spacing - problem.footprint) + 2.0 * approach);
   if (vehicle.battery) {
     res.battery = predictBatteryUse(res.plan.flown, *vehicle.battery);
     if (!res.battery->fits) res.notes.push_back(res.battery->warning);

@@ -12,6 +12,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kImproveRel = 1e-12;  // [-] relative improvement a local-search move must make
+constexpr int kDpMovesMaxClusters = 16;  // moves scored with re-chosen candidates up to this many clusters
 
 
 std::vector<std::vector<int>> membersOf(const GtspInstance& g) {
@@ -208,42 +209,79 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
     order.push_back(g.cluster[bv]);
     at = bv;
   }
-  // Local search over the cluster order; every order is scored with its optimal candidates.
+  // Local search over the cluster order, in two alternating phases: (1) moves scored with each
+  // cluster's candidate fixed (O(k) per move), to a local optimum; then the candidates re-chosen
+  // optimally for that order (layered DP), and (1) again while that helps; (2) up to
+  // kDpMovesMaxClusters clusters, one pass of moves each scored with its own optimal candidates
+  // (O(k m^2) per move): an improvement there goes back to (1), none ends the search.
   std::vector<double> buf_a, buf_b;
-  std::vector<int> o, rest;
-  double best_cost = orderCost(g, members, order, buf_a, buf_b);
-  auto accept = [&]() {
-    const double c = orderCost(g, members, o, buf_a, buf_b);
-    if (c < best_cost * (1.0 - kImproveRel)) {
-      order = o;
-      best_cost = c;
-      return true;
-    }
-    return false;
+  std::vector<int> o, rest, sel(static_cast<size_t>(k), -1);
+  auto reselect = [&]() {
+    const GtspTour t = bestForOrder(g, members, order);
+    for (size_t l = 0; l < order.size(); ++l) sel[static_cast<size_t>(order[l])] = t.nodes[l];
+    return t.cost;
   };
-  bool improved = true;
-  while (improved) {
-    improved = false;
-    for (int i = 0; i < k && !improved; ++i) {
-      for (int j = i + 1; j < k && !improved; ++j) {  // 2-opt: reverse order[i..j]
-        o = order;
-        std::reverse(o.begin() + i, o.begin() + j + 1);
-        improved = accept();
-      }
+  auto fixedCost = [&](const std::vector<int>& ord) {
+    double c = 0.0;
+    int prev = n;
+    for (int cl : ord) {
+      const int v = sel[static_cast<size_t>(cl)];
+      c += g.transit(prev, v) + g.cost[v];
+      prev = v;
     }
-    for (int len = 1; len <= 3 && !improved; ++len) {  // or-opt: move a run of 1..3 clusters
-      for (int i = 0; i + len <= k && !improved; ++i) {
-        for (int j = 0; j <= k - len && !improved; ++j) {
-          if (j == i) continue;
-          rest.assign(order.begin(), order.begin() + i);
-          rest.insert(rest.end(), order.begin() + i + len, order.end());
-          o = rest;
-          o.insert(o.begin() + std::min<int>(j, static_cast<int>(rest.size())), order.begin() + i,
-                   order.begin() + i + len);
+    return c + g.transit(prev, n);
+  };
+  // Tries 2-opt and or-opt moves of `order` scored by `score` (first improvement, restart);
+  // `exhaust` repeats until no move improves, otherwise one improvement ends the call.
+  auto search = [&](auto&& score, bool exhaust) {
+    double best_cost = score(order);
+    bool any = false, improved = true;
+    auto accept = [&]() {
+      const double c = score(o);
+      if (c < best_cost * (1.0 - kImproveRel)) {
+        order = o;
+        best_cost = c;
+        return true;
+      }
+      return false;
+    };
+    while (improved) {
+      improved = false;
+      for (int i = 0; i < k && !improved; ++i) {
+        for (int j = i + 1; j < k && !improved; ++j) {  // 2-opt: reverse order[i..j]
+          o = order;
+          std::reverse(o.begin() + i, o.begin() + j + 1);
           improved = accept();
         }
       }
+      for (int len = 1; len <= 3 && !improved; ++len) {  // or-opt: move a run of 1..3 clusters
+        for (int i = 0; i + len <= k && !improved; ++i) {
+          for (int j = 0; j <= k - len && !improved; ++j) {
+            if (j == i) continue;
+            rest.assign(order.begin(), order.begin() + i);
+            rest.insert(rest.end(), order.begin() + i + len, order.end());
+            o = rest;
+            o.insert(o.begin() + std::min<int>(j, static_cast<int>(rest.size())), order.begin() + i,
+                     order.begin() + i + len);
+            improved = accept();
+          }
+        }
+      }
+      any = any || improved;
+      if (!exhaust) break;
     }
+    return any;
+  };
+  double cost = reselect();
+  for (;;) {
+    search(fixedCost, true);
+    const double c = reselect();
+    const bool better = c < cost * (1.0 - kImproveRel);
+    cost = std::min(cost, c);
+    if (better) continue;  // new candidates may open new moves
+    if (k > kDpMovesMaxClusters) break;
+    if (!search([&](const std::vector<int>& ord) { return orderCost(g, members, ord, buf_a, buf_b); }, false)) break;
+    cost = reselect();
   }
   return bestForOrder(g, members, order);
 }

@@ -163,6 +163,17 @@ double RouteScorer::optimise(double length, double v_in, double v_out, double ca
     const auto opt = energy::optimalCruiseSpeed(model_, length, v_in, v_out, lim, cap, cs);
     best = opt.energy;
     best_v = opt.speed;
+    if (std::min(v_in, v_out) < best_v && best_v < std::max(v_in, v_out)) {
+      // A cruise between the entry and exit speeds needs room for both changes; at the edge of
+      // feasibility (the leg just long enough for the change) rounding can leave none: fly the
+      // change itself, cruising at the higher end speed.
+      try {
+        (void)energy::buildLegProfile(length, v_in, best_v, v_out, lim);
+      } catch (const std::invalid_argument&) {
+        best_v = lo;
+        best = f(lo);
+      }
+    }
   }
   cache_->legs.emplace(key, std::make_pair(best, best_v));
   *cruise = best_v;

@@ -81,6 +81,21 @@ void planMap(HtmlReport& r, const PlanReportData& d) {
                       formatNumber(l.time, 1), kJ(l.energy)});
   }
   if (!t.rows.empty()) r.table(t);
+  if (!d.cells.empty()) {
+    Table ct{"Cells of the plan (each cell's own pattern and sweep angle), in flight order",
+             {"cell", "pattern", "sweep angle [deg]", "area [m^2]", "energy alone [kJ]"},
+             {},
+             {false, false, true, true, true},
+             false};
+    for (std::size_t i = 0; i < d.cells.size(); ++i) {
+      const auto& cell = d.cells[i];
+      const double deg = std::fmod(std::fmod(cell.sweep_angle * kDeg, 180.0) + 180.0, 180.0);
+      ct.rows.push_back({std::to_string(i + 1), cell.pattern,
+                         cell.pattern == "spiral" ? std::string("-") : formatNumber(deg, 0),
+                         formatNumber(cell.area, 0), kJ(cell.energy)});
+    }
+    r.table(ct);
+  }
 }
 
 void planBreakdown(HtmlReport& r, const PlanReportData& d) {
@@ -164,6 +179,7 @@ void planCandidates(HtmlReport& r, const PlanReportData& d) {
   std::map<std::string, std::vector<const PlanCandidate*>> byPattern;
   std::vector<std::string> order;
   for (const auto& k : d.candidates) {
+    if (k.chosen) continue;  // drawn as the marker
     if (!byPattern.count(k.pattern)) order.push_back(k.pattern);
     byPattern[k.pattern].push_back(&k);
   }
@@ -206,8 +222,10 @@ void planCandidates(HtmlReport& r, const PlanReportData& d) {
     if (k.chosen) c.markers.push_back({wrapDeg(k.sweep_angle), k.energy / 1000.0, "chosen: " + k.pattern, "#000000"});
   }
   r.figure({"plan-candidates", renderSvg(c),
-            "Energy of every candidate against its sweep direction (0 deg = lines along east); patterns without a sweep "
-            "direction and the baselines are level lines. The ring marks the chosen plan."});
+            "Energy of the candidates against their sweep direction (0 deg = lines along east): the whole area swept "
+            "at one angle, at every angle searched (coarse grid, then refined around the best). Patterns without a "
+            "sweep direction and the baselines are level lines. The ring marks the chosen plan (a per-cell plan is "
+            "placed at the angle of its largest boustrophedon cell)."});
   Table t{"Baselines", {"plan", "energy [kJ]", "length [m]", "time [s]", "vs chosen [%]"}, {}, {false, true, true, true, true}, false};
   double chosen = std::numeric_limits<double>::quiet_NaN();
   for (const auto& k : d.candidates) {
@@ -350,18 +368,39 @@ HtmlReport validationReport(const ValidationReportData& d) {
   HtmlReport r(d.title);
   addFacts(r, d.facts);
   const bool haveBoth = n > 0 && d.measured_power.size() == n && d.modelled_power.size() == n;
-  if (n > 0) {
-    r.heading("Power over time");
+  std::vector<std::size_t> starts = d.log_start.empty() ? std::vector<std::size_t>{0} : d.log_start;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    if (starts[k] > n || (k > 0 && starts[k] < starts[k - 1])) {
+      throw std::invalid_argument("validation report: log_start[" + std::to_string(k) + "] = " + std::to_string(starts[k]) +
+                                  ", expected non-decreasing indices <= " + std::to_string(n));
+    }
+  }
+  if (!d.log_names.empty() && d.log_names.size() != starts.size()) {
+    throw std::invalid_argument("validation report: " + std::to_string(d.log_names.size()) + " log_names for " +
+                                std::to_string(starts.size()) + " logs");
+  }
+  if (n > 0) r.heading("Power over time");
+  for (std::size_t k = 0; k < starts.size() && n > 0; ++k) {
+    const std::size_t a = starts[k], b = k + 1 < starts.size() ? starts[k + 1] : n;
+    if (a == b) continue;
+    auto slice = [a, b](const std::vector<double>& v) {
+      return v.empty() ? v : std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(a), v.begin() + static_cast<std::ptrdiff_t>(b));
+    };
+    const std::vector<double> t = slice(d.t);
     LineChart c;
-    c.title = "Measured and modelled electrical power";
+    const std::string name = d.log_names.empty() ? std::string() : d.log_names[k];
+    c.title = "Measured and modelled electrical power" + (name.empty() ? std::string() : ": " + name);
     c.x = {"time", "s"};
     c.y = {"power", "W"};
-    if (!d.measured_power.empty()) c.series.push_back(Series("measured", d.t, d.measured_power));
-    if (!d.modelled_power.empty()) c.series.push_back(Series("modelled", d.t, d.modelled_power));
+    if (!d.measured_power.empty()) c.series.push_back(Series("measured", t, slice(d.measured_power)));
+    if (!d.modelled_power.empty()) c.series.push_back(Series("modelled", t, slice(d.modelled_power)));
     for (std::size_t i = 0; i < c.series.size(); ++i) c.series[i].width = 1.3;
     if (c.series.size() == 2) c.series[0].colour = "#444444", c.series[1].colour = seriesColour(1);
-    for (const auto& p : d.phases) c.shaded.push_back({p.t0, p.t1, p.phase, phaseColour(p.phase)});
-    r.figure({"validation-power", renderSvg(c), "Measured and modelled power; the background shows the phase of flight."});
+    for (const auto& p : d.phases)
+      if (p.log == k) c.shaded.push_back({p.t0, p.t1, p.phase, phaseColour(p.phase)});
+    r.figure({k == 0 ? std::string("validation-power") : "validation-power-" + std::to_string(k + 1), renderSvg(c),
+              "Measured and modelled power" + (name.empty() ? std::string() : " of " + name) +
+                  "; the background shows the phase of flight."});
   }
   if (haveBoth) {
     std::vector<double> res(n);
@@ -378,7 +417,9 @@ HtmlReport validationReport(const ValidationReportData& d) {
     r.heading("Residuals");
     if (k > 0) {
       r.paragraph("Sample residual (measured - modelled): RMS " + formatNumber(std::sqrt(se / k), 1) + " W, mean " +
-                  formatNumber(bias / k, 1) + " W over " + std::to_string(k) + " samples. A binned mean away from zero "
+                  formatNumber(bias / k, 1) + " W over " + std::to_string(k) + " samples" +
+                  (starts.size() > 1 ? " of " + std::to_string(starts.size()) + " logs" : std::string()) +
+                  ". A binned mean away from zero "
                   "that changes with a quantity points to an effect the model lacks.");
     }
     if (!d.speed.empty()) {

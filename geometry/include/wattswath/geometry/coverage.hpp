@@ -43,6 +43,13 @@ Point fromSweepFrame(const Point& p, double sweep_angle);
 /// non-finite coordinates, zero area).
 BoustrophedonDecomposition decomposeBoustrophedon(const PolygonWithHoles& area, double sweep_angle);
 
+/// Partition of a simple polygon (no holes) into convex pieces, counter-clockwise: CGAL's optimal
+/// convex partition (fewest pieces; Greene's dynamic programme) up to 24 vertices, Hertel-Mehlhorn
+/// (at most four times the fewest) beyond; a convex ring is returned as it is. Repeated and
+/// collinear vertices are dropped first. Throws std::invalid_argument for a ring with fewer than 3
+/// distinct vertices, a non-finite vertex or a ring that crosses itself.
+std::vector<Ring> convexPartition(const Ring& polygon);
+
 /// Corner of a cell where the boustrophedon starts, in the sweep frame (left = first line at the
 /// smallest sweep-frame x, bottom = first line flown upwards).
 enum class StartCorner { BottomLeft, BottomRight, TopLeft, TopRight };

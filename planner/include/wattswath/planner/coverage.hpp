@@ -1,9 +1,12 @@
 #pragma once
 /// @file coverage.hpp
-/// The minimum-energy coverage planner: candidates per cell (boustrophedon at every sweep angle,
-/// coarse then refined, each start corner; spirals where the cell allows), corner strategy and
-/// speeds per leg, cell order and transits around no-fly zones; baselines scored by the same model
-/// in the same run, and a physical lower bound.
+/// The minimum-energy coverage planner. Two searches compete: (1) one sweep angle for the whole
+/// area (coarse then refined), its cells ordered by GTSP; (2) per cell: the area cut into
+/// boustrophedon cells (geometry::decomposeBoustrophedon at the best angle of (1)), every cell
+/// offering boustrophedon routes at its own best angle (each start corner) and straight-skeleton
+/// spirals (each start vertex, both directions), the GTSP picking one candidate per cell and the
+/// order. Corner strategy and speeds per leg; transits around no-fly zones; baselines scored by
+/// the same model in the same run, and a physical lower bound.
 
 #include <functional>
 #include <optional>
@@ -41,18 +44,36 @@ struct PlannerSettings {
   double ground_station_speed = 5.0; ///< [m/s] constant speed of the ground-station baseline (ArduPilot WPNAV_SPEED default)
   double clearance = 2.0;            ///< [m] distance kept from holes and no-fly zones, (0, 100]
   int exact_max_cells = 8;           ///< exact cell ordering up to this many cells, heuristic beyond, [0, 12]
+  bool per_cell = true;              ///< also search per cell: each cell of the decomposition at the best angle
+                                     ///< picks its own pattern (boustrophedon at its own angle, or spiral)
 
   /// Throws std::invalid_argument naming the field and value when out of range.
   void validate() const;
 };
 
+/// How one cell of a plan is covered (per-cell choice of the mixed search).
+struct CellPlan {
+  std::string pattern;           ///< "boustrophedon" or "spiral"
+  double sweep_angle_deg = 0.0;  ///< [deg] sweep direction of a boustrophedon cell (0 = east, CCW); spirals: 0
+  double energy_j = 0.0;         ///< [J] energy of the cell's route flown alone, from rest to rest
+  double area_m2 = 0.0;          ///< [m^2] area of the cell
+};
+
+/// Energy of the one-angle boustrophedon plan at one sweep angle (a point of the angle search).
+struct AngleScore {
+  double sweep_angle_deg = 0.0;  ///< [deg] sweep direction (0 = east, CCW), [0, 180)
+  double energy_j = 0.0;         ///< [J] energy of the assembled plan at that angle (infinite: none)
+};
+
 /// One scored plan.
 struct PlanCandidate {
   FlownPath flown;              ///< the path with speeds and energies
-  std::string pattern;          ///< "boustrophedon" or "spiral"
-  double sweep_angle_deg = 0.0; ///< [deg] sweep direction (0 = east, counter-clockwise); spirals: 0
+  std::string pattern;          ///< "boustrophedon", "spiral" or "mixed" (cells covered by different patterns)
+  double sweep_angle_deg = 0.0; ///< [deg] sweep direction (0 = east, counter-clockwise); spirals: 0; mixed:
+                                ///< the angle of the largest boustrophedon cell
   double coverage_pct = 0.0;    ///< [%] of the area (minus holes and no-fly zones) inside the footprint
   int cells = 0;                ///< number of cells covered
+  std::vector<CellPlan> cell_plans;  ///< per cell, in flight order (filled by the per-cell search)
   bool valid = false;           ///< false when no candidate could be built
 };
 
@@ -63,7 +84,8 @@ struct PlanResult {
   PlanCandidate ground_station_default;   ///< baseline: sweep parallel to the longest edge, constant speed, stops
   std::optional<PlanCandidate> best_spiral;  ///< baseline: the best spiral (absent when no spiral fits)
   double lower_bound_j = 0.0;             ///< [J] physical lower bound on the coverage energy
-  int candidates = 0;                     ///< candidate plans scored
+  int candidates = 0;                     ///< candidate routes scored (whole plans and per-cell routes)
+  std::vector<AngleScore> sweep_scan;     ///< one-angle boustrophedon energy at every searched angle, by angle
   std::vector<std::string> notes;         ///< facts for the user (e.g. why no spiral)
   std::optional<BatteryUse> battery;      ///< predicted battery use of the plan (when the vehicle has a battery)
 };

@@ -38,6 +38,14 @@ struct PlanCandidate {
   bool chosen = false;       ///< the plan the planner kept
 };
 
+/// How one cell of the plan is covered (per-cell search).
+struct PlanCell {
+  std::string pattern;       ///< "boustrophedon" or "spiral"
+  double sweep_angle = 0.0;  ///< [rad] sweep direction of a boustrophedon cell
+  double energy = 0.0;       ///< [J] the cell's route flown alone, rest to rest
+  double area = 0.0;         ///< [m^2] cell area
+};
+
 /// A reference plan to compare against (shortest path, ground-station default, ...).
 struct PlanBaseline {
   std::string name;     ///< e.g. "shortest path", "ground-station default"
@@ -68,7 +76,8 @@ struct PlanReportData {
   PlanColour colour_by = PlanColour::Speed;          ///< map colour (power = leg energy / leg time)
   energy::Breakdown coverage;                        ///< energy of the coverage legs by effect and phase (Table III rows)
   energy::Breakdown transit;                         ///< energy of the transits (empty effects = none)
-  std::vector<PlanCandidate> candidates;             ///< scored candidates (energy vs sweep angle)
+  std::vector<PlanCandidate> candidates;             ///< scored candidates (energy vs sweep angle); the chosen one is a marker
+  std::vector<PlanCell> cells;                       ///< per-cell choices of the plan, in flight order (may be empty)
   std::vector<PlanBaseline> baselines;               ///< baselines drawn as horizontal lines
   std::optional<BatteryTrace> battery;               ///< battery over the mission, when known
 };
@@ -85,6 +94,7 @@ struct PhaseSpan {
   double t0 = 0.0;    ///< [s] start
   double t1 = 0.0;    ///< [s] end
   std::string phase;  ///< phase name ("accelerate", "cruise", "brake", "turn", "climb", "hover", ...)
+  std::size_t log = 0;  ///< which log of ValidationReportData::log_names the span belongs to
 };
 
 /// Measured against modelled energy of one leg (or phase) of a log.
@@ -109,10 +119,13 @@ struct DiagnosisRow {
   bool accepted = false;              ///< the diagnosis keeps it
 };
 
-/// Everything the validation report shows (one log; samples in time order).
+/// Everything the validation report shows: one or more logs, their samples one after the other
+/// (each log in time order); residual plots pool all logs, power over time is one figure per log.
 struct ValidationReportData {
   std::string title = "wattswath model validation";  ///< page title
   Facts facts;                                       ///< log, vehicle, model, totals
+  std::vector<std::string> log_names;                ///< name of each log (empty: one unnamed log)
+  std::vector<std::size_t> log_start;                ///< index of each log's first sample (empty: one log from 0)
   std::vector<double> t;                             ///< [s] sample times
   std::vector<double> measured_power;                ///< [W] per sample
   std::vector<double> modelled_power;                ///< [W] per sample
