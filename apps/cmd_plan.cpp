@@ -29,7 +29,7 @@ struct PlanOpts {
   std::string area, vehicle, home, out, corners = "auto";
   std::vector<std::string> no_fly;
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
-  bool force = false, json = false, no_report = false;
+  bool force = false, json = false, no_report = false, no_spiral = false;
   std::string report_svg;
 };
 
@@ -273,6 +273,7 @@ void runPlan(const PlanOpts& o) {
   pl::PlannerSettings ps;
   ps.corners = pl::cornerStrategyFromString(o.corners);
   ps.camera_max_speed = o.camera_max_speed;
+  ps.spirals = !o.no_spiral;
   const auto model = energy::marinsModel(vehicle);
   const auto r = pl::planCoverage(pr, vehicle, model, ps, [](const std::string& s) { progress(s); });
   if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
@@ -312,6 +313,11 @@ void runPlan(const PlanOpts& o) {
       {"cells", r.plan.cells},
       {"cell_plans", cellPlansJson(r.plan.cell_plans)},
       {"sweep_scan", sweepScanJson(r.sweep_scan)},
+      {"per_cell", r.per_cell ? nlohmann::json{{"energy_j", r.per_cell->flown.energy},
+                                               {"pattern", r.per_cell->pattern},
+                                               {"coverage_pct", r.per_cell->coverage_pct},
+                                               {"cell_plans", cellPlansJson(r.per_cell->cell_plans)}}
+                              : nlohmann::json(nullptr)},
       {"candidates", r.candidates},
       {"baselines",
        {{"shortest_path", candidateJson(r.shortest_path, e)},
@@ -361,6 +367,8 @@ void registerPlanCommand(CLI::App& app) {
       ->check(CLI::IsMember({"sharp", "rounded", "auto"}));
   cmd->add_option("--out", o->out, "output folder for mission.plan, mission.waypoints, path.geojson, legs.csv")->required();
   cmd->add_flag("--force", o->force, "overwrite existing output files");
+  cmd->add_flag("--no-spiral", o->no_spiral,
+                "straight parallel lines only: spirals do not compete (consistent image headings for photogrammetry)");
   cmd->add_flag("--no-report", o->no_report, "do not write DIR/report.html (the HTML plan report, on by default)");
   cmd->add_option("--report-svg", o->report_svg, "also write the report's figures as SVG files into this folder");
   addJsonFlag(cmd, o->json);

@@ -102,6 +102,15 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   EXPECT_FALSE(plan.at("geoFence").at("polygons").at(0).at("inclusion").get<bool>());
 }
 
+TEST(CliPlan, NoSpiralFliesStraightLinesOnly) {
+  const auto out = outDir("nospiral");
+  const auto j = planJson(sourcePath("data/areas/espiral_rectangle.geojson"), out, "--spacing 20 --no-spiral");
+  checkPlanOutput(j, out);
+  EXPECT_EQ(j.at("pattern"), "boustrophedon");
+  EXPECT_TRUE(j.at("baselines").at("best_spiral").is_null());
+  for (const auto& c : j.at("per_cell").at("cell_plans")) EXPECT_EQ(c.at("pattern"), "boustrophedon");
+}
+
 TEST(CliPlan, CameraFootprintAndCornerStrategy) {
   const auto out = outDir("camera");
   const auto j = planJson(sourcePath("data/areas/espiral_rectangle.geojson"), out,

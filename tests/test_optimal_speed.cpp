@@ -210,3 +210,21 @@ TEST(MarinsClosedForm, ExactDragIsBelowPaperDragByKv4Over2a) {
   EXPECT_NEAR(pa.legEnergy(d, 0, v, 0) - ex.legEnergy(d, 0, v, 0), ex.k_drag * std::pow(v, 4) / 2.0, 1e-9);
   EXPECT_NEAR(pa.legEnergy(d, 0, v, 0), pa.eq9Energy(d, v), 1e-9 * pa.eq9Energy(d, v));
 }
+
+TEST(OptimalSpeed, LegJustLongEnoughForItsSpeedChange) {
+  // Regression: a leg just long enough to brake from entry to exit speed (the planner's arcs met
+  // one such leg) made the grid of cruise speeds throw "leg too short" at speeds below the exit
+  // speed instead of skipping them. Now: a finite optimum whose profile builds.
+  const auto m = legModel();
+  const ProfileLimits lim{1.0, 1.0};
+  for (const auto& [ve, vx] : {std::pair<double, double>{4.93163, 2.0787}, {2.0787, 4.93163}, {8.0, 0.5}}) {
+    const double need = std::abs(ve * ve - vx * vx) / 2.0;
+    for (const double d : {need, need * (1.0 + 1e-12), need * (1.0 + 1e-6)}) {
+      CruiseSpeedSettings cs;
+      cs.min_speed = 0.05;
+      const auto r = optimalCruiseSpeed(m, d, ve, vx, lim, 16.0, cs);
+      EXPECT_TRUE(std::isfinite(r.energy)) << ve << " " << vx << " " << d;
+      EXPECT_NO_THROW(buildLegProfile(d, ve, r.speed, vx, lim)) << ve << " " << vx << " " << d << " " << r.speed;
+    }
+  }
+}

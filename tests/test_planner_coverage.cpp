@@ -48,6 +48,15 @@ void expectValid(const SurveyProblem& pr, const PlanResult& r) {
   EXPECT_EQ(sp.junction.back(), 0.0);
 }
 
+// An L of two arms, 400 m x 80 m along east and 80 m x 400 m along north; 20 m spacing.
+SurveyProblem lShape() {
+  SurveyProblem p;
+  p.area.outer = {{0, 0}, {400, 0}, {400, 80}, {80, 80}, {80, 400}, {0, 400}};
+  p.spacing = p.footprint = 20.0;
+  p.home = {-10, -10};
+  return p;
+}
+
 // The E-Spiral rectangle of Marins et al. (about 252 m x 118 m), spacing 21.45 m (10 m altitude,
 // 100 deg field of view, 10 % overlap) as in ../shared/data/README.md.
 SurveyProblem rectangle() {
@@ -125,6 +134,36 @@ TEST(Speed, CameraLimitCapsSweepLegsOnly) {
   EXPECT_GT(f.speeds.cruise.front(), 4.0);
 }
 
+TEST(Speed, ArcChainsFlyARoundLapWithoutStopping) {
+  // Two laps of a 24-gon of radius 140 m (36.5 m edges, 15 deg corners): every widest arc takes
+  // half of each edge, so arcs meet with no straight between them. With arcs at chain speeds the
+  // laps are flown without a stop; without them every corner is a stop.
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  Route r;
+  for (int i = 0; i <= 48; ++i) {
+    const Point p(140.0 * std::cos(2 * M_PI * i / 24), 140.0 * std::sin(2 * M_PI * i / 24));
+    if (i == 0) {
+      r.points.push_back(p);
+      r.max_tangent.push_back(0.0);
+    } else {
+      r.add(p, LegRole::Sweep, i == 48 ? 0.0 : 30.0);
+    }
+  }
+  SpeedSettings with = SpeedSettings::fromVehicle(v), without = with;
+  without.arc_chains = false;
+  RouteScorer a(model, with), b(model, without);
+  const auto fa = a.fly(r), fb = b.fly(r);
+  EXPECT_EQ(fa.sharp_corners, 0);
+  EXPECT_EQ(fa.rounded_corners, 47);
+  EXPECT_GT(fb.sharp_corners, 40);
+  EXPECT_LT(fa.energy, 0.6 * fb.energy) << fa.energy << " vs " << fb.energy;
+  EXPECT_NEAR(a.energy(r), fa.energy, 1e-6 * fa.energy);
+  // Continuity: a junction speed is the end speed of one leg and the start of the next.
+  for (double s : fa.speeds.junction) EXPECT_TRUE(std::isfinite(s));
+  EXPECT_TRUE(geometry::checkPath(fa.path, geometry::PolygonWithHoles{}).empty());
+}
+
 TEST(Planner, RectangleOfMarinsEtAl) {
   const auto v = iris();
   const auto pr = rectangle();
@@ -182,19 +221,19 @@ TEST(Planner, PerCellSearchSweepsEachArmOfAnLAlongItself) {
   // for both flies one of the arms across, in many 80 m lines; per cell, each arm along its length.
   const auto v = iris();
   const auto model = energy::marinsModel(v);
-  SurveyProblem pr;
-  pr.area.outer = {{0, 0}, {400, 0}, {400, 80}, {80, 80}, {80, 400}, {0, 400}};
-  pr.spacing = pr.footprint = 20.0;
-  pr.home = {-10, -10};
-  PlannerSettings one;
+  const SurveyProblem pr = lShape();
+  // Straight parallel lines only (spirals off, as photogrammetry often asks): a spiral around the
+  // L is cheaper still (see SpiralCompetesPerCellOnTheL), but here the arms' own angles are what
+  // the per-cell search must find.
+  PlannerSettings one, per;
   one.per_cell = false;
+  one.spirals = per.spirals = false;
   const auto r1 = planCoverage(pr, v, model, one);
-  const auto r = planCoverage(pr, v, model);
+  const auto r = planCoverage(pr, v, model, per);
   expectValid(pr, r);
   expectValid(pr, r1);
   EXPECT_TRUE(r1.plan.cell_plans.empty());
-  // The per-cell plan wins here (over the best one-angle boustrophedon by far, over the spiral the
-  // one-angle search falls back to by a little), with the arms swept near 0 deg and near 90 deg.
+  // The per-cell plan wins here, with the arms swept near 0 deg and near 90 deg.
   ASSERT_GE(r.plan.cell_plans.size(), 2u);
   EXPECT_LT(r.plan.flown.energy, r1.plan.flown.energy);
   double one_angle = std::numeric_limits<double>::infinity();
@@ -211,6 +250,30 @@ TEST(Planner, PerCellSearchSweepsEachArmOfAnLAlongItself) {
   }
   EXPECT_TRUE(along_east && along_north);
   EXPECT_NEAR(cell_area, geometry::area(pr.area), 1e-6 * geometry::area(pr.area));  // the cells tile the area
+}
+
+TEST(Planner, SpiralCompetesPerCellOnTheL) {
+  // The same L with spirals allowed: flown around the L with arcs at chain speeds, a spiral costs
+  // less than sweeping the arms; the per-cell search offers it and the plan is never dearer than
+  // the per-cell plan, the whole-area spiral or the straight-lines-only plan.
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  const SurveyProblem pr = lShape();
+  const auto r = planCoverage(pr, v, model);
+  PlannerSettings lines;
+  lines.spirals = false;
+  const auto r_lines = planCoverage(pr, v, model, lines);
+  expectValid(pr, r);
+  ASSERT_TRUE(r.per_cell.has_value());
+  EXPECT_TRUE(std::any_of(r.per_cell->cell_plans.begin(), r.per_cell->cell_plans.end(),
+                          [](const CellPlan& c) { return c.pattern == "spiral"; }));
+  EXPECT_LE(r.plan.flown.energy, r.per_cell->flown.energy + 1e-6);
+  ASSERT_TRUE(r.best_spiral.has_value());
+  EXPECT_LE(r.plan.flown.energy, r.best_spiral->flown.energy + 1e-6);
+  EXPECT_LT(r.plan.flown.energy, r_lines.plan.flown.energy);
+  EXPECT_EQ(r.plan.pattern, "spiral");
+  EXPECT_FALSE(r_lines.best_spiral.has_value());
+  EXPECT_NE(r_lines.plan.pattern, "spiral");
 }
 
 TEST(Planner, SweepScanHasEveryAngleSearched) {
@@ -230,9 +293,11 @@ TEST(Planner, SweepScanHasEveryAngleSearched) {
     }
     best = std::min(best, r.sweep_scan[i].energy_j);
   }
-  // The one-angle plan is the best scanned angle (its coverage holds with the arcs it was scored with).
+  // The scan scores routes with the widest arcs at their largest speeds only; the plan, flown with
+  // arcs at chain speeds too, costs at most the best scanned angle.
   ASSERT_EQ(r.plan.pattern, "boustrophedon");
-  EXPECT_NEAR(r.plan.flown.energy, best, 1e-6 * best);
+  EXPECT_LE(r.plan.flown.energy, best * (1 + 1e-9));
+  EXPECT_GT(r.plan.flown.energy, 0.9 * best);
 }
 
 TEST(Planner, BadInputGivesClearErrors) {

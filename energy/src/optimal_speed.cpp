@@ -137,13 +137,24 @@ CruiseSpeedOptimum optimalCruiseSpeed(const EnergyModel& model, double d, double
   r.upper_bound = std::min(v_max, legPeakSpeed(d, ve, vx, lim));
   const double hi = r.upper_bound;
   const double lo = std::min(settings.min_speed, 0.5 * hi);
+  // A cruise speed the leg cannot hold (below both end speeds with no room to dip, or at the edge of
+  // feasibility where rounding leaves none) is infinitely dear, not an error: the leg itself is
+  // feasible (checked above), so the grid finds a speed that fits.
   auto E = [&](double v) {
     ++r.evaluations;
-    return legEnergy(model, d, ve, v, vx, lim);
+    try {
+      return legEnergy(model, d, ve, v, vx, lim);
+    } catch (const std::invalid_argument&) {
+      return std::numeric_limits<double>::infinity();
+    }
   };
   auto slope = [&](double v) {
     ++r.evaluations;
-    return legEnergySlope(model, d, ve, v, vx, lim);
+    try {
+      return legEnergySlope(model, d, ve, v, vx, lim);
+    } catch (const std::invalid_argument&) {
+      return LegEnergySlope{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(), false};
+    }
   };
   const Grid g = sampleGrid(E, lo, hi, settings.grid_points);
   const size_t n = g.x.size();
@@ -169,6 +180,7 @@ CruiseSpeedOptimum optimalCruiseSpeed(const EnergyModel& model, double d, double
     if (!std::isfinite(refined)) refined = brent(E, a, b, settings.max_iterations);
     if (E(refined) <= g.f[g.best]) v = refined;
   }
+  if (!std::isfinite(E(v))) v = std::max(ve, vx);  // no grid speed fits: fly the change itself
   s = slope(v);
   const auto pieces = buildLegProfile(d, ve, v, vx, lim);
   r.speed = v;

@@ -25,6 +25,10 @@ constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage esti
 constexpr int kMaxSpiralStarts = 32;         // start vertices tried per spiral cell (evenly spread)
 constexpr size_t kMaxSpiralKeep = 6;
 constexpr size_t kFinishBest = 4;
+// [-] of the spacing: how far a spiral's rounded corner may cut inside its vertex beyond the
+// footprint overlap (the outer lap's footprint covers most of the sliver; finish() checks coverage
+// and takes arcs back where the plan would fall under 99 %).
+constexpr double kSpiralCornerCut = 0.1;
 constexpr size_t kMaxSpiralOrderCandidates = 8;  // cheapest spiral starts per cell the whole-area spiral orders
 constexpr double kKeepWithin = 1.10;         // a cell keeps alternatives costing at most this times its best            // best-ranked angles flown in full before choosing         // cheapest spiral candidates a cell keeps for the order search
 constexpr double kMaxRoundedTurn = 3.0;      // [rad] sharper corners (a spiral's out-and-back spikes) are stops
@@ -434,7 +438,11 @@ std::vector<AngleResult> evaluateAngles(const Context& ctx, const std::vector<do
   for (int t = 0; t < nt; ++t) {
     pool.emplace_back([&, t]() {
       try {
-        RouteScorer scorer(model, ss);
+        // The scan ranks angles of boustrophedon routes, whose corners are far apart: arcs at chain
+        // speeds change little there, and scoring without them is several times faster.
+        SpeedSettings scan = ss;
+        scan.arc_chains = false;
+        RouteScorer scorer(model, scan);
         for (size_t i = t; i < angles.size(); i += nt)
           out[i] = evaluateAngle(ctx, angles[i], scorer, stop, obj, exact_max_cells);
       } catch (...) {
@@ -522,7 +530,9 @@ Route spiralCellRoute(const Context& ctx, const geometry::SpiralCell& cell, int 
   for (size_t k = 1; k + 1 < r.points.size(); ++k) {
     const Point u = r.points[k] - r.points[k - 1], v = r.points[k + 1] - r.points[k];
     const double th = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
-    r.max_tangent[k] = std::abs(th) < kMaxRoundedTurn ? tangentWithin(th, ctx.overlap_margin) : 0.0;
+    r.max_tangent[k] = std::abs(th) < kMaxRoundedTurn
+                           ? tangentWithin(th, ctx.overlap_margin + kSpiralCornerCut * ctx.problem->spacing)
+                           : 0.0;
   }
   return r;
 }
@@ -695,6 +705,7 @@ std::vector<CellCandidate> cellCandidates(const Context& ctx, const Ring& bounda
     for (size_t i = before; i < out.size(); ++i) alt = std::min(alt, out[i].cost);
     if (alt > kKeepWithin * best_cost) out.resize(before);
   }
+  if (!ps.spirals) return out;
   // Spirals of the cell (necks split it into several spiral cells: flown one after the other, each
   // from its first-lap vertex nearest the previous exit).
   std::vector<geometry::SpiralCell> spirals;
@@ -1078,6 +1089,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
         }
       if (all_spiral) c.sweep_angle_deg = 0.0;
       c.cell_plans = std::move(info);
+      res.per_cell = c;
       if (c.valid && c.coverage_pct >= kMinCoveragePct - 1e-9 &&
           (c.flown.energy < res.plan.flown.energy || res.plan.coverage_pct < kMinCoveragePct))
         res.plan = std::move(c);
@@ -1105,9 +1117,12 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   // (c) best spiral.
   std::string why;
   say("plan: spirals");
-  const auto spiral = spiralPlan(ctx, scorer, stop, Objective::Energy, ps.exact_max_cells, plan_angle,
-                                 &res.candidates, &why);
-  if (spiral && std::isfinite(spiral->score)) {
+  const auto spiral = ps.spirals ? spiralPlan(ctx, scorer, stop, Objective::Energy, ps.exact_max_cells, plan_angle,
+                                              &res.candidates, &why)
+                                 : std::nullopt;
+  if (!ps.spirals) {
+    res.notes.push_back("spirals were not searched (straight parallel lines only)");
+  } else if (spiral && std::isfinite(spiral->score)) {
     res.best_spiral = finish(problem, scorer, *spiral, "spiral");
   } else {
     res.notes.push_back(why);

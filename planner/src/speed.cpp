@@ -19,6 +19,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kStraight = 1e-6;     // [rad] deflections below this are straight on
 constexpr double kMinCruise = 0.05;    // [m/s] slowest cruise speed the optimiser considers
 constexpr double kQuantum = 1e-4;      // [m], [m/s] resolution of the leg-energy cache key
+constexpr int kOptions = 6;            // per corner: a stop; the widest arc at 3 speeds, one half as wide at 2
 
 double wrapAngle(double a) {
   while (a > M_PI) a -= 2.0 * M_PI;
@@ -113,7 +114,7 @@ struct RouteScorer::Cache {
 };
 
 struct RouteScorer::Solved {
-  std::vector<std::array<Option, 2>> options;  // per vertex; [1] valid when options[k][1].rounded
+  std::vector<std::array<Option, kOptions>> options;  // per vertex; [0] stop, [1..] arcs valid when .rounded
   std::vector<int> choice;                     // chosen option per vertex
   std::vector<double> caps;                    // [m/s] per segment
   double energy = kInf;
@@ -208,6 +209,42 @@ RouteScorer::Solved RouteScorer::solve(const Route& route) {
     s.caps[i] = cap;
   }
   s.options.assign(n, {});
+  // Speeds of chains of arcs (every corner rounded, tangents a fraction of the widest that fits):
+  // the largest speeds the arcs and the straight room between them allow from rest to rest
+  // (forward pass under the acceleration, backward pass under the braking limit). Offered as arc
+  // options at each corner, so a run of close corners (a lap of a round spiral) need not stop:
+  // the narrower chain leaves room to speed up, the widest then holds the speed reached.
+  std::array<std::vector<double>, 2> chain_v;
+  static constexpr std::array<double, 2> kChainFraction{1.0, 0.5};
+  for (auto& c : chain_v) c.assign(n, 0.0);
+  if (settings_.arc_chains && settings_.fixed_speed <= 0.0 && settings_.corners != CornerStrategy::Sharp) {
+    for (size_t f = 0; f < kChainFraction.size(); ++f) {
+      std::vector<double> t(n, 0.0);
+      auto& v = chain_v[f];
+      for (size_t k = 1; k + 1 < n; ++k) {
+        const double theta =
+            wrapAngle(heading(route.points[k], route.points[k + 1]) - heading(route.points[k - 1], route.points[k]));
+        t[k] = kChainFraction[f] * std::min({route.max_tangent[k], 0.5 * len[k - 1], 0.5 * len[k]});
+        if (std::abs(theta) < kStraight) {
+          t[k] = 0.0;
+          v[k] = std::min(s.caps[k - 1], s.caps[k]);
+        } else if (t[k] > energy::tol::kLength) {
+          v[k] = std::min({std::sqrt(settings_.lateral_acceleration * t[k] / std::tan(0.5 * std::abs(theta))),
+                           s.caps[k - 1], s.caps[k]});
+        } else {
+          t[k] = 0.0;
+        }
+      }
+      for (size_t k = 1; k < n; ++k) {
+        const double room = std::max(0.0, len[k - 1] - t[k - 1] - t[k]);
+        v[k] = std::min(v[k], std::sqrt(v[k - 1] * v[k - 1] + 2.0 * settings_.limits.acceleration * room));
+      }
+      for (size_t k = n - 1; k-- > 1;) {
+        const double room = std::max(0.0, len[k] - t[k] - t[k + 1]);
+        v[k] = std::min(v[k], std::sqrt(v[k + 1] * v[k + 1] + 2.0 * settings_.limits.deceleration * room));
+      }
+    }
+  }
   for (size_t k = 1; k + 1 < n; ++k) {
     const double theta = wrapAngle(heading(route.points[k], route.points[k + 1]) - heading(route.points[k - 1], route.points[k]));
     Option sharp;
@@ -215,37 +252,57 @@ RouteScorer::Solved RouteScorer::solve(const Route& route) {
     s.options[k][0] = sharp;
     const double vcap = std::min(s.caps[k - 1], s.caps[k]);
     if (settings_.fixed_speed > 0.0 || settings_.corners == CornerStrategy::Sharp) continue;
-    Option rnd;
-    rnd.rounded = true;
-    if (std::abs(theta) < kStraight) {
-      rnd.v = vcap;  // straight on: no corner, only a junction between roles
-    } else {
-      rnd.t = std::min({route.max_tangent[k], 0.5 * len[k - 1], 0.5 * len[k]});
-      if (rnd.t <= energy::tol::kLength) continue;
+    // Arcs: the widest that fits (half of each adjacent segment at most) at its largest speed and
+    // at the two chain speeds, and one half as wide at its largest and at the narrower chain's
+    // speed. The chain speeds let a run of arcs start and end where the straight room is too short
+    // to reach an arc's largest speed; the narrower arc leaves room to change speed between arcs.
+    const double t_max = std::min({route.max_tangent[k], 0.5 * len[k - 1], 0.5 * len[k]});
+    // (tangent fraction, speed: >= 0 a fraction of the arc's largest, -1 / -2 the speed of the
+    // widest / narrower chain)
+    static constexpr std::array<std::pair<double, double>, kOptions - 1> kArcs{
+        {{1.0, 1.0}, {1.0, -1.0}, {1.0, -2.0}, {0.5, 1.0}, {0.5, -2.0}}};
+    for (int o = 1; o < kOptions; ++o) {
+      Option rnd;
+      rnd.rounded = true;
+      if (std::abs(theta) < kStraight) {
+        rnd.v = vcap;  // straight on: no corner, only a junction between roles
+        s.options[k][o] = rnd;
+        break;
+      }
+      rnd.t = kArcs[static_cast<size_t>(o - 1)].first * t_max;
+      if (rnd.t <= energy::tol::kLength) break;
       rnd.r = rnd.t / std::tan(0.5 * std::abs(theta));
-      rnd.v = std::min(std::sqrt(settings_.lateral_acceleration * rnd.r), vcap);
+      const double fraction = kArcs[static_cast<size_t>(o - 1)].second;
+      if (!settings_.arc_chains && (fraction < 0.0 || o > 1)) break;  // the widest arc at its largest speed only
+      const double v_arc = std::min(std::sqrt(settings_.lateral_acceleration * rnd.r), vcap);
+      rnd.v = fraction < 0.0 ? std::min(chain_v[fraction < -1.5 ? 1 : 0][k], v_arc) : fraction * v_arc;
+      if (rnd.v <= kMinCruise) continue;
       rnd.energy = model_.energy({energy::arc(rnd.r, theta, rnd.v)});
+      s.options[k][o] = rnd;
     }
-    s.options[k][1] = rnd;
   }
   // Dynamic programming over the corners: best[k][c] = least (stops where an arc was possible under
   // the rounded strategy, energy) up to vertex k with option c; lexicographic, so "rounded" keeps a
   // stop only where no arc is feasible.
   using Cost = std::pair<int, double>;
   const Cost none{std::numeric_limits<int>::max(), kInf};
-  std::vector<std::array<Cost, 2>> best(n, {none, none});
-  std::vector<std::array<int, 2>> from(n, {-1, -1});
+  std::vector<std::array<Cost, kOptions>> best(n);
+  std::vector<std::array<int, kOptions>> from(n);
+  for (auto& b : best) b.fill(none);
+  for (auto& f : from) f.fill(-1);
   best[0][0] = {0, 0.0};
   const bool prefer_arcs = settings_.corners == CornerStrategy::Rounded;
   for (size_t k = 1; k < n; ++k) {
-    for (int c = 0; c < 2; ++c) {
+    for (int c = 0; c < kOptions; ++c) {
       const Option& oc = s.options[k][c];
-      if (c == 1 && !oc.rounded) continue;
+      if (c > 0 && !oc.rounded) continue;
       const int penalty = (prefer_arcs && c == 0 && k + 1 < n && s.options[k][1].rounded) ? 1 : 0;
-      for (int p = 0; p < 2; ++p) {
+      for (int p = 0; p < kOptions; ++p) {
         if (!(best[k - 1][p].second < kInf)) continue;
         const Option& op = s.options[k - 1][p];
-        const double e = legEnergy(len[k - 1] - op.t - oc.t, op.v, oc.v, s.caps[k - 1]);
+        // Two widest arcs meeting mid-segment leave a leg of length zero up to rounding.
+        const double rest = std::max(0.0, len[k - 1] - op.t - oc.t);
+        const double e = legEnergy(rest, op.v, oc.v, s.caps[k - 1]);
         if (!(e < kInf)) continue;
         const Cost tot{best[k - 1][p].first + penalty, best[k - 1][p].second + e + oc.energy};
         if (tot < best[k][c]) {
@@ -292,8 +349,17 @@ FlownPath RouteScorer::fly(const Route& route) {
       line.start = p + u * a.t;
       line.end = q - u * b.t;
       line.heading_start = line.heading_end = h;
-      const double cruise = legCruise(L, a.v, b.v, s.caps[i]);
-      const auto pieces = energy::buildLegProfile(L, a.v, cruise, b.v, settings_.limits, h);
+      double cruise = legCruise(L, a.v, b.v, s.caps[i]);
+      std::vector<energy::Piece> pieces;
+      try {
+        pieces = energy::buildLegProfile(L, a.v, cruise, b.v, settings_.limits, h);
+      } catch (const std::invalid_argument&) {
+        // The leg-energy cache keys speeds and lengths to kQuantum: a cruise speed cached for a leg
+        // a hair longer may not fit this one when it is just long enough for its speed change.
+        // Fly the change itself, cruising at the higher end speed (always fits).
+        cruise = std::max(a.v, b.v);
+        pieces = energy::buildLegProfile(L, a.v, cruise, b.v, settings_.limits, h);
+      }
       push(line, cruise, a.v, model_.energy(pieces), energy::totalTime(pieces));
     }
     if (i + 2 < n) {

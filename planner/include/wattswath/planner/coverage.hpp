@@ -44,6 +44,8 @@ struct PlannerSettings {
   double ground_station_speed = 5.0; ///< [m/s] constant speed of the ground-station baseline (ArduPilot WPNAV_SPEED default)
   double clearance = 2.0;            ///< [m] distance kept from holes and no-fly zones, (0, 100]
   int exact_max_cells = 8;           ///< exact cell ordering up to this many cells, heuristic beyond, [0, 12]
+  bool spirals = true;               ///< let spirals compete (off: straight parallel lines only, as photogrammetry
+                                     ///< often wants for consistent image headings)
   bool per_cell = true;              ///< also search per cell: each cell of the decomposition at the best angle
                                      ///< picks its own pattern (boustrophedon at its own angle, or spiral)
 
@@ -83,6 +85,7 @@ struct PlanResult {
   PlanCandidate shortest_path;            ///< baseline: the shortest path (length objective), our speeds
   PlanCandidate ground_station_default;   ///< baseline: sweep parallel to the longest edge, constant speed, stops
   std::optional<PlanCandidate> best_spiral;  ///< baseline: the best spiral (absent when no spiral fits)
+  std::optional<PlanCandidate> per_cell;     ///< the per-cell search's plan, kept or not (absent when not run)
   double lower_bound_j = 0.0;             ///< [J] physical lower bound on the coverage energy
   int candidates = 0;                     ///< candidate routes scored (whole plans and per-cell routes)
   std::vector<AngleScore> sweep_scan;     ///< one-angle boustrophedon energy at every searched angle, by angle

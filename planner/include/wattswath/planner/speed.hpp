@@ -53,6 +53,8 @@ struct SpeedSettings {
   double yaw_rate = 2.1;              ///< [rad/s] yaw rate of turns in place, (0, 100]
   double altitude = 10.0;             ///< [m] flight height above home written into the legs
   CornerStrategy corners = CornerStrategy::Auto;  ///< corner strategy
+  bool arc_chains = true;             ///< also offer arcs at chain speeds (runs of close corners flown without
+                                      ///< stopping; 6 options per corner instead of 2: slower to score)
 
   /// Settings from a vehicle (maximum speed, acceleration, yaw rate).
   static SpeedSettings fromVehicle(const energy::Vehicle& v);
