@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include "marins_paper.hpp"
@@ -120,7 +121,7 @@ report::ValidationReportData validationFromReplays(const std::vector<en::LogRepl
   // Every log's samples one after the other (residuals pool them; power over time per log).
   for (std::size_t k = 0; k < replays.size(); ++k) {
     const auto& r = replays[k];
-    d.log_names.push_back(r.source);
+    d.log_names.push_back(std::filesystem::path(r.source).filename().string());
     d.log_start.push_back(d.t.size());
     for (const auto& s : r.samples) {
       d.t.push_back(s.t);
@@ -151,7 +152,8 @@ report::ValidationReportData validationFromReplays(const std::vector<en::LogRepl
     d.facts.push_back({"logs", std::to_string(replays.size()) +
                                    " (power over time for each; residuals and leg energies pool them)"});
   for (const auto& r : replays)
-    d.facts.push_back({replays.size() > 1 ? "whole flight, " + r.source : std::string("whole flight"),
+    d.facts.push_back({replays.size() > 1 ? "whole flight, " + std::filesystem::path(r.source).filename().string()
+                                          : std::string("whole flight"),
                        "measured " + report::formatNumber(r.flight.measured_j / 1000.0, 2) + " kJ, modelled " +
                            report::formatNumber(r.flight.modelled_j / 1000.0, 2) + " kJ (" +
                            report::formatNumber(r.flight.errorPct(), 1) + " %)"});

@@ -188,3 +188,13 @@ TEST(ReportRender, DiagnoseCommandReport) {
   if (!fs::exists(f)) GTEST_SKIP() << "no " << f;
   checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --log '" + f + "'", "cli-diagnose", 6);
 }
+TEST(ReportRender, DiagnoseCommandReportOfThreeFlights) {
+  // Power over time for every log: 3 power figures, 3 residual plots, leg energies, staircase.
+  std::string logs;
+  for (const char* name : {"2017-10-18_1436_energy14.csv", "2017-10-18_1449_normal29.csv", "2017-11-20_1610_energy14.csv"}) {
+    const std::string f = sharedData(std::string("iris-flights/") + name);
+    if (!fs::exists(f)) GTEST_SKIP() << "no " << f;
+    logs += " --log '" + f + "'";
+  }
+  checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "'" + logs, "cli-diagnose-3", 8);
+}

@@ -25,6 +25,7 @@ constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage esti
 constexpr int kMaxSpiralStarts = 32;         // start vertices tried per spiral cell (evenly spread)
 constexpr size_t kMaxSpiralKeep = 6;
 constexpr size_t kFinishBest = 4;
+constexpr size_t kMaxConvexPieces = 6;       // a cell is cut into convex pieces only when there are at most this many
 // [-] of the spacing: how far a spiral's rounded corner may cut inside its vertex beyond the
 // footprint overlap (the outer lap's footprint covers most of the sliver; finish() checks coverage
 // and takes arcs back where the plan would fall under 99 %).
@@ -484,6 +485,13 @@ std::vector<AngleResult> searchAngles(const Context& ctx, const energy::EnergyMo
   return res;
 }
 
+// Quick estimate of a route's energy for ranking within a cell: every segment a stop-to-stop leg
+// (tabulated), every corner a stop and a turn in place [J]. An upper bound of the exact energy of
+// the sharp-corner route; the ranking it gives is refined by exact scoring of the few best.
+double stopEstimate(const Route& r, const StopTable& stop, const RouteScorer& scorer) {
+  return polylineCost(r.points, Objective::Energy, stop, scorer);
+}
+
 // The area with every no-fly zone inside it as a hole (zones already holes are skipped); nullopt
 // with `why` set when a zone crosses the boundary (`plan` subtracts such zones from the area first).
 std::optional<geometry::PolygonWithHoles> areaWithZones(const SurveyProblem& pr, std::string* why) {
@@ -571,25 +579,29 @@ std::optional<AngleResult> spiralPlan(const Context& ctx, RouteScorer& scorer, c
   GtspInstance g;
   int cluster = 0;
   for (const auto& cell : cells) {
-    // Every start vertex and direction scored; the cheapest few go to the order search (each
-    // candidate kept multiplies its work).
-    std::vector<std::pair<double, Route>> scored;
+    // Every start vertex and direction ranked by the quick estimate (or length); the best few are
+    // scored exactly and go to the order search (each candidate kept multiplies its work).
+    std::vector<std::pair<double, Route>> ranked;
     for (int start : spiralStarts(cell))
       for (bool cw : {false, true}) {
         Route r = spiralCellRoute(ctx, cell, start, cw, split_angle);
         if (r.points.size() < 2) continue;
-        const double cost = obj == Objective::Length ? r.length() : scorer.energy(r);
         ++*count;
-        if (std::isfinite(cost)) scored.emplace_back(cost, std::move(r));
+        const double estimate = obj == Objective::Length ? r.length() : stopEstimate(r, stop, scorer);
+        if (std::isfinite(estimate)) ranked.emplace_back(estimate, std::move(r));
       }
-    std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (scored.size() > kMaxSpiralOrderCandidates) scored.resize(kMaxSpiralOrderCandidates);
-    for (auto& [cost, r] : scored) {
+    std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (ranked.size() > kMaxSpiralOrderCandidates) ranked.resize(kMaxSpiralOrderCandidates);
+    bool any = false;
+    for (auto& [estimate, r] : ranked) {
+      const double cost = obj == Objective::Length ? estimate : scorer.energy(r);
+      if (!std::isfinite(cost)) continue;
       cand.push_back(std::move(r));
       g.cluster.push_back(cluster);
       g.cost.push_back(cost);
+      any = true;
     }
-    cluster += !scored.empty();
+    cluster += any;
   }
   if (cand.empty()) {
     *why = "no spiral: the area is narrower than one swath";
@@ -645,12 +657,6 @@ Route sweepCellRoute(const Context& cctx, double angle, bool top, bool right) {
   return r;
 }
 
-// Quick estimate of a route's energy for ranking within a cell: every segment a stop-to-stop leg
-// (tabulated), every corner a stop and a turn in place [J]. An upper bound of the exact energy of
-// the sharp-corner route; the ranking it gives is refined by exact scoring of the few best.
-double stopEstimate(const Route& r, const StopTable& stop, const RouteScorer& scorer) {
-  return polylineCost(r.points, Objective::Energy, stop, scorer);
-}
 
 // Candidates of one boustrophedon cell (ring `boundary`, no holes inside): boustrophedon at every
 // coarse angle, refined around the cell's best (ranked by stopEstimate), then scored exactly with
@@ -787,7 +793,9 @@ std::optional<AngleResult> perCellPlan(const Context& ctx, const energy::EnergyM
     } catch (const std::exception&) {
       parts.clear();  // not partitioned: the cell stays whole in (b)
     }
-    if (parts.size() <= 1) {
+    if (parts.size() <= 1 || parts.size() > kMaxConvexPieces) {
+      // Convex already, or an outline of many small bends (a wavy field edge): pieces that small
+      // only add transits and turns, so the cell stays whole.
       partitions[1].push_back(id);
       continue;
     }

@@ -225,7 +225,9 @@ void planCandidates(HtmlReport& r, const PlanReportData& d) {
             "Energy of the candidates against their sweep direction (0 deg = lines along east): the whole area swept "
             "at one angle, at every angle searched (coarse grid, then refined around the best). Patterns without a "
             "sweep direction and the baselines are level lines. The ring marks the chosen plan (a per-cell plan is "
-            "placed at the angle of its largest boustrophedon cell)."});
+            "placed at the angle of its largest boustrophedon cell). The scan scores each corner as a stop or the "
+            "widest arc at its largest speed; the chosen plan is flown with arcs at chain speeds too, so it can lie "
+            "below the curve."});
   Table t{"Baselines", {"plan", "energy [kJ]", "length [m]", "time [s]", "vs chosen [%]"}, {}, {false, true, true, true, true}, false};
   double chosen = std::numeric_limits<double>::quiet_NaN();
   for (const auto& k : d.candidates) {
