@@ -148,6 +148,20 @@ TEST(CliPlanShared, EspiralRectangleWaypoints) {
   checkPlanOutput(j, out);
 }
 
+TEST(CliPlanShared, EveryESpiralAreaWithTheESpiralCamera) {
+  // The six E-Spiral survey areas at the E-Spiral camera (10 m, 100 deg, 10 % overlap): valid
+  // plans, never dearer than a baseline (checkPlanOutput), and well below the ground-station default.
+  for (const char* name : {"area01", "polygon", "rectangle", "rectangle02", "spiral_concave", "spiral_polygon"}) {
+    SCOPED_TRACE(name);
+    const auto out = outDir(std::string("espiral_") + name);
+    const auto j = planJson(wattswath::test::sharedData(std::string("espiral/area__") + name + ".waypoints"), out,
+                            "--altitude 10 --fov 100 --overlap 0.1");
+    checkPlanOutput(j, out);
+    EXPECT_LT(j.at("energy_j").get<double>(),
+              0.8 * j.at("baselines").at("ground_station_default").at("energy_j").get<double>());
+  }
+}
+
 TEST(CliPlanShared, IrisWaypointsWithNoFlyFile) {
   const auto out = outDir("iris_wpl");
   const auto j = planJson(wattswath::test::sharedData("iris-flights/plan__real_flight_area.waypoints"), out,

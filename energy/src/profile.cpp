@@ -108,6 +108,7 @@ std::vector<Piece> buildLeg(double d, double ve, double vc, double vx, const Pro
     throw std::invalid_argument("leg profile: climb must be finite and no larger than the leg length");
   }
   std::vector<Piece> out;
+  out.reserve(3);  // at most accelerate, cruise, brake: no reallocation in the optimisers' inner loops
   if (d <= tol::kLength) {
     if (std::abs(ve - vx) <= tol::kSpeed) return out;
     throw std::invalid_argument("leg profile: a zero-length leg cannot change speed (" + describe(d, ve, vc, vx) + ")");
