@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -331,19 +332,31 @@ void runPlan(const PlanOpts& o) {
     printJson(j);
     return;
   }
-  std::cout << "plan: " << r.plan.pattern << " at " << r.plan.sweep_angle_deg << " deg, " << e << " J, "
-            << r.plan.flown.time << " s, " << r.plan.flown.length << " m, coverage " << r.plan.coverage_pct << " %\n"
-            << "lower bound " << r.lower_bound_j << " J (plan / bound " << e / r.lower_bound_j << ")\n";
+  std::cout << std::fixed << std::setprecision(1);
+  std::cout << "plan: " << r.plan.pattern;
+  if (r.plan.pattern != "spiral") std::cout << " at " << std::setprecision(0) << r.plan.sweep_angle_deg << " deg";
+  std::cout << std::setprecision(1) << ", " << e / 1000.0 << " kJ, " << std::setprecision(0) << r.plan.flown.time
+            << " s, " << r.plan.flown.length << " m, coverage " << std::setprecision(1) << r.plan.coverage_pct << " %\n";
+  for (size_t i = 0; i < r.plan.cell_plans.size(); ++i) {
+    const auto& c = r.plan.cell_plans[i];
+    std::cout << "  cell " << i + 1 << ": " << c.pattern;
+    if (c.pattern != "spiral") std::cout << " at " << std::setprecision(0) << c.sweep_angle_deg << " deg";
+    std::cout << std::setprecision(0) << ", " << c.area_m2 << " m^2\n";
+  }
+  std::cout << std::setprecision(1) << "lower bound " << r.lower_bound_j / 1000.0 << " kJ (plan / bound "
+            << std::setprecision(2) << e / r.lower_bound_j << ")\n"
+            << std::setprecision(1);
   for (const auto& [name, c] : {std::pair<const char*, const pl::PlanCandidate*>{"shortest path", &r.shortest_path},
                                 {"ground-station default", &r.ground_station_default}})
-    std::cout << name << ": " << c->flown.energy << " J (plan saves " << 100.0 * (c->flown.energy - e) / c->flown.energy << " %)\n";
+    std::cout << name << ": " << c->flown.energy / 1000.0 << " kJ (plan saves "
+              << 100.0 * (c->flown.energy - e) / c->flown.energy << " %)\n";
   if (r.best_spiral)
-    std::cout << "best spiral: " << r.best_spiral->flown.energy << " J (plan saves "
+    std::cout << "best spiral: " << r.best_spiral->flown.energy / 1000.0 << " kJ (plan saves "
               << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " %)\n";
   if (r.battery)
-    std::cout << "battery: mission " << r.battery->mission_energy_j << " J of " << r.battery->usable_energy_j
-              << " J usable (margin " << r.battery->margin_pct << " %, " << r.battery->remaining_pct
-              << " % of the usable charge left on landing)\n";
+    std::cout << "battery: mission " << r.battery->mission_energy_j / 1000.0 << " kJ of "
+              << r.battery->usable_energy_j / 1000.0 << " kJ usable (margin " << r.battery->margin_pct << " %, "
+              << r.battery->remaining_pct << " % of the usable charge left on landing)\n";
   for (const auto& n : r.notes) std::cout << "note: " << n << "\n";
   std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
 }

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "wattswath/energy/model.hpp"
+#include "wattswath/energy/path_profile.hpp"
 #include "wattswath/geometry/check.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/planner/coverage.hpp"
@@ -162,6 +163,46 @@ TEST(Speed, ArcChainsFlyARoundLapWithoutStopping) {
   // Continuity: a junction speed is the end speed of one leg and the start of the next.
   for (double s : fa.speeds.junction) EXPECT_TRUE(std::isfinite(s));
   EXPECT_TRUE(geometry::checkPath(fa.path, geometry::PolygonWithHoles{}).empty());
+}
+
+TEST(Speed, RandomRoutesFlyAndEveryLegReprofiles) {
+  // Property (fixed seed): random polylines with short and long segments and random arc room fly
+  // without an error, fly() costs what energy() says, and every flown leg rebuilds from its own
+  // speeds (what the plan report does): the edge cases of legs just long enough for their speed
+  // change once threw in both places.
+  const auto path_profile_limits = [](const energy::Vehicle& v) {
+    return energy::ProfileLimits{v.max_acceleration_mps2, v.max_acceleration_mps2};
+  };
+  for (const auto& v : {iris(), energy::loadVehicle(test::sourcePath("data/vehicles/hwang-hexacopter.json"))}) {
+    const auto model = energy::marinsModel(v);
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    RouteScorer scorer(model, SpeedSettings::fromVehicle(v));
+    for (int trial = 0; trial < 150; ++trial) {
+      Route r;
+      Point p(0, 0);
+      r.points.push_back(p);
+      r.max_tangent.push_back(0.0);
+      double heading = 0.0;
+      const int n = 3 + trial % 9;
+      for (int k = 0; k < n; ++k) {
+        heading += (u(rng) - 0.5) * 2.0 * M_PI * (trial % 3 == 0 ? 0.15 : 0.9);
+        p += (2.0 + 60.0 * u(rng) * u(rng)) * Point(std::cos(heading), std::sin(heading));
+        r.add(p, k % 4 == 3 ? LegRole::Transit : LegRole::Sweep, k + 1 == n ? 0.0 : 30.0 * u(rng));
+      }
+      SCOPED_TRACE("trial " + std::to_string(trial));
+      FlownPath f;
+      ASSERT_NO_THROW(f = scorer.fly(r));
+      ASSERT_TRUE(std::isfinite(f.energy));
+      EXPECT_NEAR(scorer.energy(r), f.energy, 1e-6 * f.energy);
+      for (size_t i = 0; i < f.path.legs.size(); ++i) {
+        geometry::CoveragePath one;
+        one.legs = {f.path.legs[i]};
+        const energy::SpeedPlan sp{{f.speeds.cruise[i]}, {f.speeds.junction[i], f.speeds.junction[i + 1]}};
+        EXPECT_NO_THROW(energy::profileFromPath(one, sp, path_profile_limits(v), v.max_yaw_rate_radps)) << "leg " << i;
+      }
+    }
+  }
 }
 
 TEST(Planner, RectangleOfMarinsEtAl) {

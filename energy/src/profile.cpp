@@ -61,6 +61,8 @@ MotionState stateAt(const Piece& p, double tau, double t0) {
 
 namespace {
 
+constexpr double kFitSlack = 1e-9;  // [-] relative shortfall of a leg for its speed changes treated as rounding
+
 std::string describe(double d, double ve, double vc, double vx) {
   std::ostringstream os;
   os << "distance " << d << " m, entry " << ve << " m/s, cruise " << vc << " m/s, exit " << vx << " m/s";
@@ -122,7 +124,14 @@ std::vector<Piece> buildLeg(double d, double ve, double vc, double vx, const Pro
   auto dist = [&](double v0, double v1) {  // distance to change speed from v0 to v1
     return v1 >= v0 ? (v1 * v1 - v0 * v0) / (2.0 * au) : (v0 * v0 - v1 * v1) / (2.0 * ad);
   };
-  const double d1 = dist(ve, vc), d3 = dist(vc, vx);
+  double d1 = dist(ve, vc), d3 = dist(vc, vx);
+  // A leg just long enough for its speed changes, as computed elsewhere from the same geometry,
+  // may come out a few ulps short here: within kFitSlack the changes are shortened to fit.
+  const double excess = d1 + d3 - d;
+  if (excess > 0.0 && excess <= kFitSlack * std::max(1.0, d)) {
+    d1 -= excess * d1 / (d1 + d3);
+    d3 = std::max(0.0, d - d1);
+  }
   if (d1 + d3 <= d) {
     // d d1 / d vc and d d3 / d vc: v^2 / (2 a) with the acceleration of the change's direction.
     const double dd1 = vc >= ve ? vc / au : -vc / ad;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -1060,8 +1061,13 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   const StopTable stop = makeStopTable(scorer, 4.0 * diag);
 
   PlanResult res;
-  say("plan: searching sweep angles (coarse " + std::to_string(ps.coarse_step_deg) + " deg, fine " +
-      std::to_string(ps.fine_step_deg) + " deg) on " + std::to_string(ps.threads) + " threads");
+  auto deg = [](double d) {
+    std::ostringstream os;
+    os << d;
+    return os.str();
+  };
+  say("plan: searching sweep angles (coarse " + deg(ps.coarse_step_deg) + " deg, fine " + deg(ps.fine_step_deg) +
+      " deg) on " + std::to_string(ps.threads) + " threads");
   const auto ranked = searchAngles(ctx, model, ss, stop, Objective::Energy, ps, &res.candidates, &res.sweep_scan);
   const AngleResult& best = ranked.front();
   // The search ranks angles by the order search's estimate; the few best are flown in full (with
