@@ -341,6 +341,36 @@ TEST(Planner, SweepScanHasEveryAngleSearched) {
   EXPECT_GT(r.plan.flown.energy, 0.9 * best);
 }
 
+TEST(Planner, NeverDearerThanABaselineOnSeededRandomAreas) {
+  // Random star-shaped areas of 4-15 vertices with 0-3 square holes, spacing 10-30 m, footprint up
+  // to 20 % wider, each corner strategy: the plan keeps coverage, passes the checkers and costs no
+  // more than any baseline. (Seeds 18, 25 and 32 once gave plans dearer than a baseline that
+  // covered 99.6 % instead of 100 %.)
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  for (int seed : {0, 5, 7, 11, 18, 25, 32, 41}) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    SurveyProblem pr;
+    const int nv = 4 + seed % 12;
+    for (int i = 0; i < nv; ++i) {
+      const double a = 2 * M_PI * (i + 0.4 * u(rng)) / nv, r = 80 + 150 * u(rng);
+      pr.area.outer.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    for (int h = 0; h < seed % 4; ++h) {
+      const double cx = -60 + 120 * u(rng), cy = -60 + 120 * u(rng), s = 5 + 10 * u(rng);
+      pr.area.holes.push_back({{cx - s, cy - s}, {cx - s, cy + s}, {cx + s, cy + s}, {cx + s, cy - s}});
+    }
+    pr.spacing = 10 + 20 * u(rng);
+    pr.footprint = pr.spacing * (1 + 0.2 * u(rng));
+    pr.home = {-300, -300};
+    PlannerSettings ps;
+    ps.corners = seed % 3 == 0 ? CornerStrategy::Sharp : seed % 3 == 1 ? CornerStrategy::Rounded : CornerStrategy::Auto;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expectValid(pr, planCoverage(pr, v, model, ps));
+  }
+}
+
 TEST(Planner, BadInputGivesClearErrors) {
   const auto v = iris();
   auto pr = rectangle();

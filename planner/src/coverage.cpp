@@ -886,6 +886,18 @@ PlanCandidate finish(const SurveyProblem& pr, RouteScorer& scorer, const AngleRe
   return c;
 }
 
+// Whether candidate `c` should replace `plan`: keeping coverage (>= kMinCoveragePct) first, then
+// less energy; between candidates that both miss it, more coverage first.
+bool better(const PlanCandidate& c, const PlanCandidate& plan) {
+  if (!c.valid) return false;
+  if (!plan.valid) return true;
+  const bool covers = c.coverage_pct >= kMinCoveragePct, plan_covers = plan.coverage_pct >= kMinCoveragePct;
+  if (covers != plan_covers) return covers;
+  if (covers) return c.flown.energy < plan.flown.energy;
+  if (std::abs(c.coverage_pct - plan.coverage_pct) > 1e-9) return c.coverage_pct > plan.coverage_pct;
+  return c.flown.energy < plan.flown.energy;
+}
+
 double distanceToSegment(const Point& p, const Point& a, const Point& b) {
   const Point d = b - a;
   const double l2 = d.squaredNorm();
@@ -1077,10 +1089,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
     // Re-assembled with the shortest order as a second choice (see assemble()).
     const AngleResult both = evaluateAngle(ctx, ranked[k].angle, scorer, stop, Objective::Energy, ps.exact_max_cells, true);
     PlanCandidate c = finish(problem, scorer, both.score < ranked[k].score ? both : ranked[k], "boustrophedon");
-    const bool covers = c.coverage_pct >= kMinCoveragePct, plan_covers = res.plan.coverage_pct >= kMinCoveragePct;
-    if (!res.plan.valid || (covers && !plan_covers) ||
-        (covers == plan_covers && (covers ? c.flown.energy < res.plan.flown.energy : c.coverage_pct > res.plan.coverage_pct)))
-      res.plan = std::move(c);
+    if (better(c, res.plan)) res.plan = std::move(c);
   }
   const double plan_angle = res.plan.valid ? res.plan.flown.path.sweep_angle : best.angle;  // [rad]
   if (ps.per_cell && std::isfinite(best.score)) {
@@ -1104,9 +1113,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
       if (all_spiral) c.sweep_angle_deg = 0.0;
       c.cell_plans = std::move(info);
       res.per_cell = c;
-      if (c.valid && c.coverage_pct >= kMinCoveragePct - 1e-9 &&
-          (c.flown.energy < res.plan.flown.energy || res.plan.coverage_pct < kMinCoveragePct))
-        res.plan = std::move(c);
+      if (better(c, res.plan)) res.plan = std::move(c);
     }
   }
 
@@ -1141,16 +1148,15 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   } else {
     res.notes.push_back(why);
   }
-  // The plan is the least-energy candidate of all scored, baselines included (so it never costs more).
+  // The plan is the least-energy candidate of all scored, baselines included (so it never costs
+  // more than one that keeps coverage).
   for (const PlanCandidate* c : {&res.shortest_path, &res.ground_station_default}) {
-    if (c->valid && c->coverage_pct >= res.plan.coverage_pct - 1e-9 && c->flown.energy < res.plan.flown.energy) {
+    if (better(*c, res.plan)) {
       res.plan = *c;
       res.notes.push_back("a baseline geometry was cheaper than the searched ones and is used as the plan");
     }
   }
-  if (res.best_spiral && res.best_spiral->valid && res.best_spiral->coverage_pct >= 99.0 &&
-      res.best_spiral->flown.energy < res.plan.flown.energy)
-    res.plan = *res.best_spiral;
+  if (res.best_spiral && better(*res.best_spiral, res.plan)) res.plan = *res.best_spiral;
   if (!res.plan.valid) throw std::runtime_error("plan: no coverage path found (area narrower than the clearance?)");
 
   // Lower bound: the swath length the coverage needs at the best energy per metre, plus the way from
