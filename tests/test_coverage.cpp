@@ -295,6 +295,22 @@ TEST(Spiral, RectangleLapsAreOneContinuousSpiral) {
   }
 }
 
+TEST(Spiral, TracedOutlineIsSimplifiedBeforeTheSkeleton) {
+  // A field edge traced with 512 vertices (a wavy disc, 500 m across): the laps follow an outline
+  // simplified to 2 % of the spacing (Douglas-Peucker), not every trace point, and still cover it.
+  g::PolygonWithHoles area;
+  for (int i = 0; i < 512; ++i) {
+    const double t = 2 * M_PI * i / 512, r = 250 * (1 + 0.08 * std::sin(5 * t));
+    area.outer.push_back({250 + r * std::cos(t), 250 + r * std::sin(t)});
+  }
+  const auto cells = g::decomposeSpiral(area, 30.0);
+  ASSERT_EQ(cells.size(), 1u);
+  for (const auto& lap : cells[0].laps) EXPECT_LT(lap.size(), 100u);  // 512 before simplification
+  g::SpiralSettings sp;
+  sp.spacing = 30.0;
+  expectValid(area, g::spiralPaths(area, sp, {}), sp.spacing, "traced outline spiral");
+}
+
 TEST(Spiral, NeckSplitsIntoSeparateCells) {
   g::PolygonWithHoles neck;  // two 100 m squares joined by a 20 m wide, 60 m long corridor
   neck.outer = {{0, 0}, {100, 0}, {100, 40}, {160, 40}, {160, 0}, {260, 0},

@@ -6,12 +6,38 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/ring.hpp>
+
 #include "cgal_ops.hpp"
 #include "wattswath/geometry/check.hpp"
 #include "wattswath/geometry/tolerances.hpp"
 
 namespace wattswath::geometry {
 namespace {
+
+constexpr double kSpiralSimplify = 0.02;  // [-] of the spacing: outline detail dropped before the straight skeleton
+
+// `ring` with the vertices Douglas-Peucker (Boost.Geometry) finds within `tolerance` [m] of the
+// simplified outline dropped: a field edge traced by GPS has hundreds of vertices the laps, a
+// spacing apart, cannot follow, and the straight skeleton's cost grows faster than its vertices.
+Ring simplifiedRing(const Ring& ring, double tolerance) {
+  namespace bg = boost::geometry;
+  using BgPoint = bg::model::d2::point_xy<double>;
+  using BgRing = bg::model::ring<BgPoint, false, false>;  // counter-clockwise, open
+  BgRing in, out;
+  for (const auto& p : ring) in.push_back(BgPoint(p.x(), p.y()));
+  bg::simplify(in, out, tolerance);
+  if (out.size() < 3 || out.size() == in.size()) return ring;
+  Ring r;
+  for (const auto& p : out) {
+    const Point q(p.x(), p.y());
+    if (r.empty() || (q - r.back()).norm() > tol::kPosition) r.push_back(q);
+  }
+  while (r.size() > 1 && (r.front() - r.back()).norm() <= tol::kPosition) r.pop_back();  // simplify may close it
+  return r.size() >= 3 ? r : ring;
+}
 
 constexpr double kWallTol = 1e-9;  // [m] sweep-frame x values closer than this are the same wall
 // A corner gets a spike when it lies this many times farther than the footprint's half-diagonal
@@ -392,8 +418,15 @@ std::vector<SpiralCell> decomposeSpiral(const PolygonWithHoles& area, double spa
   }
   const double s = spacing;
   std::vector<SpiralCell> cells;
-  for (const auto& piece : pieces) {
-    const detail::InwardOffsetter off(piece);
+  for (auto piece : pieces) {
+    // Simplified first; where that makes the outline cross itself, the skeleton of the original.
+    const Ring simple = piece.size() > 8 ? simplifiedRing(piece, kSpiralSimplify * s) : piece;
+    detail::InwardOffsetter off(simple);
+    if (off.ok()) {
+      piece = simple;
+    } else if (simple.size() != piece.size()) {
+      off = detail::InwardOffsetter(piece);
+    }
     if (!off.ok()) continue;
     const double depth = off.depth();
     const auto samples = off.depthSamples(0.25 * s);

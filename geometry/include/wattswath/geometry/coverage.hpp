@@ -91,8 +91,9 @@ struct SpiralSettings {
 };
 
 /// Spiral decomposition: areas with holes are first cut into hole-free boustrophedon cells (at
-/// `split_angle`); each piece is offset inwards by spacing/2, 3 spacing/2, ... (CGAL straight
-/// skeleton) and each chain of offsets that does not split is one cell. Where an offset splits
+/// `split_angle`); each piece's outline is simplified (Douglas-Peucker, Boost.Geometry, to 2 % of
+/// the spacing; kept as it is where that would make it cross itself), offset inwards by spacing/2,
+/// 3 spacing/2, ... (CGAL straight skeleton) and each chain of offsets that does not split is one cell. Where an offset splits
 /// (narrow necks), each part starts a new cell. Where a part would vanish with its deepest point t
 /// more than half a spacing inside the last lap, the next lap is put at t - spacing/4 instead, so
 /// no point stays more than half a spacing from a lap. Pieces thinner than a spacing get one lap
