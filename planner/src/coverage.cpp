@@ -25,7 +25,7 @@ constexpr int kStopTableSize = 64;       // samples of the stop-to-stop leg ener
 constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage estimate
 constexpr int kMaxSpiralStarts = 32;         // start vertices tried per spiral cell (evenly spread)
 constexpr size_t kMaxSpiralKeep = 6;
-constexpr size_t kFinishBest = 4;
+constexpr size_t kFinishBest = 8;            // best-ranked angles flown in full before choosing
 constexpr size_t kMaxConvexPieces = 6;       // a cell is cut into convex pieces only when there are at most this many
 // [-] of the spacing: how far a spiral's rounded corner may cut inside its vertex beyond the
 // footprint overlap (the outer lap's footprint covers most of the sliver; finish() checks coverage
@@ -1084,13 +1084,34 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   const AngleResult& best = ranked.front();
   // The search ranks angles by the order search's estimate; the few best are flown in full (with
   // the coverage check, which may take arcs back) and the cheapest that keeps coverage is kept.
-  for (size_t k = 0; k < std::min(kFinishBest, ranked.size()); ++k) {
-    if (!std::isfinite(ranked[k].score)) break;
-    // Re-assembled with the shortest order as a second choice (see assemble()).
-    const AngleResult both = evaluateAngle(ctx, ranked[k].angle, scorer, stop, Objective::Energy, ps.exact_max_cells, true);
-    PlanCandidate c = finish(problem, scorer, both.score < ranked[k].score ? both : ranked[k], "boustrophedon");
-    if (better(c, res.plan)) res.plan = std::move(c);
+  // Re-assembled with the shortest order as a second choice (see assemble()), on ps.threads workers.
+  size_t finals = 0;
+  while (finals < std::min(kFinishBest, ranked.size()) && std::isfinite(ranked[finals].score)) ++finals;
+  std::vector<PlanCandidate> finished(finals);
+  {
+    std::vector<std::thread> pool;
+    std::exception_ptr error;
+    std::mutex m;
+    const int nt = std::max(1, std::min<int>(ps.threads, static_cast<int>(finals)));
+    for (int t = 0; t < nt; ++t)
+      pool.emplace_back([&, t]() {
+        try {
+          RouteScorer local(model, ss);
+          for (size_t k = t; k < finals; k += nt) {
+            const AngleResult both =
+                evaluateAngle(ctx, ranked[k].angle, local, stop, Objective::Energy, ps.exact_max_cells, true);
+            finished[k] = finish(problem, local, both.score < ranked[k].score ? both : ranked[k], "boustrophedon");
+          }
+        } catch (...) {
+          std::lock_guard<std::mutex> lock(m);
+          error = std::current_exception();
+        }
+      });
+    for (auto& th : pool) th.join();
+    if (error) std::rethrow_exception(error);
   }
+  for (auto& c : finished)
+    if (better(c, res.plan)) res.plan = std::move(c);
   const double plan_angle = res.plan.valid ? res.plan.flown.path.sweep_angle : best.angle;  // [rad]
   if (ps.per_cell && std::isfinite(best.score)) {
     say("plan: per-cell search (each cell's own sweep angle or spiral)");
