@@ -155,3 +155,36 @@ TEST(Regression, KmlEmptyClosingTagOverflowedTheStack) {
     EXPECT_NE(m.find("h.kml: line 1: tag " + std::string(tag) + " has no element name"), std::string::npos) << m;
   }
 }
+
+// A GeoJSON vertex at longitude 187 or 1e308 moved the bounding-box centre out of range, and the
+// error named only "frame origin", not the file or the vertex.
+TEST(Regression, AreaVertexOutOfRangeReportedAsFrameOrigin) {
+  std::string m = areaError(R"({"type": "Polygon", "coordinates": [[[7, 45], [187, 45], [7.002, 45.002], [7, 45]]]})",
+                            "a.geojson");
+  EXPECT_NE(m.find("a.geojson: geometry, outer boundary, vertex 1: longitude 187 deg is outside [-180, 180]"),
+            std::string::npos) << m;
+  m = areaError(R"({"type": "Polygon", "coordinates": [[[7, 45], [7.002, 45], [7.002, 45.002], [7, 45]],
+                    [[7.001, 45.001], [7.0011, 1e308], [7.0012, 45.001], [7.001, 45.001]]]})",
+                "b.geojson");
+  EXPECT_NE(m.find("b.geojson: geometry, hole 0, vertex 1: latitude 1e+308 deg is outside [-90, 90]"), std::string::npos)
+      << m;
+}
+
+// The WKT reader did not skip a UTF-8 byte order mark: "expected POLYGON or MULTIPOLYGON".
+TEST(Regression, WktByteOrderMarkRejected) {
+  const std::string wkt = "POLYGON ((7 45, 7.002 45, 7.002 45.002, 7 45.002, 7 45))";
+  wattswath::geometry::ReadOptions o;
+  o.wkt_units = wattswath::geometry::WktUnits::LonLatDegrees;
+  const auto plain = wattswath::geometry::parseSurveyArea(wkt, "a.wkt", o);
+  const auto bom = wattswath::geometry::parseSurveyArea("\xEF\xBB\xBF" + wkt, "a.wkt", o);
+  EXPECT_NEAR(bom.area(), plain.area(), 1e-6);
+  EXPECT_GT(plain.area(), 30000.0);
+}
+
+// "QGC WPL 999" was read as version 110 and failed later with "no finite vertex".
+TEST(Regression, QgcWplWrongVersionReportedAsNoVertex) {
+  const std::string rows = "0\t1\t0\t16\t0\t0\t0\t0\t45.0\t7.0\t10\t1\n";
+  const std::string m = areaError("QGC WPL 999\n" + rows, "m.waypoints");
+  EXPECT_NE(m.find("m.waypoints: line 1: QGC WPL version \"999\" is not supported (expected the header \"QGC WPL 110\")"),
+            std::string::npos) << m;
+}

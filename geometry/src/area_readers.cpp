@@ -418,6 +418,10 @@ RawArea parseQgcWpl(const std::string& text, const std::string& source) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (lineNo == 1) {
       if (trim(line).rfind("QGC WPL", 0) != 0) fail(source, "line 1: expected the header \"QGC WPL 110\", got \"" + line + "\"");
+      const std::string version = trim(trim(line).substr(7));
+      if (version != "110") {
+        fail(source, "line 1: QGC WPL version \"" + version + "\" is not supported (expected the header \"QGC WPL 110\")");
+      }
       continue;
     }
     if (trim(line).empty()) continue;
@@ -479,7 +483,6 @@ std::string extensionOf(const std::string& path) {
 
 AreaFormat sniff(const std::string& text) {
   size_t i = 0;
-  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) i = 3;  // UTF-8 BOM
   while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
   if (i >= text.size()) return AreaFormat::Auto;
   if (text[i] == '{') return AreaFormat::GeoJson;
@@ -522,7 +525,10 @@ AreaFormat decideFormat(const std::string& source, const std::string& text, Area
   return f;
 }
 
-RawArea parseAny(const std::string& text, const std::string& source, const ReadOptions& o) {
+RawArea parseAny(const std::string& withBom, const std::string& source, const ReadOptions& o) {
+  // A UTF-8 byte order mark (Windows editors) is not content in any of the formats.
+  const bool bom = withBom.compare(0, 3, "\xEF\xBB\xBF") == 0;
+  const std::string text = bom ? withBom.substr(3) : withBom;
   switch (decideFormat(source, text, o.format)) {
     case AreaFormat::GeoJson: return parseGeoJson(text, source);
     case AreaFormat::Kml: return parseKml(text, source);
@@ -533,17 +539,29 @@ RawArea parseAny(const std::string& text, const std::string& source, const ReadO
   throw SurveyAreaError(source + ": unknown survey area format");
 }
 
-/// Projects a lon/lat ring into the frame in place, validating every vertex.
-void projectRing(LabeledRing& r, const LocalFrame& frame, const std::string& source) {
+/// Throws naming the file, ring and vertex when a lon/lat vertex is not finite or out of range.
+void checkGeodeticRing(const LabeledRing& r, const std::string& source) {
   for (size_t i = 0; i < r.pts.size(); ++i) {
-    const GeoPoint g{r.pts[i].y(), r.pts[i].x(), 0.0};
     try {
-      validateGeoPoint(g, source + ": " + r.name + ", " + r.labels[i]);
+      validateGeoPoint(GeoPoint{r.pts[i].y(), r.pts[i].x(), 0.0}, source + ": " + r.name + ", " + r.labels[i]);
     } catch (const std::invalid_argument& e) {
       throw SurveyAreaError(e.what());
     }
-    r.pts[i] = frame.toLocal(g.lat_deg, g.lon_deg);
   }
+}
+
+/// Checks every lon/lat vertex of the polygons (before the frame origin is chosen from them).
+void checkGeodeticPolygons(const std::vector<LabeledPolygon>& polys, const std::string& source) {
+  for (const auto& p : polys) {
+    checkGeodeticRing(p.outer, source);
+    for (const auto& h : p.holes) checkGeodeticRing(h, source);
+  }
+}
+
+/// Projects a lon/lat ring into the frame in place, validating every vertex.
+void projectRing(LabeledRing& r, const LocalFrame& frame, const std::string& source) {
+  checkGeodeticRing(r, source);
+  for (auto& p : r.pts) p = frame.toLocal(p.y(), p.x());
 }
 
 void projectPolygon(LabeledPolygon& p, const std::optional<LocalFrame>& frame, bool geodetic, const std::string& source) {
@@ -569,6 +587,9 @@ GeoPoint chooseOrigin(const RawArea& raw, const ReadOptions& o, const std::strin
       if (!raw.home) throw SurveyAreaError(source + ": OriginChoice::Home but the file has no home point");
       return GeoPoint{raw.home->lat_deg, raw.home->lon_deg, 0.0};
     case OriginChoice::FirstVertex: {
+      if (raw.polygons.front().outer.pts.empty()) {
+        throw SurveyAreaError(source + ": " + raw.polygons.front().outer.name + " has no vertex to place the frame origin at");
+      }
       const Point& p = raw.polygons.front().outer.pts.front();
       return GeoPoint{p.y(), p.x(), 0.0};
     }
@@ -577,7 +598,6 @@ GeoPoint chooseOrigin(const RawArea& raw, const ReadOptions& o, const std::strin
   double minLat = std::numeric_limits<double>::infinity(), maxLat = -minLat, minLon = minLat, maxLon = -minLat;
   for (const auto& poly : raw.polygons) {
     for (const auto& p : poly.outer.pts) {
-      if (!std::isfinite(p.x()) || !std::isfinite(p.y())) continue;  // reported with its vertex on projection
       minLon = std::min(minLon, p.x()); maxLon = std::max(maxLon, p.x());
       minLat = std::min(minLat, p.y()); maxLat = std::max(maxLat, p.y());
     }
@@ -651,6 +671,8 @@ SurveyArea parseSurveyArea(const std::string& text, const std::string& source, c
   area.source = source;
   area.repairs = raw.notes;
   if (raw.geodetic) {
+    checkGeodeticPolygons(raw.polygons, source);
+    checkGeodeticPolygons(raw.no_fly, source);
     area.frame = LocalFrame(chooseOrigin(raw, options, source));
   } else if (options.origin) {
     area.frame = LocalFrame(*options.origin);
