@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang into build-fuzz/ and runs each for a bounded time
-# (FUZZ_SECONDS each, default 20; FUZZ_TARGETS to pick some) from its seeds: fuzz/corpus/<name>/
-# when present plus the files listed below (bundled examples and the malformed-input corpus) and,
-# for the autopilot readers, the first 64 kB of the real logs in ../shared/data/autopilot-logs.
+# Builds the libFuzzer targets with clang into build-fuzz/ (scripts/sanitizer_tree.sh) and runs
+# each for a bounded time (FUZZ_SECONDS each, default 20; FUZZ_TARGETS to pick some) from its
+# seeds: fuzz/corpus/<name>/ when present plus the files listed below (bundled examples and the
+# malformed-input corpus) and, for the autopilot readers, the first 64 kB of the real logs in
+# ../shared/data/autopilot-logs.
 # New corpus entries go to build-fuzz/corpus/ (never into the source tree); a crashing input is
 # saved in build-fuzz/artifacts/<target>/. Exits non-zero when a target finds a crash.
 set -euo pipefail
@@ -21,8 +22,8 @@ all_targets=(fuzz_vehicle_json fuzz_csv_log fuzz_area fuzz_dataflash fuzz_ulog)
 shared="../shared/data/autopilot-logs"
 read -r -a targets <<< "${FUZZ_TARGETS:-${all_targets[*]}}"
 
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWATTSWATH_FUZZ=ON \
-  -DWATTSWATH_BUILD_TESTS=OFF -DWATTSWATH_BUILD_BENCHMARKS=OFF -DWATTSWATH_BUILD_EXAMPLES=OFF >/dev/null
+source scripts/sanitizer_tree.sh
+configure_sanitizer_tree
 cmake --build build-fuzz -j2 --target "${targets[@]}"
 
 for t in "${targets[@]}"; do
