@@ -188,3 +188,15 @@ TEST(Regression, QgcWplWrongVersionReportedAsNoVertex) {
   EXPECT_NE(m.find("m.waypoints: line 1: QGC WPL version \"999\" is not supported (expected the header \"QGC WPL 110\")"),
             std::string::npos) << m;
 }
+
+// fuzz_csv_log (120 s): a geodetic log with a first altitude of 361407 m was read, but writeCsvLog
+// wrote that altitude as origin_alt_m, which the reader bounds to 100 km: the log did not read back.
+TEST(Regression, LogAltitudeAcceptedButItsOriginRejected) {
+  const std::string head = "time_s,lat_deg,lon_deg,alt_m,power_w\n";
+  const std::string m = logError(head + "0,43.7,10.4,361407,240\n1,43.7,10.40001,7,240\n");
+  EXPECT_NE(m.find("log.csv:2: column 'alt_m': value 361407 is outside -100000..100000 m"), std::string::npos) << m;
+  const FlightLog high = parseCsvLog(head + "0,43.7,10.4,99999,240\n1,43.7,10.40001,99999,240\n", "log.csv");
+  const FlightLog back = parseCsvLog(writeCsvLog(high), "back.csv");
+  ASSERT_EQ(back.samples.size(), 2u);
+  EXPECT_DOUBLE_EQ(back.origin_alt_m, 99999.0);
+}

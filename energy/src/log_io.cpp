@@ -70,6 +70,12 @@ std::string fmt(double v) {
   return std::string(buf.data(), r.ptr);
 }
 
+/// "-100000..100000 m": the altitude bound of log samples and origin metadata, in plain digits.
+std::string altitudeRange() {
+  const std::string b = std::to_string(static_cast<long long>(tol::kLogMaxAltitude));
+  return "-" + b + ".." + b + " m";
+}
+
 }  // namespace
 
 void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const DerivativeSettings& d) {
@@ -264,6 +270,9 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
       if (std::abs(lon) > 180.0) {
         fail(source, ln, "column 'lon_deg': value " + fmt(lon) + " is outside -180..180 degrees");
       }
+      if (std::abs(alt) > tol::kLogMaxAltitude) {
+        fail(source, ln, "column 'alt_m': value " + fmt(alt) + " is outside " + altitudeRange());
+      }
       if (!enu) {
         enu.emplace(lat, lon, alt);
         log.has_geodetic_origin = true;
@@ -314,7 +323,7 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
     };
     log.origin_lat_deg = origin("origin_lat_deg", 90.0, "a latitude in -90..90 degrees");
     log.origin_lon_deg = origin("origin_lon_deg", 180.0, "a longitude in -180..180 degrees");
-    log.origin_alt_m = origin("origin_alt_m", 1e5, "an altitude in -100000..100000 m");
+    log.origin_alt_m = origin("origin_alt_m", tol::kLogMaxAltitude, ("an altitude in " + altitudeRange()).c_str());
     log.has_geodetic_origin = true;
     for (const char* k : {"origin_lat_deg", "origin_lon_deg", "origin_alt_m"}) log.metadata.erase(k);
   }
