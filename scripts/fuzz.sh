@@ -15,6 +15,8 @@ declare -A seeds=(
   [fuzz_vehicle_json]="data/vehicles/*.json tests/data/good/*.json tests/data/bad/vehicle_*.json"
   [fuzz_csv_log]="tests/data/good/*.csv tests/data/bad/*.csv"
   [fuzz_area]="data/areas/* tests/data/bad/*.geojson tests/data/bad/*.kml tests/data/bad/*.wkt tests/data/bad/*.waypoints"
+  [fuzz_dataflash]="tests/data/bad/*.bin"
+  [fuzz_ulog]="tests/data/bad/*.ulg"
 )
 # target -> extension of the real logs in ../shared/data/autopilot-logs
 declare -A real_logs=([fuzz_dataflash]=bin [fuzz_ulog]=ulg)

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "test_util.hpp"
+#include "wattswath/energy/autopilot_log.hpp"
 #include "wattswath/energy/diagnose.hpp"
 #include "wattswath/energy/log_io.hpp"
 #include "wattswath/energy/vehicle.hpp"
@@ -199,4 +202,20 @@ TEST(Regression, LogAltitudeAcceptedButItsOriginRejected) {
   const FlightLog back = parseCsvLog(writeCsvLog(high), "back.csv");
   ASSERT_EQ(back.samples.size(), 2u);
   EXPECT_DOUBLE_EQ(back.origin_alt_m, 99999.0);
+}
+
+// fuzz_dataflash (120 s, --lenient): "at least two position samples" was checked before the samples
+// with non-increasing time were dropped; one was left and the interpolation read pt[1] past the end
+// (ASan heap-buffer-overflow in assemble). Same code path for ULog.
+TEST(Regression, DataFlashPositionTimesBackwardsReadPastTheEnd) {
+  const std::string bytes = readAll(sourcePath("tests/data/bad/log_dataflash_time_backwards.bin"));
+  LogReadOptions o;
+  o.lenient = true;
+  try {
+    readDataFlashBytes(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), "df.bin", o);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("df.bin: fewer than two position samples (1, 1 more with non-increasing"),
+              std::string::npos) << e.what();
+  }
 }

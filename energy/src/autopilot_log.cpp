@@ -109,15 +109,23 @@ std::vector<Eigen::Vector3d> accelerationFrom(const std::vector<double>& t, cons
 
 FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt) {
   const std::string where = source + ": ";
-  if (raw.battery.t.size() < 2)
-    throw std::runtime_error(where + "fewer than two battery samples (looked for " + raw.meta["battery_candidates"] + ")");
-  if (raw.pt.size() < 2)
-    throw std::runtime_error(where + "fewer than two position samples (looked for " + raw.meta["position_candidates"] + ")");
   Battery& b = raw.battery;
-  if (const std::size_t d = keepIncreasing(b.t, b.v, b.i))
-    raw.warnings.push_back(std::to_string(d) + " battery samples with non-increasing time not used");
-  if (const std::size_t d = keepIncreasing(raw.pt, raw.pos, raw.vel, raw.acc, raw.yaw))
-    raw.warnings.push_back(std::to_string(d) + " position samples with non-increasing time not used");
+  // Drop non-increasing times first: the interpolation below needs two position samples left.
+  const std::size_t bd = keepIncreasing(b.t, b.v, b.i);
+  const std::size_t pd = keepIncreasing(raw.pt, raw.pos, raw.vel, raw.acc, raw.yaw);
+  auto dropped = [](std::size_t d) {
+    return d ? ", " + std::to_string(d) + " more with non-increasing or non-finite time not used" : std::string();
+  };
+  if (b.t.size() < 2) {
+    throw std::runtime_error(where + "fewer than two battery samples (" + std::to_string(b.t.size()) + dropped(bd) +
+                             "; looked for " + raw.meta["battery_candidates"] + ")");
+  }
+  if (raw.pt.size() < 2) {
+    throw std::runtime_error(where + "fewer than two position samples (" + std::to_string(raw.pt.size()) + dropped(pd) +
+                             "; looked for " + raw.meta["position_candidates"] + ")");
+  }
+  if (bd) raw.warnings.push_back(std::to_string(bd) + " battery samples with non-increasing time not used");
+  if (pd) raw.warnings.push_back(std::to_string(pd) + " position samples with non-increasing time not used");
   if (!raw.has_acc) raw.acc = accelerationFrom(raw.pt, raw.vel);
   const std::vector<double> yaw = unwrap(raw.yaw);
 
