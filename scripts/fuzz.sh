@@ -6,6 +6,8 @@
 # ../shared/data/autopilot-logs.
 # New corpus entries go to build-fuzz/corpus/ (never into the source tree); a crashing input is
 # saved in build-fuzz/artifacts/<target>/. Exits non-zero when a target finds a crash.
+# The mutation sequence is seeded (FUZZ_SEED, default 1) so that a CI finding can be replayed; how
+# far it gets in FUZZ_SECONDS still depends on the machine's speed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-20}"
@@ -42,7 +44,7 @@ for t in "${targets[@]}"; do
   fi
   echo "fuzz: $t for ${seconds} s from $(ls "$work" | wc -l) inputs"
   status=0
-  "build-fuzz/bin/$t" "$work" -max_total_time="$seconds" -max_len=131072 -timeout=10 -rss_limit_mb=2048 \
+  "build-fuzz/bin/$t" "$work" -seed="${FUZZ_SEED:-1}" -max_total_time="$seconds" -max_len=131072 -timeout=10 -rss_limit_mb=2048 \
     -artifact_prefix="build-fuzz/artifacts/$t/" -print_final_stats=1 > "build-fuzz/$t.log" 2>&1 || status=$?
   grep -E "^(stat::|Done|==[0-9]+==|SUMMARY)" "build-fuzz/$t.log" | head -n 20 || true
   if ((status != 0)); then

@@ -192,6 +192,20 @@ TEST(Regression, QgcWplWrongVersionReportedAsNoVertex) {
             std::string::npos) << m;
 }
 
+// fuzz_area in CI (20 s): a QGC WPL row with command 2e35 was cast to int (undefined behaviour,
+// UBSan "outside the range of representable values of type 'int'"). Now the command must be an
+// integer in [0, 65535] (MAV_CMD), named with its line and column.
+TEST(Regression, QgcWplCommandOutOfRangeWasCastToInt) {
+  std::string m = areaError(readAll(sourcePath("tests/data/bad/geo_command_out_of_range.waypoints")), "c.waypoints");
+  EXPECT_NE(m.find("c.waypoints: line 4 (row 2), column 4 (command): expected a MAV_CMD number, an integer in [0, 65535]"),
+            std::string::npos) << m;
+  const std::string head = "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t45.0\t7.0\t10\t1\n";
+  for (const char* cmd : {"-1", "16.5", "nan", "65536"}) {
+    m = areaError(head + "1\t0\t3\t" + cmd + "\t0\t0\t0\t0\t45.0\t7.0\t10\t1\n", "d.waypoints");
+    EXPECT_NE(m.find("column 4 (command)"), std::string::npos) << cmd << ": " << m;
+  }
+}
+
 // fuzz_csv_log (120 s): a geodetic log with a first altitude of 361407 m was read, but writeCsvLog
 // wrote that altitude as origin_alt_m, which the reader bounds to 100 km: the log did not read back.
 TEST(Regression, LogAltitudeAcceptedButItsOriginRejected) {

@@ -440,6 +440,11 @@ RawArea parseQgcWpl(const std::string& text, const std::string& source) {
       }
     }
     const double lat = v[8], lon = v[9], alt = v[10];
+    // MAV_CMD is a 16-bit unsigned integer: anything else (2e35, -1, 16.5, nan) is not a command.
+    if (!(v[3] >= 0.0 && v[3] <= 65535.0 && v[3] == std::floor(v[3]))) {
+      fail(source, where + ", column 4 (command): expected a MAV_CMD number, an integer in [0, 65535], got \"" +
+                       cols[3] + "\"");
+    }
     const int command = static_cast<int>(v[3]);
     if (row == 0) {
       if (lat == 0.0 && lon == 0.0) out.notes.push_back(source + ": " + where + ": home row has no position (0, 0); no home point");
