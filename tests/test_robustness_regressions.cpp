@@ -218,6 +218,19 @@ TEST(Regression, LogAltitudeAcceptedButItsOriginRejected) {
   EXPECT_DOUBLE_EQ(back.origin_alt_m, 99999.0);
 }
 
+// fuzz_csv_log in a CI run (20 s): voltage 12 V x current 266666660 A was accepted as a power of
+// 3.2e9 W (each factor within the 1e9 bound), written back as power_w and then rejected: the log did
+// not read back. The derived power is bounded like a written one.
+TEST(Regression, LogDerivedPowerBeyondTheBoundDidNotReadBack) {
+  const std::string head = "time_s,x_m,y_m,z_m,voltage_v,current_a\n";
+  const std::string m = logError(head + "0,0,0,10,12,266666660\n1,0,0,10,12,20\n");
+  EXPECT_NE(m.find("log.csv:2: columns 'voltage_v' x 'current_a': power 3199999920 W is too large"), std::string::npos) << m;
+  const FlightLog ok = parseCsvLog(head + "0,0,0,10,12,20\n1,1,0,10,12,20\n", "log.csv");
+  const FlightLog back = parseCsvLog(writeCsvLog(ok), "back.csv");
+  ASSERT_EQ(back.samples.size(), 2u);
+  EXPECT_DOUBLE_EQ(back.samples[0].power, 240.0);
+}
+
 // fuzz_dataflash (120 s, --lenient): "at least two position samples" was checked before the samples
 // with non-increasing time were dropped; one was left and the interpolation read pt[1] past the end
 // (ASan heap-buffer-overflow in assemble). Same code path for ULog.

@@ -290,6 +290,11 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
     s.voltage = num("voltage_v");
     s.current = num("current_a");
     s.power = have_power ? num("power_w") : s.voltage * s.current;
+    if (!have_power && !(std::abs(s.power) <= tol::kLogMaxMagnitude)) {
+      // Written back as power_w, which is bounded like every value: the log would not read back.
+      fail(source, ln, "columns 'voltage_v' x 'current_a': power " + fmt(s.power) +
+                           " W is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
+    }
 
     s.mass = num("mass_kg");
     s.wind = {num("wind_x_mps"), num("wind_y_mps")};
