@@ -165,9 +165,11 @@ std::string fittedValuesText(const std::vector<en::FittedCoefficient>& coefficie
   for (const auto& x : coefficients) {
     if (!effect.empty() && x.effect != effect) continue;
     if (!text.empty()) text += "; ";
+    // Dimensionless coefficients carry the unit "-" in the effect tables; leave it out of the text.
+    const std::string unit = x.unit == "-" || x.unit == "1" ? std::string() : " " + x.unit;
     text += x.name + " = " + report::formatSignificant(x.value, 3) +
-            (std::isfinite(x.sigma) ? " +- " + report::formatSignificant(x.sigma, 2) : std::string()) + " " + x.unit +
-            (x.at_bound ? " (at bound)" : "");
+            (std::isfinite(x.sigma) ? " +- " + report::formatSignificant(x.sigma, 2) : std::string()) + unit +
+            (x.at_bound ? " (at bound)" : "") + (x.determined ? "" : " (not determined by the data)");
   }
   return text;
 }

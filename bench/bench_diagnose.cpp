@@ -8,18 +8,8 @@ using namespace wattswath::energy;
 
 namespace {
 
-Vehicle iris() {
-  Vehicle v;
-  v.name = "iris";
-  v.mass_kg = 1.3;
-  v.rotor_count = 4;
-  v.disk_area_m2 = 0.2027;
-  v.motor_efficiency = 0.9;
-  v.propeller_efficiency = 0.65;
-  v.drag_area_m2 = 0.01547;
-  v.air_density_kgpm3 = 1.2928;
-  return v;
-}
+/// The paper's IRIS, from the bundled vehicle file (data/vehicles/iris.json).
+Vehicle iris() { return loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json"); }
 
 // A lawnmower repeated until the flight lasts about an hour, with a hidden translational lift.
 const PreparedLog& hourLog() {

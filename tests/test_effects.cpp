@@ -11,21 +11,9 @@ using namespace wattswath::energy;
 
 namespace {
 
+/// The paper's IRIS, from the bundled vehicle file (data/vehicles/iris.json).
 Vehicle iris() {
-  Vehicle v;
-  v.name = "iris";
-  v.mass_kg = 1.3;
-  v.rotor_count = 4;
-  v.rotor_diameter_m = 0.254;
-  v.disk_area_m2 = 0.2027;
-  v.motor_efficiency = 0.9;
-  v.propeller_efficiency = 0.65;
-  v.drag_area_m2 = 0.01547;
-  v.max_acceleration_mps2 = 1.0;
-  v.max_yaw_rate_radps = 2.1;
-  v.max_speed_mps = 16.0;
-  v.air_density_kgpm3 = 1.2928;
-  v.gravity_mps2 = 9.81;
+  static const Vehicle v = loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json");
   return v;
 }
 

@@ -46,6 +46,20 @@ TEST(IrisFlights, DiagnoseJsonContract) {
   }
   EXPECT_GE(c[0].at("improvement_pct").get<double>(), c[1].at("improvement_pct").get<double>());
   EXPECT_GT(c[0].at("improvement_pct").get<double>(), 1.0);
+  // An uncertainty is a positive number or null (not determined by the data), never an exact 0: on
+  // these flights the wind candidate's drag area goes to 0, after which the wind does not change
+  // the modelled power, and "wind 1.7 +- 0 m/s" was reported before the fix.
+  bool wind_seen = false;
+  for (const auto& x : c) {
+    for (const auto& [name, sigma] : x.at("uncertainty").items())
+      EXPECT_TRUE(sigma.is_null() || sigma.get<double>() > 0.0) << x.at("effect") << "." << name << ": " << sigma;
+    if (x.at("effect") == "wind" && x.at("coefficients").at("drag_area").get<double>() < 1e-9) {
+      wind_seen = true;
+      EXPECT_TRUE(x.at("uncertainty").at("wind_east").is_null());
+      EXPECT_NE(x.at("summary").get<std::string>().find("not determined"), std::string::npos) << x.at("summary");
+    }
+  }
+  EXPECT_TRUE(wind_seen) << "the wind candidate no longer ends at drag area 0: revisit this check";
 }
 
 TEST(IrisFlights, FitJsonContractAndHeldOutFlightImproves) {

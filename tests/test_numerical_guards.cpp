@@ -9,6 +9,7 @@
 #include <random>
 
 #include "wattswath/energy/diagnose.hpp"
+#include "wattswath/energy/forward_flight.hpp"
 #include "wattswath/energy/log_io.hpp"
 #include "wattswath/energy/marins.hpp"
 #include "wattswath/energy/optimal_speed.hpp"
@@ -102,6 +103,43 @@ TEST(NumericalGuards, LegEnergyFiniteFromMillimetresToKilometres) {
     const double e = m.energy(buildLegProfile(len, 0.0, speed, 0.0, lim, 0.0, dz));
     ASSERT_TRUE(std::isfinite(e) && e >= 0.0) << "trial " << trial << ": leg " << len << " m at " << speed
                                               << " m/s -> " << e << " J";
+  }
+}
+
+// The induced-velocity solver (Hwang Eq. 5) across its documented range: thrust from 0 to 1e5 N,
+// forward speed 0 (and subnormal) to 100 m/s, tilt in [0, pi/2), density 0.3 to 1.5 kg/m^3, disk area 1 cm^2 to
+// 100 m^2. The root is finite, inside the documented bracket and satisfies Eq. 5; the Hwang
+// model's level-flight power (both parts) of random vehicles is finite from hover to 60 m/s.
+TEST(NumericalGuards, InducedVelocityFiniteAcrossItsDocumentedRange) {
+  std::mt19937 rng(5);
+  auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  auto logU = [&](double lo, double hi) { return std::exp(u(std::log(lo), std::log(hi))); };
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double T = trial % 50 == 0 ? 0.0 : logU(1e-6, 1e5);
+    const double U = trial % 7 == 0 ? 0.0 : trial % 13 == 0 ? 1e-310 : (trial % 2 ? logU(1e-12, 100.0) : u(0.0, 100.0));
+    const double th = trial % 11 == 0 ? 0.0 : u(0.0, 0.5 * M_PI * (1.0 - 1e-9));
+    const double rho = u(0.3, 1.5), A = logU(1e-4, 100.0);
+    double ui = 0.0;
+    ASSERT_NO_THROW(ui = inducedVelocity(T, U, th, rho, A)) << "T " << T << " U " << U << " th " << th;
+    const double k = T / (2.0 * rho * A);
+    ASSERT_TRUE(std::isfinite(ui) && ui >= 0.0) << "T " << T << " U " << U << " th " << th << ": " << ui;
+    const double bracket = U > 0.0 ? std::min(std::sqrt(k), k / U) : std::sqrt(k);
+    EXPECT_LE(ui, bracket * (1.0 + 1e-9) + 1e-300) << "T " << T << " U " << U << " th " << th;
+    if (T > 0.0) {
+      const double rhs = k / std::hypot(U * std::cos(th), U * std::sin(th) + ui);
+      EXPECT_NEAR(ui, rhs, 1e-6 * std::max(ui, 1e-12)) << "T " << T << " U " << U << " th " << th;
+    }
+  }
+  for (int trial = 0; trial < 100; ++trial) {
+    const Vehicle v = randomVehicle(rng);
+    const EnergyModel m = hwangModel(v);
+    for (double speed : {0.0, 0.1, 1.0, 5.0, 15.0, 30.0, 60.0}) {
+      MotionState s;
+      s.velocity = {speed, 0.0, 0.0};
+      s.airborne = true;
+      const double p = m.power(s);
+      ASSERT_TRUE(std::isfinite(p) && p > 0.0) << "trial " << trial << " speed " << speed << ": " << p << " W";
+    }
   }
 }
 

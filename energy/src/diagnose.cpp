@@ -25,6 +25,12 @@ std::string pm(double v, double sigma, int digits = 3) {
   return s;
 }
 
+// Value of a fitted coefficient times `scale`, with its uncertainty, or "(not determined)".
+std::string pm(const FittedCoefficient& c, double scale = 1.0, int digits = 3) {
+  if (!c.determined) return num(c.value * scale, digits) + " (not determined by the data)";
+  return pm(c.value * scale, c.sigma * scale, digits);
+}
+
 // Flattened training data: pointers to motion states and the measured power.
 struct Points {
   std::vector<const MotionState*> state;
@@ -311,8 +317,20 @@ FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data,
       return m[b.idx * na + a.idx];
     };
     for (size_t i = 0; i < refs.size(); ++i) {
+      // DENSE_SVD with null_space_rank -1 is a pseudo-inverse: a coefficient the data do not
+      // constrain (its Jacobian column vanishes) comes back with variance 0, which is not "exact"
+      // but "unknown".
       const double v = covAt(refs[i], refs[i]);
-      out.coefficients[i].sigma = v > 0.0 ? std::sqrt(v * s2) : 0.0;
+      auto& c = out.coefficients[i];
+      if (v > 0.0) {
+        c.sigma = std::sqrt(v * s2);
+      } else {
+        c.sigma = std::numeric_limits<double>::quiet_NaN();
+        c.determined = false;
+        out.notes.push_back(c.effect + "." + c.name + " is not determined by the data (the modelled power does not "
+                            "change with it at the fitted values); its value " + num(c.value) + " " + c.unit +
+                            " is arbitrary");
+      }
     }
     for (size_t i = 0; i < refs.size(); ++i) {
       for (size_t j = i + 1; j < refs.size(); ++j) {
@@ -341,44 +359,48 @@ std::string describeEffect(const std::string& effect, const std::vector<FittedCo
   };
   if (effect == "parasitic_drag") {
     const auto& a = get("drag_area");
-    return "drag area " + pm(a.value, a.sigma) + " m^2";
+    return "drag area " + pm(a) + " m^2";
   }
   if (effect == "wind") {
     const auto &e = get("wind_east"), &n = get("wind_north"), &a = get("drag_area");
     const double speed = std::hypot(e.value, n.value);
     const double bearing = std::fmod(std::atan2(e.value, n.value) * 180.0 / M_PI + 360.0, 360.0);
+    if (!e.determined || !n.determined) {
+      return "wind not determined: with drag area " + pm(a) +
+             " m^2 the air speed hardly changes the modelled power, so these data say nothing about the wind";
+    }
     const double sig = std::isfinite(e.sigma) && std::isfinite(n.sigma) ? std::hypot(e.sigma, n.sigma) / std::sqrt(2.0)
                                                                         : std::numeric_limits<double>::quiet_NaN();
     return "wind " + pm(speed, sig, 2) + " m/s towards " + num(std::round(bearing), 3) +
-           " deg (compass bearing the air moves to), drag area " + pm(a.value, a.sigma) + " m^2";
+           " deg (compass bearing the air moves to), drag area " + pm(a) + " m^2";
   }
   if (effect == "translational_lift") {
     const auto &p = get("induced_power"), &v = get("induced_velocity");
     const double at8 = p.value * (TranslationalLiftEffect::inducedRatio(8.0, v.value) - 1.0);
-    return "induced power " + pm(p.value, p.sigma) + " W at hover, falling with forward speed on a scale of v_h = " +
-           pm(v.value, v.sigma) + " m/s (" + num(at8, 3) + " W at 8 m/s)";
+    return "induced power " + pm(p) + " W at hover, falling with forward speed on a scale of v_h = " +
+           pm(v) + " m/s (" + num(at8, 3) + " W at 8 m/s)";
   }
   if (effect == "climb") {
     const auto &u = get("climb_mass"), &d = get("descent_mass");
-    return "climbing costs " + pm(u.value * 9.81, u.sigma * 9.81) + " W per m/s (m/eta = " + pm(u.value, u.sigma) +
-           " kg), descending saves " + pm(d.value * 9.81, d.sigma * 9.81) + " W per m/s";
+    return "climbing costs " + pm(u, 9.81) + " W per m/s (m/eta = " + pm(u) + " kg), descending saves " + pm(d, 9.81) +
+           " W per m/s";
   }
   if (effect == "load_efficiency") {
     const auto& k = get("efficiency_slope");
-    return "efficiency changes by " + pm(100.0 * k.value, 100.0 * k.sigma) + " % per unit of load factor";
+    return "efficiency changes by " + pm(k, 100.0) + " % per unit of load factor";
   }
   if (effect == "yaw_rate") {
     const auto& k = get("yaw_power");
-    return "yawing costs " + pm(k.value, k.sigma) + " W per rad/s";
+    return "yawing costs " + pm(k) + " W per rad/s";
   }
   if (effect == "payload_mass") {
     const auto &m = get("payload_mass"), &t = get("release_time");
-    return "payload " + pm(m.value, m.sigma) + " kg released at t = " + pm(t.value, t.sigma, 4) + " s";
+    return "payload " + pm(m) + " kg released at t = " + pm(t, 1.0, 4) + " s";
   }
   std::string s;
   for (const auto& x : c) {
     if (x.effect != effect) continue;
-    s += (s.empty() ? "" : ", ") + x.name + " " + pm(x.value, x.sigma) + " " + x.unit;
+    s += (s.empty() ? "" : ", ") + x.name + " " + pm(x) + " " + x.unit;
   }
   return s;
 }

@@ -235,13 +235,18 @@ double inducedVelocity(double thrust_n, double speed_mps, double tilt_rad, doubl
   const double c = thrust_n / (2.0 * rho * disk_area_m2);
   const double hover = std::sqrt(c);
   if (c == 0.0) return 0.0;
-  if (speed_mps == 0.0) return hover;
+  // A forward speed below 1e-12 of the hover induced velocity changes U_i by less than that
+  // fraction; it is hover (and c / U would overflow as U goes subnormal).
+  if (speed_mps <= 1e-12 * hover) return hover;
   const double ux = speed_mps * std::cos(tilt_rad), uz = speed_mps * std::sin(tilt_rad);
   // Residual u - c / sqrt(ux^2 + (uz + u)^2) is strictly increasing for u >= 0 (uz >= 0), negative
   // at 0 and non-negative at both sqrt(c) and c / U (see the header).
   auto f = [&](double u) { return u - c / std::hypot(ux, uz + u); };
   double hi = std::min(hover, c / speed_mps);
-  if (f(hi) == 0.0) return hi;
+  // Non-negative in exact arithmetic; a rounding error can make it a few ulps negative at a tiny
+  // forward speed (T 22934 N at U 2.5e-6 m/s: hypot(ux, sqrt(c)) rounds to sqrt(c)), and then the
+  // root is hi to within those ulps (NumericalGuards.InducedVelocityFiniteAcrossItsDocumentedRange).
+  if (f(hi) <= 0.0) return hi;
   std::uintmax_t iters = 200;
   const auto r = boost::math::tools::toms748_solve(f, 0.0, hi, boost::math::tools::eps_tolerance<double>(50), iters);
   return 0.5 * (r.first + r.second);

@@ -9,15 +9,14 @@
 
 #include "wattswath/energy/tolerances.hpp"
 
+#include "format.hpp"
+
 namespace wattswath::energy {
 
 namespace {
 
 void checkRange(const char* name, double value, double lo, double hi) {
-  if (!(value >= lo && value <= hi)) {
-    throw std::invalid_argument(std::string("PlanPredictionSettings.") + name + " = " + std::to_string(value) +
-                                ", expected " + std::to_string(lo) + ".." + std::to_string(hi));
-  }
+  detail::checkSettingRange("PlanPredictionSettings", name, value, lo, hi);
 }
 
 double wrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }

@@ -5,16 +5,14 @@
 #include <map>
 #include <stdexcept>
 
+#include "format.hpp"
 #include "local_fit.hpp"
 
 namespace wattswath::energy {
 namespace {
 
 void checkRange(const char* field, double v, double lo, double hi) {
-  if (!(v >= lo && v <= hi)) {
-    throw std::invalid_argument("SegmentSettings." + std::string(field) + " = " + std::to_string(v) + ", expected " +
-                                std::to_string(lo) + ".." + std::to_string(hi));
-  }
+  detail::checkSettingRange("SegmentSettings", field, v, lo, hi);
 }
 
 double median(std::vector<double> v) {

@@ -30,6 +30,15 @@ std::string phaseColour(const std::string& phase) {
   return it == kColours.end() ? "#bbbbbb" : it->second;
 }
 
+/// Position of a phase in the legends (flight order: ground, climb, hover, ..., descent), so that
+/// every power plot of a report lists the phases in the same order; unknown phases go last.
+int phaseRank(const std::string& phase) {
+  static const std::vector<std::string> kOrder = {"ground", "climb", "hover", "accelerate", "cruise",
+                                                  "brake",  "turn",  "descent"};
+  const auto it = std::find(kOrder.begin(), kOrder.end(), phase);
+  return static_cast<int>(it - kOrder.begin());
+}
+
 void addFacts(HtmlReport& r, const Facts& f) {
   if (!f.empty()) r.facts(f);
 }
@@ -400,6 +409,9 @@ HtmlReport validationReport(const ValidationReportData& d) {
     if (c.series.size() == 2) c.series[0].colour = "#444444", c.series[1].colour = seriesColour(1);
     for (const auto& p : d.phases)
       if (p.log == k) c.shaded.push_back({p.t0, p.t1, p.phase, phaseColour(p.phase)});
+    // The legend lists shaded labels in the order they come: sort by phase so every plot agrees.
+    std::stable_sort(c.shaded.begin(), c.shaded.end(),
+                     [](const auto& a, const auto& b) { return phaseRank(a.label) < phaseRank(b.label); });
     r.figure({k == 0 ? std::string("validation-power") : "validation-power-" + std::to_string(k + 1), renderSvg(c),
               "Measured and modelled power" + (name.empty() ? std::string() : " of " + name) +
                   "; the background shows the phase of flight."});

@@ -26,8 +26,12 @@ struct FittedCoefficient {
   std::string unit;      ///< SI unit
   std::string meaning;   ///< plain-language meaning
   double value = 0.0;    ///< fitted value, in `unit`
-  double sigma = 0.0;    ///< formal 1-sigma (Ceres covariance times residual variance; NaN if singular)
+  double sigma = 0.0;    ///< formal 1-sigma (Ceres covariance times residual variance; NaN if unknown)
   bool at_bound = false; ///< true when the fit stopped on a sign/range bound
+  /// False when the data do not constrain this coefficient at all (the modelled power does not
+  /// change with it at the fitted values, e.g. a wind speed once the drag area has gone to 0):
+  /// its value is arbitrary and its sigma is NaN, never a misleading 0.
+  bool determined = true;
 };
 
 /// Result of fitting a model's coefficients.
