@@ -1,6 +1,8 @@
 // The plan, validation, turn and speed reports: every figure present, well formed, escaped.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "report_samples.hpp"
 #include "xml_check.hpp"
 
@@ -77,6 +79,19 @@ TEST(Reports, ValidationReportDrawsPowerOverTimeForEveryLog) {
   bad = d;
   bad.log_names = {"only-one.csv"};
   EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
+}
+
+TEST(Reports, PhaseLegendInFlightOrderWhateverComesFirst) {
+  // The legend used to list phases in the order they first occur, so two flights' plots listed
+  // them differently; now it is ground, climb, hover, accelerate, cruise, brake, turn, descent.
+  auto d = sampleValidation();
+  std::reverse(d.phases.begin(), d.phases.end());  // a turn comes first now
+  const std::string html = wr::validationReport(d).html();
+  const auto at = [&](const std::string& label) { return html.find(">" + label + "</text>"); };
+  for (const char* label : {"accelerate", "cruise", "brake", "turn"}) ASSERT_NE(at(label), std::string::npos) << label;
+  EXPECT_LT(at("accelerate"), at("cruise"));
+  EXPECT_LT(at("cruise"), at("brake"));
+  EXPECT_LT(at("brake"), at("turn"));
 }
 
 TEST(Reports, TurnAndSpeedReports) {
