@@ -86,6 +86,13 @@ no report).
 E-Spiral areas use the E-Spiral camera (10 m altitude, 100 deg field of view, 10 %% side overlap:
 21.45 m between passes); the IRIS+ area uses 15 m between passes.
 
+Coverage is exact: the union of the camera footprints along every sweep line and arc (CGAL Boolean
+operations, `geometry::checkCoverage`) over the area minus its no-fly zones; a plan must keep 99 %%.
+Until 2026-11-23 the planner used its own sample-grid estimate, which was conservative (for one, it
+left out the footprint beyond the chords of arcs) and so rejected some spirals flown with wide arcs
+that keep coverage: with the exact check, the E-Spiral rectangle's plan fell from 60.9 to 59.2 kJ,
+polygon from 92.5 to 84.2 kJ, and spiral_polygon became a spiral (100.9 -> 95.0 kJ).
+
 | area | plan | energy [kJ] | coverage [%%] | time [s] | length [m] | saving vs shortest path [%%] | vs ground-station default [%%] | vs best spiral [%%] | plan / bound | wall [s] |
 |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
 %s

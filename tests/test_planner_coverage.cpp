@@ -33,7 +33,10 @@ void expectValid(const SurveyProblem& pr, const PlanResult& r) {
     if (geometry::signedArea(z) > 0) std::reverse(z.begin(), z.end());
     free_area.holes.push_back(z);
   }
-  EXPECT_GE(geometry::checkCoverage(free_area, {r.plan.flown.path}, pr.footprint).fraction(), 0.99);
+  const double exact = geometry::checkCoverage(free_area, {r.plan.flown.path}, pr.footprint).fraction();
+  EXPECT_GE(exact, 0.99);
+  // The planner reports geometry's exact figure (it once used its own sample-grid estimate).
+  EXPECT_NEAR(r.plan.coverage_pct, 100.0 * exact, 1e-6);
   EXPECT_LE(r.plan.flown.energy, r.shortest_path.flown.energy + 1e-6);
   EXPECT_LE(r.plan.flown.energy, r.ground_station_default.flown.energy + 1e-6);
   if (r.best_spiral) {
@@ -322,6 +325,7 @@ TEST(Planner, SweepScanHasEveryAngleSearched) {
   const auto pr = rectangle();
   PlannerSettings ps;
   ps.per_cell = false;
+  ps.spirals = false;  // the scan is of boustrophedon angles (a whole-area spiral wins this rectangle)
   const auto r = planCoverage(pr, v, energy::marinsModel(v), ps);
   // 18 coarse angles (10 deg) and 2 x 18 refined ones (1 deg) around the two best.
   EXPECT_EQ(r.sweep_scan.size(), 18u + 36u);

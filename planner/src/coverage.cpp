@@ -10,6 +10,7 @@
 
 #include "wattswath/geometry/check.hpp"
 #include "wattswath/geometry/coverage.hpp"
+#include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/planner/order.hpp"
 #include "wattswath/planner/transit.hpp"
 
@@ -22,7 +23,6 @@ using geometry::Ring;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDeg = M_PI / 180.0;
 constexpr int kStopTableSize = 64;       // samples of the stop-to-stop leg energy table (log spaced)
-constexpr int kMaxCoverageSamples = 200000;  // grid points of the coverage estimate
 constexpr int kMaxSpiralStarts = 32;         // start vertices tried per spiral cell (evenly spread)
 constexpr size_t kMaxSpiralKeep = 6;
 constexpr size_t kFinishBest = 8;            // best-ranked angles flown in full before choosing
@@ -865,24 +865,73 @@ std::optional<AngleResult> perCellPlan(const Context& ctx, const energy::EnergyM
   return best;
 }
 
-PlanCandidate finish(const SurveyProblem& pr, RouteScorer& scorer, const AngleResult& a, const std::string& pattern) {
+// The area minus its holes and no-fly zones (subtracted with CGAL as `plan` does; a zone partly
+// outside is clipped): what the coverage must reach.
+std::vector<geometry::PolygonWithHoles> freeRegions(const SurveyProblem& pr) {
+  geometry::SurveyArea free;
+  free.regions = {pr.area};
+  if (!pr.no_fly.empty()) {
+    geometry::NoFlyZones zones;
+    zones.zones = pr.no_fly;
+    for (auto& z : zones.zones)
+      if (geometry::signedArea(z) < 0) std::reverse(z.begin(), z.end());
+    zones.source = "SurveyProblem.no_fly";
+    geometry::subtractNoFlyZones(free, zones);
+  }
+  return free.regions;
+}
+
+// Coverage of `path` over `regions` [%], exact, by geometry's own checker: the swaths (a square
+// footprint `footprint` wide along every sweep line and arc) united with CGAL Boolean operations.
+double coverageOf(const std::vector<geometry::PolygonWithHoles>& regions, double footprint,
+                  const geometry::CoveragePath& path) {
+  double required = 0.0, covered = 0.0;
+  for (const auto& region : regions) {
+    const auto r = geometry::checkCoverage(region, {path}, footprint);
+    required += r.required_area;
+    covered += r.covered_area;
+  }
+  return required > 0.0 ? 100.0 * covered / required : 100.0;
+}
+
+// Flies the route of `a` with its widest arcs; coverage_pct is NaN until verify() has run.
+PlanCandidate flyUnverified(RouteScorer& scorer, const AngleResult& a, const std::string& pattern) {
   PlanCandidate c;
   if (!std::isfinite(a.score) || a.route.points.size() < 2) return c;
-  // Rounded corners must keep coverage: when the arcs leave more than kMinCoveragePct uncovered,
-  // fly the same route with the arcs allowed to cut in less (halving), down to stops everywhere.
-  Route route = a.route;
-  for (double scale : {1.0, 0.5, 0.25, 0.0}) {
-    for (size_t i = 0; i < route.max_tangent.size(); ++i) route.max_tangent[i] = scale * a.route.max_tangent[i];
-    c.flown = scorer.fly(route);
-    c.coverage_pct = coveragePercent(pr, c.flown.path);
-    if (c.coverage_pct >= kMinCoveragePct) break;
-  }
+  c.flown = scorer.fly(a.route);
   c.flown.path.pattern = pattern;
   c.flown.path.sweep_angle = a.angle;
   c.pattern = pattern;
   c.sweep_angle_deg = pattern == "spiral" ? 0.0 : normDeg(a.angle);
   c.cells = a.cells;
+  c.coverage_pct = std::numeric_limits<double>::quiet_NaN();
   c.valid = true;
+  return c;
+}
+
+// Checks the coverage of `c` (flown from `a` by flyUnverified). Rounded corners must keep it: when
+// the arcs leave more than kMinCoveragePct uncovered, the same route is flown with the arcs allowed
+// to cut in less (halving), down to stops everywhere.
+void verify(const std::vector<geometry::PolygonWithHoles>& free, double footprint, RouteScorer& scorer,
+            const AngleResult& a, PlanCandidate& c) {
+  if (!c.valid) return;
+  c.coverage_pct = coverageOf(free, footprint, c.flown.path);
+  if (c.coverage_pct >= kMinCoveragePct) return;
+  Route route = a.route;
+  for (double scale : {0.5, 0.25, 0.0}) {
+    for (size_t i = 0; i < route.max_tangent.size(); ++i) route.max_tangent[i] = scale * a.route.max_tangent[i];
+    c.flown = scorer.fly(route);
+    c.flown.path.pattern = c.pattern;
+    c.flown.path.sweep_angle = a.angle;
+    c.coverage_pct = coverageOf(free, footprint, c.flown.path);
+    if (c.coverage_pct >= kMinCoveragePct) return;
+  }
+}
+
+PlanCandidate finish(const std::vector<geometry::PolygonWithHoles>& free, double footprint, RouteScorer& scorer,
+                     const AngleResult& a, const std::string& pattern) {
+  PlanCandidate c = flyUnverified(scorer, a, pattern);
+  verify(free, footprint, scorer, a, c);
   return c;
 }
 
@@ -944,66 +993,7 @@ void PlannerSettings::validate() const {
 }
 
 double coveragePercent(const SurveyProblem& pr, const geometry::CoveragePath& path) {
-  double xmin = kInf, xmax = -kInf, ymin = kInf, ymax = -kInf;
-  for (const auto& p : pr.area.outer) {
-    xmin = std::min(xmin, p.x());
-    xmax = std::max(xmax, p.x());
-    ymin = std::min(ymin, p.y());
-    ymax = std::max(ymax, p.y());
-  }
-  const double step = std::max(pr.spacing / 4.0, std::sqrt((xmax - xmin) * (ymax - ymin) / kMaxCoverageSamples));
-  const int nx = static_cast<int>((xmax - xmin) / step) + 1, ny = static_cast<int>((ymax - ymin) / step) + 1;
-  std::vector<char> inside(static_cast<size_t>(nx) * ny, 0), covered(inside.size(), 0);
-  auto at = [&](int i, int j) { return Point(xmin + (i + 0.5) * step, ymin + (j + 0.5) * step); };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const Point p = at(i, j);
-      bool in = insideRing(p, pr.area.outer);
-      for (const auto& h : pr.area.holes) in = in && !insideRing(p, h);
-      for (const auto& h : pr.no_fly) in = in && !insideRing(p, h);
-      inside[static_cast<size_t>(j) * nx + i] = in;
-    }
-  const double half = 0.5 * pr.footprint;
-  // Marks the square footprint swept along segment s-e, reaching `reach` [m] beyond each end.
-  auto sweep = [&](const Point& st, const Point& en, double reach) {
-    const Point d = en - st;
-    const double L = d.norm();
-    if (L <= 0) return;
-    const Point u = d / L, nrm(-u.y(), u.x());
-    const double bx0 = std::min(st.x(), en.x()) - half, bx1 = std::max(st.x(), en.x()) + half;
-    const double by0 = std::min(st.y(), en.y()) - half, by1 = std::max(st.y(), en.y()) + half;
-    const int i0 = std::max(0, static_cast<int>((bx0 - xmin) / step)), i1 = std::min(nx - 1, static_cast<int>((bx1 - xmin) / step) + 1);
-    const int j0 = std::max(0, static_cast<int>((by0 - ymin) / step)), j1 = std::min(ny - 1, static_cast<int>((by1 - ymin) / step) + 1);
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) {
-        const Point q = at(i, j) - st;
-        const double a = q.dot(u), b = q.dot(nrm);
-        if (a >= -reach && a <= L + reach && std::abs(b) <= half + 1e-9) covered[static_cast<size_t>(j) * nx + i] = 1;
-      }
-  };
-  for (const auto& leg : path.legs) {
-    if (leg.role != LegRole::Sweep && leg.role != LegRole::Turn) continue;
-    if (leg.kind == geometry::PrimitiveKind::Line) {
-      sweep(leg.start, leg.end, half);
-    } else if (leg.kind == geometry::PrimitiveKind::Arc) {
-      // Arcs (rounded corners) as chords of at most a quarter footprint; no reach beyond the chords.
-      const int k = std::max(1, static_cast<int>(std::ceil(std::abs(leg.turn_angle) * leg.radius / (0.25 * pr.footprint))));
-      const double a0 = std::atan2(leg.start.y() - leg.center.y(), leg.start.x() - leg.center.x());
-      Point prev = leg.start;
-      for (int c = 1; c <= k; ++c) {
-        const double a = a0 + leg.turn_angle * c / k;
-        const Point p = c == k ? leg.end : Point(leg.center + leg.radius * Point(std::cos(a), std::sin(a)));
-        sweep(prev, p, 0.0);
-        prev = p;
-      }
-    }
-  }
-  size_t n_in = 0, n_cov = 0;
-  for (size_t k = 0; k < inside.size(); ++k) {
-    n_in += inside[k];
-    n_cov += inside[k] && covered[k];
-  }
-  return n_in == 0 ? 100.0 : 100.0 * static_cast<double>(n_cov) / static_cast<double>(n_in);
+  return coverageOf(freeRegions(pr), pr.footprint, path);
 }
 
 std::vector<std::string> checkPlan(const SurveyProblem& pr, const geometry::CoveragePath& path) {
@@ -1073,6 +1063,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   const StopTable stop = makeStopTable(scorer, 4.0 * diag);
 
   PlanResult res;
+  const auto free = freeRegions(problem);  // what the coverage checks measure against
   auto deg = [](double d) {
     std::ostringstream os;
     os << d;
@@ -1088,6 +1079,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   size_t finals = 0;
   while (finals < std::min(kFinishBest, ranked.size()) && std::isfinite(ranked[finals].score)) ++finals;
   std::vector<PlanCandidate> finished(finals);
+  std::vector<AngleResult> flown_from(finals);
   {
     std::vector<std::thread> pool;
     std::exception_ptr error;
@@ -1100,7 +1092,8 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
           for (size_t k = t; k < finals; k += nt) {
             const AngleResult both =
                 evaluateAngle(ctx, ranked[k].angle, local, stop, Objective::Energy, ps.exact_max_cells, true);
-            finished[k] = finish(problem, local, both.score < ranked[k].score ? both : ranked[k], "boustrophedon");
+            flown_from[k] = both.score < ranked[k].score ? both : ranked[k];
+            finished[k] = flyUnverified(local, flown_from[k], "boustrophedon");
           }
         } catch (...) {
           std::lock_guard<std::mutex> lock(m);
@@ -1110,8 +1103,20 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
     for (auto& th : pool) th.join();
     if (error) std::rethrow_exception(error);
   }
-  for (auto& c : finished)
+  // The exact coverage check (CGAL Booleans) costs as much as flying a route, so the finalists are
+  // checked lazily, cheapest first: once one keeps coverage, a finalist whose widest-arc energy is
+  // already higher cannot win (narrower arcs only take its energy up, not down).
+  std::vector<size_t> by_energy(finals);
+  for (size_t k = 0; k < finals; ++k) by_energy[k] = k;
+  std::sort(by_energy.begin(), by_energy.end(),
+            [&](size_t a, size_t b) { return finished[a].flown.energy < finished[b].flown.energy; });
+  for (size_t k : by_energy) {
+    auto& c = finished[k];
+    if (!c.valid) continue;
+    if (res.plan.valid && res.plan.coverage_pct >= kMinCoveragePct && c.flown.energy >= res.plan.flown.energy) break;
+    verify(free, problem.footprint, scorer, flown_from[k], c);
     if (better(c, res.plan)) res.plan = std::move(c);
+  }
   const double plan_angle = res.plan.valid ? res.plan.flown.path.sweep_angle : best.angle;  // [rad]
   if (ps.per_cell && std::isfinite(best.score)) {
     say("plan: per-cell search (each cell's own sweep angle or spiral)");
@@ -1123,7 +1128,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
     } else {
       const bool all_spiral = std::all_of(info.begin(), info.end(), [](const CellPlan& c) { return c.pattern == "spiral"; });
       const bool any_spiral = std::any_of(info.begin(), info.end(), [](const CellPlan& c) { return c.pattern == "spiral"; });
-      PlanCandidate c = finish(problem, scorer, *mixed, all_spiral ? "spiral" : any_spiral ? "mixed" : "boustrophedon");
+      PlanCandidate c = finish(free, problem.footprint, scorer, *mixed, all_spiral ? "spiral" : any_spiral ? "mixed" : "boustrophedon");
       // The reported angle: the largest boustrophedon cell's.
       double largest = -1.0;
       for (const auto& cp : info)
@@ -1141,7 +1146,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   say("plan: baselines");
   // (a) shortest path: length objective for angle and order, flown with our speeds.
   const AngleResult shortest = searchAngles(ctx, model, ss, stop, Objective::Length, ps, &res.candidates).front();
-  res.shortest_path = finish(problem, scorer, shortest, "boustrophedon");
+  res.shortest_path = finish(free, problem.footprint, scorer, shortest, "boustrophedon");
   // (b) ground-station default: parallel to the longest edge, one constant speed, stop at corners.
   const auto& outer = problem.area.outer;
   size_t longest = 0;
@@ -1154,7 +1159,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   gs.corners = CornerStrategy::Sharp;
   RouteScorer gs_scorer(model, gs);
   const AngleResult gsr = evaluateAngle(ctx, std::atan2(e.y(), e.x()), gs_scorer, stop, Objective::Length, ps.exact_max_cells);
-  res.ground_station_default = finish(problem, gs_scorer, gsr, "boustrophedon");
+  res.ground_station_default = finish(free, problem.footprint, gs_scorer, gsr, "boustrophedon");
   ++res.candidates;
   // (c) best spiral.
   std::string why;
@@ -1165,7 +1170,7 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   if (!ps.spirals) {
     res.notes.push_back("spirals were not searched (straight parallel lines only)");
   } else if (spiral && std::isfinite(spiral->score)) {
-    res.best_spiral = finish(problem, scorer, *spiral, "spiral");
+    res.best_spiral = finish(free, problem.footprint, scorer, *spiral, "spiral");
   } else {
     res.notes.push_back(why);
   }

@@ -100,8 +100,9 @@ using ProgressFn = std::function<void(const std::string&)>;
 PlanResult planCoverage(const SurveyProblem& problem, const energy::Vehicle& vehicle, const energy::EnergyModel& model,
                         const PlannerSettings& settings = {}, const ProgressFn& progress = {});
 
-/// Percentage of the area (minus holes and no-fly zones) within the footprint of the sweep legs
-/// of `path` (square footprint `footprint` wide, centred on the leg) on a sample grid [%].
+/// Percentage of the area (minus holes and no-fly zones) within the footprint of the sweep and
+/// turn legs of `path` (square footprint `footprint` wide, centred on the leg) [%]: exact, by
+/// geometry::checkCoverage (CGAL Boolean union of the swaths).
 double coveragePercent(const SurveyProblem& problem, const geometry::CoveragePath& path);
 
 /// Problems with `path` against `problem`: gaps between legs, legs entering a hole or no-fly zone.
