@@ -177,6 +177,24 @@ TEST(CoverageChecker, CountsOnlyTheAreaOutsideHoles) {
   EXPECT_NEAR(report.covered_area, 200 * 20, 1e-6);
 }
 
+TEST(CoverageChecker, RefusesANonSimpleAreaInEveryBuild) {
+  // CGAL checks simplicity only as a precondition, compiled out in Release: the checker must say so
+  // itself rather than return the "area" of a repeated vertex or a bow-tie.
+  g::Route r;
+  r.points = {{0, 10}, {200, 10}};
+  r.roles = {g::LegRole::Sweep};
+  const auto path = g::shapeCorners(r, {});
+  g::PolygonWithHoles repeated;
+  repeated.outer = {{0, 0}, {200, 0}, {200, 0}, {200, 150}, {0, 150}};
+  EXPECT_THROW(g::checkCoverage(repeated, {path}, 20.0), std::invalid_argument);
+  g::PolygonWithHoles bow_tie;
+  bow_tie.outer = {{0, 0}, {200, 150}, {200, 0}, {0, 150}};
+  EXPECT_THROW(g::checkCoverage(bow_tie, {path}, 20.0), std::invalid_argument);
+  auto bad_hole = squareWithHole();
+  bad_hole.holes.front().push_back(bad_hole.holes.front().back());
+  EXPECT_THROW(g::checkCoverage(bad_hole, {path}, 20.0), std::invalid_argument);
+}
+
 TEST(Boustrophedon, RectangleIsOneCellAtEverySweepAngle) {
   g::PolygonWithHoles area;
   area.outer = rectangle(0, 0, 252, 118);

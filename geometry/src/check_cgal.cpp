@@ -1,4 +1,7 @@
 // CGAL translation unit (slow to compile): Boolean set operations for the coverage checker.
+#include <stdexcept>
+#include <string>
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_set_2.h>
 
@@ -39,10 +42,22 @@ double coveredArea(const PolygonWithHoles& area, const std::vector<Ring>& swaths
     if (p.size() >= 3 && p.is_simple() && p.area() != 0) polys.push_back(std::move(p));
   }
   if (polys.empty()) return 0.0;
+  // CGAL checks simplicity only as a precondition, which Release builds compile out (a repeated
+  // vertex then gives a wrong area, not an error): check it here.
+  const EPolygon outer = toExact(area.outer);
+  if (outer.size() < 3 || !outer.is_simple())
+    throw std::invalid_argument("coverage check: the area's outer boundary is not a simple polygon (" +
+                                std::to_string(area.outer.size()) + " vertices; repeated vertex or self-intersection)");
   CGAL::Polygon_set_2<EK> covered;
   covered.join(polys.begin(), polys.end());
-  CGAL::Polygon_set_2<EK> region(toExact(area.outer));
-  for (const auto& h : area.holes) region.difference(toExact(h));
+  CGAL::Polygon_set_2<EK> region(outer);
+  for (size_t i = 0; i < area.holes.size(); ++i) {
+    const EPolygon h = toExact(area.holes[i]);
+    if (h.size() < 3 || !h.is_simple())
+      throw std::invalid_argument("coverage check: hole " + std::to_string(i) +
+                                  " is not a simple polygon (repeated vertex or self-intersection)");
+    region.difference(h);
+  }
   covered.intersection(region);
   return areaOf(covered);
 }

@@ -865,17 +865,36 @@ std::optional<AngleResult> perCellPlan(const Context& ctx, const energy::EnergyM
   return best;
 }
 
+// A ring without consecutive repeated vertices: CGAL's Boolean operations need simple polygons,
+// and the planner itself tolerates repeats (PlannerDegenerate.DuplicateAndCollinearVerticesArePlanned).
+Ring withoutRepeats(const Ring& ring) {
+  Ring out;
+  for (const auto& p : ring)
+    if (out.empty() || (p - out.back()).norm() > 1e-9 * std::max(1.0, p.norm())) out.push_back(p);
+  while (out.size() > 1 && (out.front() - out.back()).norm() <= 1e-9 * std::max(1.0, out.front().norm())) out.pop_back();
+  return out;
+}
+
 // The area minus its holes and no-fly zones (subtracted with CGAL as `plan` does; a zone partly
 // outside is clipped): what the coverage must reach.
 std::vector<geometry::PolygonWithHoles> freeRegions(const SurveyProblem& pr) {
+  geometry::PolygonWithHoles area;
+  area.outer = withoutRepeats(pr.area.outer);
+  for (const auto& h : pr.area.holes) {
+    Ring r = withoutRepeats(h);
+    if (r.size() >= 3) area.holes.push_back(std::move(r));
+  }
   geometry::SurveyArea free;
-  free.regions = {pr.area};
+  free.regions = {area};
   if (!pr.no_fly.empty()) {
     geometry::NoFlyZones zones;
-    zones.zones = pr.no_fly;
-    for (auto& z : zones.zones)
-      if (geometry::signedArea(z) < 0) std::reverse(z.begin(), z.end());
     zones.source = "SurveyProblem.no_fly";
+    for (const auto& z : pr.no_fly) {
+      Ring r = withoutRepeats(z);
+      if (r.size() < 3) continue;
+      if (geometry::signedArea(r) < 0) std::reverse(r.begin(), r.end());
+      zones.zones.push_back(std::move(r));
+    }
     geometry::subtractNoFlyZones(free, zones);
   }
   return free.regions;

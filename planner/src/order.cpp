@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/dag_shortest_paths.hpp>
+
 
 namespace wattswath::planner {
 namespace {
@@ -49,46 +52,52 @@ double orderCost(const GtspInstance& g, const std::vector<std::vector<int>>& mem
   return c;
 }
 
+// The graph of cells and their candidates for a fixed cluster order, as a Boost.Graph DAG: vertex
+// 0 is the depot leaving, then every candidate of layer 1, 2, ..., k (a candidate is a way through
+// its cell: entry point, exit point, internal cost), then the depot returning. An edge from a
+// candidate to one of the next layer weighs the transit between them plus the next candidate's
+// internal cost; the best candidates are the shortest depot-to-depot path (dag_shortest_paths).
+// orderCost() computes the same cost without building the graph, for the local search's moves.
 GtspTour bestForOrder(const GtspInstance& g, const std::vector<std::vector<int>>& members,
                       const std::vector<int>& order) {
-  const int n = static_cast<int>(g.cluster.size());
-  std::vector<std::vector<double>> dist(order.size());
-  std::vector<std::vector<int>> from(order.size());
-  for (size_t l = 0; l < order.size(); ++l) {
-    const auto& cur = members[order[l]];
-    dist[l].assign(cur.size(), kInf);
-    from[l].assign(cur.size(), -1);
-    for (size_t b = 0; b < cur.size(); ++b) {
-      if (l == 0) {
-        dist[l][b] = g.transit(n, cur[b]) + g.cost[cur[b]];
-        continue;
-      }
-      const auto& prev = members[order[l - 1]];
-      for (size_t a = 0; a < prev.size(); ++a) {
-        const double c = dist[l - 1][a] + g.transit(prev[a], cur[b]) + g.cost[cur[b]];
-        if (c < dist[l][b]) {
-          dist[l][b] = c;
-          from[l][b] = static_cast<int>(a);
-        }
-      }
-    }
-  }
   GtspTour t;
   t.cost = kInf;
   if (order.empty()) return t;
-  const auto& last = members[order.back()];
-  int at = -1;
-  for (size_t b = 0; b < last.size(); ++b) {
-    const double c = dist.back()[b] + g.transit(last[b], n);
-    if (c < t.cost) {
-      t.cost = c;
-      at = static_cast<int>(b);
-    }
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+                                      boost::property<boost::edge_weight_t, double>>;
+  const int n = static_cast<int>(g.cluster.size());
+  std::vector<int> first_vertex(order.size() + 1);  // graph vertex of each layer's first candidate
+  int vertices = 1;
+  for (size_t l = 0; l < order.size(); ++l) {
+    first_vertex[l] = vertices;
+    vertices += static_cast<int>(members[order[l]].size());
   }
+  first_vertex[order.size()] = vertices;  // the returning depot
+  Graph dag(static_cast<size_t>(vertices) + 1);
+  const auto& first = members[order[0]];
+  for (size_t b = 0; b < first.size(); ++b)
+    boost::add_edge(0, first_vertex[0] + static_cast<int>(b), g.transit(n, first[b]) + g.cost[first[b]], dag);
+  for (size_t l = 1; l < order.size(); ++l) {
+    const auto& prev = members[order[l - 1]];
+    const auto& now = members[order[l]];
+    for (size_t a = 0; a < prev.size(); ++a)
+      for (size_t b = 0; b < now.size(); ++b)
+        boost::add_edge(first_vertex[l - 1] + static_cast<int>(a), first_vertex[l] + static_cast<int>(b),
+                        g.transit(prev[a], now[b]) + g.cost[now[b]], dag);
+  }
+  const auto& last = members[order.back()];
+  for (size_t b = 0; b < last.size(); ++b)
+    boost::add_edge(first_vertex[order.size() - 1] + static_cast<int>(b), vertices, g.transit(last[b], n), dag);
+  std::vector<double> dist(static_cast<size_t>(vertices) + 1, kInf);
+  std::vector<std::size_t> pred(static_cast<size_t>(vertices) + 1);
+  boost::dag_shortest_paths(dag, 0, boost::distance_map(dist.data()).predecessor_map(pred.data()));
+  t.cost = dist[static_cast<size_t>(vertices)];
+  if (!std::isfinite(t.cost)) return t;
   t.nodes.resize(order.size());
+  std::size_t v = pred[static_cast<size_t>(vertices)];
   for (size_t l = order.size(); l-- > 0;) {
-    t.nodes[l] = members[order[l]][at];
-    at = from[l][at];
+    t.nodes[l] = members[order[l]][v - static_cast<std::size_t>(first_vertex[l])];
+    v = pred[v];
   }
   return t;
 }
