@@ -382,44 +382,6 @@ void registerFit(CLI::App& app) {
   });
 }
 
-std::string fmtNumber(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
-
-// Waypoints "x y z" or "x,y,z" per line (ENU metres); '#' comments and a header line are skipped.
-std::vector<Eigen::Vector3d> readPath(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the path file");
-  std::vector<Eigen::Vector3d> w;
-  std::string line;
-  int ln = 0;
-  while (std::getline(in, line)) {
-    ++ln;
-    for (char& c : line)
-      if (c == ',' || c == '\r' || c == '\t') c = ' ';
-    if (line.find_first_not_of(' ') == std::string::npos || line[line.find_first_not_of(' ')] == '#') continue;
-    std::istringstream is(line);
-    double x, y, z;
-    std::string rest;
-    if (!(is >> x >> y >> z) || (is >> rest)) {
-      std::istringstream first(line);
-      double probe = 0.0;
-      if (w.empty() && ln == 1 && !(first >> probe)) continue;  // a header (not a row of numbers)
-      throw std::runtime_error(path + ":" + std::to_string(ln) + ": expected three numbers x y z [m], got '" + line + "'");
-    }
-    if (std::abs(x) > en::tol::kLogMaxMagnitude || std::abs(y) > en::tol::kLogMaxMagnitude ||
-        std::abs(z) > en::tol::kLogMaxMagnitude) {
-      throw std::runtime_error(path + ":" + std::to_string(ln) + ": expected three numbers x y z [m] of magnitude at most " +
-                               fmtNumber(en::tol::kLogMaxMagnitude) + ", got '" + line + "'");
-    }
-    w.emplace_back(x, y, z);
-  }
-  if (w.size() < 2) throw std::runtime_error(path + ": a path needs at least 2 waypoints");
-  return w;
-}
-
 void registerSimulate(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects, out, path;
@@ -485,7 +447,7 @@ void registerSimulate(CLI::App& app) {
         o->path.empty() ? std::vector<Eigen::Vector3d>{{0, 0, 0},    {0, 0, 15},    {160, 0, 15}, {160, 25, 15},
                                                        {0, 25, 15},  {0, 50, 15},   {160, 50, 15}, {160, 50, 25},
                                                        {80, 90, 25}, {0, 0, 25},    {0, 0, 0}}
-                        : readPath(o->path);
+                        : en::readWaypointPath(o->path);
     en::FlightLog log;
     try {
       log = en::simulateFlight(path, model, o->sim);

@@ -155,3 +155,14 @@ TEST(CsvLog, WriterRejectsNonFinitePower) {
     EXPECT_NE(std::string(e.what()).find("sample 1"), std::string::npos) << e.what();
   }
 }
+
+TEST(WaypointPath, HeaderCommentsSeparatorsAndCrlf) {
+  const auto w = readWaypointPath(sourcePath("tests/data/good/path_lawnmower.txt"));
+  ASSERT_EQ(w.size(), 8u);
+  EXPECT_EQ(w[2], Eigen::Vector3d(160, 0, 15));
+  EXPECT_EQ(w[4], Eigen::Vector3d(0, 25, 15));   // spaces
+  EXPECT_EQ(w[5], Eigen::Vector3d(0, 50, 15));   // tabs and CR LF
+  EXPECT_THROW(parseWaypointPath("0 0 0\n", "one.txt"), std::runtime_error);
+  EXPECT_THROW(parseWaypointPath("0 0 0\n1 2 nan\n", "nan.txt"), std::runtime_error);
+  EXPECT_THROW(readWaypointPath(sourcePath("tests/data/bad/does_not_exist.txt")), std::runtime_error);
+}

@@ -415,4 +415,47 @@ std::string writeCsvLog(const FlightLog& log) {
   return out;
 }
 
+std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const std::string& source) {
+  std::istringstream in(text);
+  std::vector<Eigen::Vector3d> w;
+  std::string line;
+  int ln = 0;
+  auto number = [](double x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+  };
+  while (std::getline(in, line)) {
+    ++ln;
+    for (char& c : line)
+      if (c == ',' || c == '\r' || c == '\t') c = ' ';
+    if (line.find_first_not_of(' ') == std::string::npos || line[line.find_first_not_of(' ')] == '#') continue;
+    std::istringstream is(line);
+    double x, y, z;
+    std::string rest;
+    if (!(is >> x >> y >> z) || (is >> rest)) {
+      std::istringstream first(line);
+      double probe = 0.0;
+      if (w.empty() && ln == 1 && !(first >> probe)) continue;  // a header (not a row of numbers)
+      throw std::runtime_error(source + ":" + std::to_string(ln) + ": expected three numbers x y z [m], got '" + line + "'");
+    }
+    if (!(std::abs(x) <= tol::kLogMaxMagnitude && std::abs(y) <= tol::kLogMaxMagnitude &&
+          std::abs(z) <= tol::kLogMaxMagnitude)) {
+      throw std::runtime_error(source + ":" + std::to_string(ln) + ": expected three numbers x y z [m] of magnitude at most " +
+                               number(tol::kLogMaxMagnitude) + ", got '" + line + "'");
+    }
+    w.emplace_back(x, y, z);
+  }
+  if (w.size() < 2) throw std::runtime_error(source + ": a path needs at least 2 waypoints");
+  return w;
+}
+
+std::vector<Eigen::Vector3d> readWaypointPath(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the path file");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return parseWaypointPath(os.str(), path);
+}
+
 }  // namespace wattswath::energy

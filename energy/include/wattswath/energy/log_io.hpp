@@ -4,6 +4,9 @@
 /// derivation of velocity and acceleration when a log does not carry them.
 
 #include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "wattswath/energy/flight_log.hpp"
 
@@ -44,5 +47,15 @@ std::string writeCsvLog(const FlightLog& log);
 /// Fills velocities (when `velocity`) and accelerations (when `acceleration`) of `log` from
 /// positions and velocities with the smoothing of `d`; sets the *_derived flags.
 void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const DerivativeSettings& d = {});
+
+/// Parses a waypoint path (what `simulate --path` flies): "x y z" or "x,y,z" [m, local ENU] per
+/// line; blank lines and '#' comments are skipped, and so is a first line that does not start with
+/// a number (a header). Throws std::runtime_error "SOURCE:LINE: expected three numbers x y z [m],
+/// got '...'" for anything else, for a coordinate beyond tol::kLogMaxMagnitude, and "SOURCE: a path
+/// needs at least 2 waypoints".
+std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const std::string& source);
+
+/// Reads a waypoint path file as parseWaypointPath() does; throws naming `path` when it cannot be read.
+std::vector<Eigen::Vector3d> readWaypointPath(const std::string& path);
 
 }  // namespace wattswath::energy
