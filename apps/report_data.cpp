@@ -36,6 +36,7 @@ report::TurnReportData turnReportData(const en::EnergyModel& model, const en::Pr
   std::vector<double> lengths = {25.0, 50.0, 100.0, 150.0, 300.0, 600.0, 1200.0, 2400.0};
   addSorted(lengths, distance);
   report::TurnReportData d;
+  d.focus_beta = angle_deg * kDegToRad;
   int skipped = 0;
   std::string first;
   for (const double a : angles) {

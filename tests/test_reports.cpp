@@ -94,6 +94,35 @@ TEST(Reports, PhaseLegendInFlightOrderWhateverComesFirst) {
   EXPECT_LT(at("brake"), at("turn"));
 }
 
+TEST(Reports, TurnEnergyChartDrawsOneAngleWhenTheAnglesOverlap) {
+  // Table V's energies differ by under 1 % between angles, so four angles' lines hid each other.
+  auto d = sampleTurns();
+  for (auto& row : d.rows) {  // make the angle matter by 1 part in 1000
+    row.sharp_energy = 2 * (1800 + 250 * row.leg_length) * (1.0 + 1e-3 * row.beta);
+    row.rounded_energy = 2 * 240 * row.leg_length * (1.0 + 1e-3 * row.beta);
+  }
+  d.focus_beta = 90.0 * kPi() / 180.0;
+  std::string html = wr::turnReport(d).html();
+  const auto saving = html.find("Saving of the rounded turn");
+  ASSERT_NE(saving, std::string::npos);
+  const std::string energy = html.substr(0, saving);
+  EXPECT_NE(energy.find("at 90 deg"), std::string::npos);
+  EXPECT_NE(energy.find("rounded, 90 deg"), std::string::npos);
+  EXPECT_EQ(energy.find("rounded, 45 deg"), std::string::npos);
+  EXPECT_NE(energy.find("The other angles (45, 135 deg) lie within 0.2 %"), std::string::npos);
+  EXPECT_NE(html.find(">45 deg</text>", saving), std::string::npos);  // the saving chart keeps every angle
+  // With the sample's angle-dependent energies (16 % apart) every angle is drawn.
+  html = wr::turnReport(sampleTurns()).html();
+  EXPECT_NE(html.find("rounded, 45 deg"), std::string::npos);
+  EXPECT_EQ(html.find("The other angles"), std::string::npos);
+  // Only the sharp stops overlap: all angles drawn, and the caption says which lines coincide.
+  d = sampleTurns();
+  for (auto& row : d.rows) row.sharp_energy = 2 * (1800 + 250 * row.leg_length) * (1.0 + 1e-3 * row.beta);
+  html = wr::turnReport(d).html();
+  EXPECT_NE(html.find("rounded, 45 deg"), std::string::npos);
+  EXPECT_NE(html.find("The sharp-stop lines of all angles lie within 0.2 % of each other"), std::string::npos);
+}
+
 TEST(Reports, TurnAndSpeedReports) {
   const auto t = wr::turnReport(sampleTurns());
   EXPECT_EQ(checkFigures(t), 2);
