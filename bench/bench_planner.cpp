@@ -1,8 +1,7 @@
 // Planner speed: the full energy search (all sweep angles coarse 10 deg then 1 deg, all start
 // corners, corner choices, cell order, transits, baselines) against a length-objective greedy plan
 // measured in the same run. Areas: the E-Spiral rectangle, 1 km^2 with 3 holes, 100 ha with 10
-// holes, and the IRIS+ real-flight area with its no-fly zone when ../shared/data is present
-// (built in from the coordinates of data/areas/iris_area.geojson when geoio's reader is absent).
+// holes, and the IRIS+ real-flight area with its no-fly zone (data/areas/iris_area.geojson).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -10,6 +9,7 @@
 
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/planner/coverage.hpp"
 
 namespace {
@@ -47,15 +47,16 @@ planner::SurveyProblem rectangle() {
   return p;
 }
 
-// The IRIS+ real-flight area (about 150 m x 170 m) with a no-fly zone: a stand-in of the same size
-// and shape class; the CLI test and docs use the real file.
-planner::SurveyProblem irisLike() {
+// The IRIS+ real-flight area (about 150 m x 170 m, 11 vertices) with its no-fly zone as a hole and
+// its home point, read from the bundled data/areas/iris_area.geojson (converted from the shared
+// .waypoints files), planned at 15 m between passes as in scripts/example.sh.
+planner::SurveyProblem irisArea() {
+  static const geometry::SurveyArea a =
+      geometry::readSurveyArea(std::string(WATTSWATH_SOURCE_DIR) + "/data/areas/iris_area.geojson");
   planner::SurveyProblem p;
-  p.area.outer = {{0, 0}, {85, -3}, {160, 10}, {150, 120}, {70, 170}, {-10, 110}};
-  p.no_fly = {square(70, 80, 12)};
-  p.spacing = 21.45;
-  p.footprint = 23.8;
-  p.home = {0, -10};
+  p.area = a.polygon();
+  p.home = a.home.value_or(p.area.outer.front());
+  p.spacing = p.footprint = 15.0;
   return p;
 }
 
@@ -110,15 +111,15 @@ void BM_Scaling_Vertices(benchmark::State& s) { scaling(s, wavy(static_cast<int>
 
 void BM_Rectangle_EnergySearch(benchmark::State& s) { run(s, rectangle(), true); }
 void BM_Rectangle_Baseline(benchmark::State& s) { run(s, rectangle(), false); }
-void BM_IrisArea_EnergySearch(benchmark::State& s) { run(s, irisLike(), true); }
-void BM_IrisArea_Baseline(benchmark::State& s) { run(s, irisLike(), false); }
+void BM_IrisArea_EnergySearch(benchmark::State& s) { run(s, irisArea(), true); }
+void BM_IrisArea_Baseline(benchmark::State& s) { run(s, irisArea(), false); }
 void BM_Field1km2_3holes_EnergySearch(benchmark::State& s) { run(s, field(1000, 3, 1), true); }
 void BM_Field1km2_3holes_Baseline(benchmark::State& s) { run(s, field(1000, 3, 1), false); }
 void BM_Field100ha_10holes_EnergySearch(benchmark::State& s) { run(s, field(1000, 10, 2), true); }
 void BM_Field100ha_10holes_Baseline(benchmark::State& s) { run(s, field(1000, 10, 2), false); }
 // The energy search without the per-cell stage (one sweep angle for the whole area): what the
 // per-cell search (each cell its own angle or a spiral) costs on top.
-void BM_IrisArea_OneAngleSearch(benchmark::State& s) { run(s, irisLike(), true, false); }
+void BM_IrisArea_OneAngleSearch(benchmark::State& s) { run(s, irisArea(), true, false); }
 void BM_Field1km2_3holes_OneAngleSearch(benchmark::State& s) { run(s, field(1000, 3, 1), true, false); }
 void BM_Field100ha_10holes_OneAngleSearch(benchmark::State& s) { run(s, field(1000, 10, 2), true, false); }
 

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "test_util.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/energy/marins.hpp"
 #include "wattswath/energy/optimal_speed.hpp"
 
@@ -200,6 +201,44 @@ TEST(MarinsClosedForm, FastPathEqualsGenericModelOnRandomLegs) {
     EXPECT_GT(feasible, 1000);
     EXPECT_GT(infeasible, 10);
   }
+}
+
+TEST(MarinsClosedForm, ForLegsOfAModelWithMarinsEffectsOnly) {
+  // The planner flies legs with the closed form when the model holds Marins' effects only, with
+  // whatever coefficients (fitted ones too) and limits: it must equal the model on every leg.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> len(0.5, 900.0), spd(0.0, 18.0);
+  const ProfileLimits lim{1.3, 0.7};
+  for (auto drag : {DragIntegration::Exact, DragIntegration::PaperCruiseSpeed}) {
+    auto model = legModel(drag);
+    model.effect("hover").setCoefficientValues({231.5});
+    model.effect("kinetic").setCoefficientValues({2.9});
+    model.effect("parasitic_drag").setCoefficientValues({0.21});
+    const auto fast = MarinsClosedForm::forLegsOf(model, lim);
+    ASSERT_TRUE(fast.has_value());
+    EXPECT_TRUE(std::isnan(fast->p0));  // a model does not split hover power into P0 and eta
+    int feasible = 0;
+    for (int i = 0; i < 1000; ++i) {
+      const double d = len(rng), ve = spd(rng), vc = 0.3 + spd(rng), vx = spd(rng);
+      try {
+        const double ref = model.energy(buildLegProfile(d, ve, vc, vx, lim));
+        EXPECT_NEAR(fast->legEnergy(d, ve, vc, vx), ref, 1e-9 * ref) << d << " " << ve << " " << vc << " " << vx;
+        ++feasible;
+      } catch (const std::invalid_argument&) {
+        EXPECT_TRUE(std::isnan(fast->legEnergy(d, ve, vc, vx)));
+      }
+    }
+    EXPECT_GT(feasible, 500);
+  }
+  // Without the drag effect: drag costs nothing; with any other effect: no closed form.
+  auto no_drag = legModel();
+  no_drag.remove("parasitic_drag");
+  const auto nd = MarinsClosedForm::forLegsOf(no_drag, lim);
+  ASSERT_TRUE(nd.has_value());
+  EXPECT_NEAR(nd->legEnergy(300.0, 0.0, 10.0, 0.0), no_drag.energy(buildLegProfile(300.0, 0.0, 10.0, 0.0, lim)), 1e-9);
+  auto climb = legModel();
+  climb.add(ClimbEffect(1.0, 0.0));
+  EXPECT_FALSE(MarinsClosedForm::forLegsOf(climb, lim).has_value());
 }
 
 TEST(MarinsClosedForm, ExactDragIsBelowPaperDragByKv4Over2a) {

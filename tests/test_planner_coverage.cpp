@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/path_profile.hpp"
 #include "wattswath/geometry/check.hpp"
@@ -83,6 +84,42 @@ TEST(Speed, LegOptimumBeatsAGridOfCruiseSpeeds) {
       EXPECT_LE(e, model.energy(energy::buildLegProfile(L, 0.0, c, 0.0, {1.0, 1.0})) + 1e-6) << L << " " << c;
   }
   EXPECT_TRUE(std::isinf(s.legEnergy(1.0, 0.0, 10.0, 16.0)));  // cannot reach 10 m/s in 1 m
+}
+
+TEST(Speed, ClosedFormScorerEqualsTheGenericModel) {
+  // With Marins' effects only the scorer optimises legs over the inlined closed form; a zero climb
+  // effect (nothing on level legs) forces the generic optimiser: legs and routes must agree.
+  const auto v = iris();
+  const auto marins = energy::marinsModel(v);
+  auto generic = marins;
+  generic.add(energy::ClimbEffect(0.0, 0.0));
+  const auto settings = SpeedSettings::fromVehicle(v);
+  RouteScorer fast(marins, settings), slow(generic, settings);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> len(0.5, 800.0), spd(0.0, 16.0);
+  int finite = 0;
+  for (int i = 0; i < 600; ++i) {
+    const double d = len(rng), vi = spd(rng), vo = spd(rng), cap = 1.0 + spd(rng);
+    const double a = fast.legEnergy(d, vi, vo, cap), b = slow.legEnergy(d, vi, vo, cap);
+    if (!std::isfinite(b)) {
+      EXPECT_FALSE(std::isfinite(a)) << d << " " << vi << " " << vo << " " << cap;
+      continue;
+    }
+    ++finite;
+    EXPECT_NEAR(a, b, 1e-7 * b) << d << " " << vi << " " << vo << " " << cap;
+    // The optimum is flat: speeds agree to about the square root of the energies' agreement.
+    EXPECT_NEAR(fast.legCruise(d, vi, vo, cap), slow.legCruise(d, vi, vo, cap), 2e-3) << d << " " << vi << " " << vo << " " << cap;
+  }
+  EXPECT_GT(finite, 300);
+  for (int k = 0; k < 20; ++k) {  // seeded random routes with arcs allowed at every corner
+    Route r;
+    r.points = {{0, 0}};
+    r.max_tangent = {0};
+    std::uniform_real_distribution<double> xy(-300.0, 300.0), tan(0.0, 30.0);
+    for (int j = 0; j < 8; ++j) r.add({xy(rng), xy(rng)}, j % 2 ? LegRole::Sweep : LegRole::Transit, j == 7 ? 0.0 : tan(rng));
+    const double a = fast.energy(r), b = slow.energy(r);
+    EXPECT_NEAR(a, b, 1e-6 * b) << k;
+  }
 }
 
 TEST(Speed, AutoCornersCostNoMoreThanEitherStrategy) {

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "wattswath/energy/model.hpp"
 #include "wattswath/energy/tolerances.hpp"
 
 namespace wattswath::energy {
@@ -74,6 +75,28 @@ MarinsClosedForm MarinsClosedForm::fromVehicle(const Vehicle& v, DragIntegration
   m.k_drag = 0.5 * m.rho_cda / m.eta;
   m.accel = m.decel = v.max_acceleration_mps2;
   m.drag = drag;
+  return m;
+}
+
+std::optional<MarinsClosedForm> MarinsClosedForm::forLegsOf(const EnergyModel& model, const ProfileLimits& limits) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  MarinsClosedForm m;
+  m.p0 = m.eta = m.mass = m.rho_cda = kNaN;
+  m.p_hover = m.m_eff = m.k_drag = 0.0;  // an absent effect contributes nothing
+  m.accel = limits.acceleration;
+  m.decel = limits.deceleration;
+  for (const auto& e : model.effects()) {
+    if (const auto* h = dynamic_cast<const HoverEffect*>(e.get())) {
+      m.p_hover = h->coefficient("hover_power");
+    } else if (const auto* k = dynamic_cast<const KineticEffect*>(e.get())) {
+      m.m_eff = k->coefficient("effective_mass");
+    } else if (const auto* d = dynamic_cast<const ParasiticDragEffect*>(e.get())) {
+      m.k_drag = d->powerCoefficient();
+      m.drag = d->mode();
+    } else if (dynamic_cast<const YawRateEffect*>(e.get()) == nullptr) {
+      return std::nullopt;  // a straight leg never yaws, so the yaw effect adds nothing there
+    }
+  }
   return m;
 }
 

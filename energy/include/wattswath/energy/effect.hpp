@@ -121,6 +121,8 @@ class ParasiticDragEffect final : public Effect {
   std::unique_ptr<Effect> clone() const override { return std::make_unique<ParasiticDragEffect>(*this); }
   /// The integration mode.
   DragIntegration mode() const { return mode_; }
+  /// rho/2 * C_D A / eta_tot: electrical drag power over v^3 [kg/m].
+  double powerCoefficient() const { return 0.5 * rho_ * coeffs_[0].value / eta_; }
 
  private:
   double rho_;

@@ -8,11 +8,15 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "wattswath/energy/effect.hpp"
 #include "wattswath/energy/vehicle.hpp"
 
 namespace wattswath::energy {
+
+class EnergyModel;
+struct ProfileLimits;
 
 /// Which terms of Marins Eq. 9 to keep (Eq. 11; Fig. 3 plots all three variants).
 struct MarinsTerms {
@@ -41,6 +45,19 @@ struct MarinsClosedForm {
 
   /// Coefficients of vehicle `v` (accel = decel = v.max_acceleration_mps2).
   static MarinsClosedForm fromVehicle(const Vehicle& v, DragIntegration drag = DragIntegration::Exact);
+
+  /// The closed form of `model`'s straight-leg energy when its effects are Marins' own only (hover,
+  /// kinetic, parasitic drag, yaw rate: any coefficients, either drag integration), braking and
+  /// accelerating at `limits`; std::nullopt when any other effect is present. Sets what legEnergy
+  /// reads (p_hover, m_eff, k_drag, accel, decel, drag); p0, eta, mass and rho_cda are NaN, since a
+  /// model does not say how its hover power splits into rotor power and efficiency.
+  static std::optional<MarinsClosedForm> forLegsOf(const EnergyModel& model, const ProfileLimits& limits);
+
+  /// Highest speed a leg of `d` [m] entered at `ve` and left at `vx` [m/s] can reach [m/s] (the
+  /// triangle's peak; cruise speeds above it fly the same profile).
+  double peakSpeed(double d, double ve, double vx) const {
+    return std::sqrt((2.0 * d * accel * decel + ve * ve * decel + vx * vx * accel) / (accel + decel));
+  }
 
   /// Energy of a straight level leg of `d` [m] entered at `ve`, cruising at `vc`, left at `vx` [m/s]
   /// [J]: the same profile as buildLegProfile (trapezoid, triangle, valley) and the same numbers as

@@ -8,9 +8,11 @@
 /// for the chosen geometry.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "wattswath/energy/marins.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/path_profile.hpp"
 #include "wattswath/energy/vehicle.hpp"
@@ -103,6 +105,7 @@ class RouteScorer {
   double optimise(double length, double v_in, double v_out, double cap, double* cruise);
   energy::EnergyModel model_;
   SpeedSettings settings_;
+  std::optional<energy::MarinsClosedForm> closed_;  // the inlined leg energy when the model is Marins' own
   struct Cache;
   std::shared_ptr<Cache> cache_;
 };
