@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -1137,6 +1139,24 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
     if (better(c, res.plan)) res.plan = std::move(c);
   }
   const double plan_angle = res.plan.valid ? res.plan.flown.path.sweep_angle : best.angle;  // [rad]
+  // (c) The best spiral needs only the plan's angle (to cut an area with holes into pieces): with a
+  // second thread it runs beside the per-cell search and the baselines. It has its own scorer in
+  // every case, so its numbers do not depend on the number of threads.
+  std::string spiral_why;
+  int spiral_count = 0;
+  std::optional<PlanCandidate> spiral_plan;
+  auto spiral_stage = [&ctx, &model, &ss, &stop, &ps, &free, &problem, plan_angle, &spiral_count, &spiral_why,
+                       &spiral_plan]() {
+    RouteScorer local(model, ss);
+    const auto s = spiralPlan(ctx, local, stop, Objective::Energy, ps.exact_max_cells, plan_angle, &spiral_count, &spiral_why);
+    if (s && std::isfinite(s->score)) {
+      spiral_plan = finish(free, problem.footprint, local, *s, "spiral");
+    } else if (spiral_why.empty()) {
+      spiral_why = "no spiral: no start vertex gave a flyable route";
+    }
+  };
+  std::future<void> spiral_job;  // destroyed (joined) before anything the stage refers to
+  if (ps.spirals && ps.threads > 1) spiral_job = std::async(std::launch::async, spiral_stage);
   if (ps.per_cell && std::isfinite(best.score)) {
     say("plan: per-cell search (each cell's own sweep angle or spiral)");
     std::vector<CellPlan> info;
@@ -1180,18 +1200,22 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   const AngleResult gsr = evaluateAngle(ctx, std::atan2(e.y(), e.x()), gs_scorer, stop, Objective::Length, ps.exact_max_cells);
   res.ground_station_default = finish(free, problem.footprint, gs_scorer, gsr, "boustrophedon");
   ++res.candidates;
-  // (c) best spiral.
-  std::string why;
+  // (c) best spiral (started above when there is a second thread).
   say("plan: spirals");
-  const auto spiral = ps.spirals ? spiralPlan(ctx, scorer, stop, Objective::Energy, ps.exact_max_cells, plan_angle,
-                                              &res.candidates, &why)
-                                 : std::nullopt;
   if (!ps.spirals) {
     res.notes.push_back("spirals were not searched (straight parallel lines only)");
-  } else if (spiral && std::isfinite(spiral->score)) {
-    res.best_spiral = finish(free, problem.footprint, scorer, *spiral, "spiral");
   } else {
-    res.notes.push_back(why);
+    if (spiral_job.valid()) {
+      spiral_job.get();  // rethrows what the stage threw
+    } else {
+      spiral_stage();
+    }
+    res.candidates += spiral_count;
+    if (spiral_plan) {
+      res.best_spiral = std::move(*spiral_plan);
+    } else {
+      res.notes.push_back(spiral_why);
+    }
   }
   // The plan is the least-energy candidate of all scored, baselines included (so it never costs
   // more than one that keeps coverage).
