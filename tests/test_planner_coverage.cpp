@@ -45,6 +45,15 @@ void expectValid(const SurveyProblem& pr, const PlanResult& r) {
   }
   EXPECT_GT(r.lower_bound_j, 0.0);
   EXPECT_LT(r.lower_bound_j, r.plan.flown.energy);
+  // A bound for every flight that keeps coverage, the baselines too.
+  for (const PlanCandidate* c : {&r.shortest_path, &r.ground_station_default}) {
+    if (c->valid && c->coverage_pct >= 99.0) {
+      EXPECT_LT(r.lower_bound_j, c->flown.energy);
+    }
+  }
+  if (r.best_spiral && r.best_spiral->coverage_pct >= 99.0) {
+    EXPECT_LT(r.lower_bound_j, r.best_spiral->flown.energy);
+  }
   // Speeds: every leg within the vehicle limit; junctions continuous.
   const auto& sp = r.plan.flown.speeds;
   ASSERT_EQ(sp.junction.size(), r.plan.flown.path.legs.size() + 1);
@@ -255,6 +264,33 @@ TEST(Planner, RectangleOfMarinsEtAl) {
   EXPECT_TRUE(checkPlan(pr, r.best_spiral->flown.path).empty());
   // The plan is cheaper than what a ground station flies by default.
   EXPECT_LT(r.plan.flown.energy, 0.95 * r.ground_station_default.flown.energy);
+}
+
+TEST(Planner, LowerBoundCountsTheStartAndStopEveryFlightMakes) {
+  // Rectangle 252 m x 118 m, home 5 m off a corner: the swath length is A / s - w; a flight from
+  // rest to rest over it costs at least the best stop-to-stop leg of that length (Marins' effects).
+  const auto v = iris();
+  const auto model = energy::marinsModel(v);
+  const auto pr = rectangle();
+  PlannerSettings ps;
+  ps.per_cell = false;
+  const auto r = planCoverage(pr, v, model, ps);
+  const double approach = std::sqrt(50.0);  // home (-5, -5) to the corner (0, 0)
+  const double swath = 252.0 * 118.0 / pr.spacing - pr.footprint;
+  const double per_metre = model.minEnergyPerMetre(16.0) * (swath + 2.0 * approach);
+  RouteScorer scorer(model, SpeedSettings::fromVehicle(v));
+  const double rest_to_rest = scorer.legEnergy(swath + 2.0 * approach, 0.0, 0.0, 16.0);
+  // At least the kinetic energy of reaching 10 m/s and braking from it (the best cruise over 1.3 km
+  // is near 14.6 m/s), on top of the per-metre part.
+  EXPECT_GT(rest_to_rest, per_metre + model.effect("kinetic").coefficient("effective_mass") * 10.0 * 10.0);
+  EXPECT_NEAR(r.lower_bound_j, rest_to_rest, 1e-6 * rest_to_rest);
+  EXPECT_LT(r.lower_bound_j, r.plan.flown.energy);
+  // With an effect whose power depends on more than speed (here a climb term) only the per-metre
+  // part is claimed.
+  auto climb = model;
+  climb.add(energy::ClimbEffect(0.0, 0.0));
+  const auto rc = planCoverage(pr, v, climb, ps);
+  EXPECT_NEAR(rc.lower_bound_j, per_metre, 1e-6 * per_metre);
 }
 
 TEST(Planner, CornerStrategiesKeepCoverage) {

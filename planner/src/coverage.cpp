@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "wattswath/energy/marins.hpp"
 #include "wattswath/geometry/check.hpp"
 #include "wattswath/geometry/coverage.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -1232,9 +1233,9 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   // home to the area and back; turns counted at zero (an arc can cost as little per metre). A path
   // of length L sweeps its square footprint w over at most L w + w^2 of ground (counted with
   // multiplicity); the requested spacing s asks every point to be seen w / s times (side overlap),
-  // so L >= A / s - w (with s = w: A / w - w, the plain coverage bound).
+  // so L >= A / s - w (with s = w: A / w - w, the plain coverage bound). Sweeps pay at least the best
+  // energy per metre under the camera cap, the way to and from the area at least the best at all.
   const double cap = ps.camera_max_speed > 0 ? std::min(ps.camera_max_speed, ss.max_speed) : ss.max_speed;
-  const double e_min = model.minEnergyPerMetre(cap);
   double free_area = geometry::area(problem.area);
   for (const auto& z : problem.no_fly) free_area -= std::abs(geometry::signedArea(z));  // may overlap the outside: bound stays a bound
   free_area = std::max(free_area, 0.0);
@@ -1242,7 +1243,17 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   if (insideRing(problem.home, problem.area.outer)) approach = 0.0;
   for (size_t i = 0; i < outer.size(); ++i)
     approach = std::min(approach, distanceToSegment(problem.home, outer[i], outer[(i + 1) % outer.size()]));
-  res.lower_bound_j = e_min * (std::max(0.0, free_area / problem.spacing - problem.footprint) + 2.0 * approach);
+  const double swath = std::max(0.0, free_area / problem.spacing - problem.footprint);
+  res.lower_bound_j = model.minEnergyPerMetre(cap) * swath + model.minEnergyPerMetre(ss.max_speed) * 2.0 * approach;
+  // Every flight also starts and ends at rest. When power depends on speed alone (Marins' effects:
+  // hover, kinetic, drag), a flight of length L from rest to rest costs at least the best single
+  // stop-to-stop leg of length L: along the path, speed is at most the accelerate-cruise-brake
+  // envelope at the vehicle's limits, energy per metre falls with speed up to the best speed, the
+  // kinetic term pays at least the peak speed up and down, and turns and stops only add. That
+  // least energy grows with L, so the shortest possible flight bounds every flight.
+  if (energy::MarinsClosedForm::forLegsOf(model, ss.limits) && swath + 2.0 * approach > 0.0) {
+    res.lower_bound_j = std::max(res.lower_bound_j, scorer.legEnergy(swath + 2.0 * approach, 0.0, 0.0, ss.max_speed));
+  }
   if (vehicle.battery) {
     res.battery = predictBatteryUse(res.plan.flown, *vehicle.battery);
     if (!res.battery->fits) res.notes.push_back(res.battery->warning);
