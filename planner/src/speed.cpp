@@ -10,6 +10,7 @@
 #include <boost/math/tools/minima.hpp>
 
 #include "wattswath/energy/optimal_speed.hpp"
+#include "wattswath/energy/profile.hpp"
 #include "wattswath/energy/tolerances.hpp"
 
 namespace wattswath::planner {
@@ -191,7 +192,7 @@ double RouteScorer::optimise(double length, double v_in, double v_out, double ca
     // Marins' effects only: the same search (grid, then Brent's minimisation around the best
     // sample) over the inlined closed form, about 8x faster than the generic optimiser below
     // (bench_planner). A speed the leg cannot hold is NaN there, which the search skips.
-    const double hi = std::min(cap, closed_->peakSpeed(length, v_in, v_out));
+    const double hi = std::min(cap, energy::legPeakSpeed(length, v_in, v_out, lim));
     const double low = std::min(kMinCruise, 0.5 * hi);
     const auto& cf = *closed_;
     best_v = hi > low ? minimiseOnGrid([&](double v) { return cf.legEnergy(length, v_in, v, v_out); }, low, hi) : hi;

@@ -53,12 +53,6 @@ struct MarinsClosedForm {
   /// model does not say how its hover power splits into rotor power and efficiency.
   static std::optional<MarinsClosedForm> forLegsOf(const EnergyModel& model, const ProfileLimits& limits);
 
-  /// Highest speed a leg of `d` [m] entered at `ve` and left at `vx` [m/s] can reach [m/s] (the
-  /// triangle's peak; cruise speeds above it fly the same profile).
-  double peakSpeed(double d, double ve, double vx) const {
-    return std::sqrt((2.0 * d * accel * decel + ve * ve * decel + vx * vx * accel) / (accel + decel));
-  }
-
   /// Energy of a straight level leg of `d` [m] entered at `ve`, cruising at `vc`, left at `vx` [m/s]
   /// [J]: the same profile as buildLegProfile (trapezoid, triangle, valley) and the same numbers as
   /// marinsModel() over it, without allocation or virtual calls. NaN when the leg cannot be flown.
