@@ -64,10 +64,13 @@ struct Context {
 Point rot(const Point& p, double c, double s) { return {c * p.x() + s * p.y(), -s * p.x() + c * p.y()}; }
 Point unrot(const Point& p, double c, double s) { return {c * p.x() - s * p.y(), s * p.x() + c * p.y()}; }
 
+// Sweep direction in [0, 180) [deg], rounded to 1e-9 deg: the search steps whole and tenth degrees
+// in radians, and 66 deg should read 66, not 65.99999999999999.
 double normDeg(double rad) {
   double d = std::fmod(rad / kDeg, 180.0);
   if (d < 0) d += 180.0;
-  return d;
+  d = std::round(d * 1e9) / 1e9;
+  return d >= 180.0 ? 0.0 : d;
 }
 
 // Largest tangent of an arc at a corner of deflection `theta` that stays within `margin` of the vertex.
