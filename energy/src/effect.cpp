@@ -121,11 +121,11 @@ std::string ParasiticDragEffect::meaning() const {
 double ParasiticDragEffect::power(const MotionState& s) const {
   if (!s.airborne) return 0.0;
   const double v = s.velocity.norm();
-  return 0.5 * rho_ * coeffs_[0].value * v * v * v / eta_;
+  return powerCoefficient() * v * v * v;
 }
 double ParasiticDragEffect::energy(const Piece& p) const {
   if (p.phase == Phase::Ground || p.length <= 0.0) return 0.0;
-  const double k = 0.5 * rho_ * coeffs_[0].value / eta_;
+  const double k = powerCoefficient();
   if (mode_ == DragIntegration::PaperCruiseSpeed && p.v_cruise > 0.0) return k * p.length * p.v_cruise * p.v_cruise;
   // v^2 is linear in arc length on a constant-acceleration piece: int v^3 dt = int v^2 ds.
   return k * p.length * 0.5 * (p.v_start * p.v_start + p.v_end * p.v_end);
@@ -134,7 +134,7 @@ double ParasiticDragEffect::energy(const Piece& p) const {
 std::optional<PieceEnergyGradient> ParasiticDragEffect::energyGradient(const Piece& p) const {
   PieceEnergyGradient g;
   if (p.phase == Phase::Ground || p.length <= 0.0) return g;
-  const double k = 0.5 * rho_ * coeffs_[0].value / eta_;
+  const double k = powerCoefficient();
   if (mode_ == DragIntegration::PaperCruiseSpeed && p.v_cruise > 0.0) {
     g.length = k * p.v_cruise * p.v_cruise;
     g.v_cruise = 2.0 * k * p.length * p.v_cruise;

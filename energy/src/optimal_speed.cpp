@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -101,21 +102,12 @@ LegEnergySlope legEnergySlope(const EnergyModel& model, double d, double ve, dou
   return out;
 }
 
-double minimiseOnInterval(const std::function<double(double)>& f, double lo, double hi,
-                          const CruiseSpeedSettings& settings) {
-  settings.validate();
-  if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) {
-    throw std::invalid_argument("minimiseOnInterval: expected a finite interval lo <= hi, got [" + formatNumber(lo) + ", " +
-                                formatNumber(hi) + "]");
-  }
-  if (hi - lo <= settings.speed_tolerance) return 0.5 * (lo + hi);
-  const Grid g = sampleGrid(f, lo, hi, settings.grid_points);
-  const size_t n = g.x.size();
-  const double a = g.x[g.best == 0 ? 0 : g.best - 1], b = g.x[std::min(g.best + 1, n - 1)];
-  const double x = brent(f, a, b, settings.max_iterations);
-  const double fx = f(x);
-  return std::isfinite(fx) && fx <= g.f[g.best] ? x : g.x[g.best];
+namespace detail {
+void throwBadInterval(double lo, double hi) {
+  throw std::invalid_argument("minimiseOnInterval: expected a finite interval lo <= hi, got [" + formatNumber(lo) + ", " +
+                              formatNumber(hi) + "]");
 }
+}  // namespace detail
 
 CruiseSpeedOptimum optimalCruiseSpeed(const EnergyModel& model, double d, double ve, double vx,
                                       const ProfileLimits& lim, double v_max, const CruiseSpeedSettings& settings) {

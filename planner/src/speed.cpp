@@ -7,8 +7,6 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include <boost/math/tools/minima.hpp>
-
 #include "wattswath/energy/optimal_speed.hpp"
 #include "wattswath/energy/profile.hpp"
 #include "wattswath/energy/tolerances.hpp"
@@ -101,30 +99,6 @@ void SpeedSettings::validate() const {
   range(altitude, 0.0, 10000.0, "altitude", false);
 }
 
-namespace {
-// The minimum of f over [lo, hi] [argument]: the best of kGrid uniform samples, refined by
-// Brent's method between its neighbours (energy::minimiseOnInterval's search, inlined and without
-// allocation for the closed-form leg energy). Non-finite values count as +infinity.
-template <class F>
-double minimiseOnGrid(const F& f, double lo, double hi) {
-  constexpr int kGrid = 24;
-  const auto safe = [&](double x) {
-    const double v = f(x);
-    return std::isfinite(v) ? v : std::numeric_limits<double>::max();
-  };
-  std::array<double, kGrid> fx{};
-  int best = 0;
-  const auto at = [&](int i) { return i == kGrid - 1 ? hi : lo + (hi - lo) * i / (kGrid - 1); };
-  for (int i = 0; i < kGrid; ++i) {
-    fx[i] = safe(at(i));
-    if (fx[i] < fx[best]) best = i;
-  }
-  boost::uintmax_t iterations = 200;
-  const auto r = boost::math::tools::brent_find_minima(safe, at(std::max(best - 1, 0)), at(std::min(best + 1, kGrid - 1)),
-                                                       std::numeric_limits<double>::digits / 2, iterations);
-  return r.second <= fx[best] ? r.first : at(best);
-}
-}  // namespace
 
 struct RouteScorer::Cache {
   struct Key {
@@ -189,13 +163,13 @@ double RouteScorer::optimise(double length, double v_in, double v_out, double ca
     best_v = std::max(cap, lo);
     best = f(best_v);
   } else if (closed_) {
-    // Marins' effects only: the same search (grid, then Brent's minimisation around the best
-    // sample) over the inlined closed form, about 8x faster than the generic optimiser below
-    // (bench_planner). A speed the leg cannot hold is NaN there, which the search skips.
+    // Marins' effects only: energy::minimiseOnInterval (grid, then Brent's minimisation around
+    // the best sample) over the inlined closed form (f), several times faster than the generic
+    // optimiser below (docs/performance.md). A speed the leg cannot hold is NaN there, which the
+    // search skips.
     const double hi = std::min(cap, energy::legPeakSpeed(length, v_in, v_out, lim));
     const double low = std::min(kMinCruise, 0.5 * hi);
-    const auto& cf = *closed_;
-    best_v = hi > low ? minimiseOnGrid([&](double v) { return cf.legEnergy(length, v_in, v, v_out); }, low, hi) : hi;
+    best_v = hi > low ? energy::minimiseOnInterval(f, low, hi) : hi;
     best = f(best_v);
     // The closed form accepts speeds a rounding-width past the edge of feasibility, which
     // buildLegProfile (what fly() and the reports use, on lengths recomputed from the leg's end

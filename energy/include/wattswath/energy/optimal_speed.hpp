@@ -5,7 +5,11 @@
 /// paper's own closed form (Eq. 10 cubic) see MarinsClosedForm::eq10OptimalSpeed in marins.hpp.
 /// Fig. 3's variants are models with an effect removed: `model.remove("kinetic")`.
 
-#include <functional>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <boost/math/tools/minima.hpp>
 
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/profile.hpp"
@@ -59,9 +63,41 @@ CruiseSpeedOptimum optimalCruiseSpeed(const EnergyModel& model, double distance,
                                       const ProfileLimits& limits, double v_max,
                                       const CruiseSpeedSettings& settings = {});
 
-/// Minimises a scalar function `f` over [lo, hi]: grid of `settings.grid_points`, then Brent's method
-/// around the best sample. Non-finite values count as +infinity. Returns the argument of the minimum.
-double minimiseOnInterval(const std::function<double(double)>& f, double lo, double hi,
-                          const CruiseSpeedSettings& settings = {});
+namespace detail {
+/// Throws std::invalid_argument naming [lo, hi] (minimiseOnInterval's check, out of line).
+[[noreturn]] void throwBadInterval(double lo, double hi);
+}  // namespace detail
+
+/// Minimises a scalar function `f` (any callable double -> double) over [lo, hi]: grid of
+/// `settings.grid_points`, then Brent's method around the best sample. Non-finite values count as
+/// +infinity. Inlined and without allocation (the planner runs it once per distinct leg). Returns
+/// the argument of the minimum; throws std::invalid_argument for bad settings or a bad interval.
+template <class F>
+double minimiseOnInterval(const F& f, double lo, double hi, const CruiseSpeedSettings& settings = {}) {
+  settings.validate();
+  if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) detail::throwBadInterval(lo, hi);
+  if (hi - lo <= settings.speed_tolerance) return 0.5 * (lo + hi);
+  const int n = settings.grid_points;
+  const auto at = [&](int i) { return i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1); };
+  int best = 0;
+  double f_best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const double v = f(at(i));
+    if (std::isfinite(v) && v < f_best) {
+      f_best = v;
+      best = i;
+    }
+  }
+  const auto safe = [&](double x) {
+    const double v = f(x);
+    return std::isfinite(v) ? v : std::numeric_limits<double>::max();
+  };
+  boost::uintmax_t iterations = static_cast<boost::uintmax_t>(settings.max_iterations);
+  const double x = boost::math::tools::brent_find_minima(safe, at(std::max(best - 1, 0)), at(std::min(best + 1, n - 1)),
+                                                         std::numeric_limits<double>::digits / 2, iterations)
+                       .first;
+  const double fx = f(x);
+  return std::isfinite(fx) && fx <= f_best ? x : at(best);
+}
 
 }  // namespace wattswath::energy
