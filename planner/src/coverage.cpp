@@ -920,12 +920,18 @@ double coverageOf(const std::vector<geometry::PolygonWithHoles>& regions, double
 }
 
 // Flies the route of `a` with its widest arcs; coverage_pct is NaN until verify() has run.
+// `route` flown, its path labelled with the pattern and sweep angle [rad] it came from.
+FlownPath flyLabelled(RouteScorer& scorer, const Route& route, double angle, const std::string& pattern) {
+  FlownPath f = scorer.fly(route);
+  f.path.pattern = pattern;
+  f.path.sweep_angle = angle;
+  return f;
+}
+
 PlanCandidate flyUnverified(RouteScorer& scorer, const AngleResult& a, const std::string& pattern) {
   PlanCandidate c;
   if (!std::isfinite(a.score) || a.route.points.size() < 2) return c;
-  c.flown = scorer.fly(a.route);
-  c.flown.path.pattern = pattern;
-  c.flown.path.sweep_angle = a.angle;
+  c.flown = flyLabelled(scorer, a.route, a.angle, pattern);
   c.pattern = pattern;
   c.sweep_angle_deg = pattern == "spiral" ? 0.0 : normDeg(a.angle);
   c.cells = a.cells;
@@ -945,9 +951,7 @@ void verify(const std::vector<geometry::PolygonWithHoles>& free, double footprin
   Route route = a.route;
   for (double scale : {0.5, 0.25, 0.0}) {
     for (size_t i = 0; i < route.max_tangent.size(); ++i) route.max_tangent[i] = scale * a.route.max_tangent[i];
-    c.flown = scorer.fly(route);
-    c.flown.path.pattern = c.pattern;
-    c.flown.path.sweep_angle = a.angle;
+    c.flown = flyLabelled(scorer, route, a.angle, c.pattern);
     c.coverage_pct = coverageOf(free, footprint, c.flown.path);
     if (c.coverage_pct >= kMinCoveragePct) return;
   }
