@@ -29,7 +29,7 @@ std::string formatNumber(double x) {
   return os.str();
 }
 
-void addLogReadOptions(CLI::App* cmd, energy::LogReadOptions& o) {
+void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& o) {
   cmd->add_option("--from", o.from_s, "Keep samples from this time on [s, log clock: autopilot boot time]");
   cmd->add_option("--to", o.to_s, "Keep samples up to this time [s, log clock]");
   cmd->add_flag("--airborne", o.airborne_only, "Keep only the airborne part (first take-off to last landing)");

@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "wattswath/energy/autopilot_log.hpp"
+#include "wattswath/logs/autopilot_log.hpp"
 
 namespace wattswath::report {
 class HtmlReport;
@@ -52,8 +52,8 @@ void writeReport(const report::HtmlReport& report, const std::string& html_path,
                  bool force = false);
 
 /// Adds the flight-log reading options (--from, --to, --airborne, --lenient, --battery-instance,
-/// --position-source) to `cmd`, storing into `options`. Use with energy::readFlightLog().
-void addLogReadOptions(CLI::App* cmd, energy::LogReadOptions& options);
+/// --position-source) to `cmd`, storing into `options`. Use with logs::readFlightLog().
+void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& options);
 
 /// Adds the common `--force` flag (allow replacing existing output files) to `cmd`.
 CLI::Option* addForceFlag(CLI::App* cmd, bool& force);

@@ -6,20 +6,19 @@
 #include <memory>
 
 #include "cli.hpp"
-#include "wattswath/energy/autopilot_log.hpp"
-#include "wattswath/energy/log_io.hpp"
+#include "wattswath/logs/autopilot_log.hpp"
+#include "wattswath/logs/log_io.hpp"
 
 namespace wattswath::apps {
-namespace en = wattswath::energy;
 
 namespace {
 
-std::string meta(const en::FlightLog& log, const std::string& key) {
+std::string meta(const logs::FlightLog& log, const std::string& key) {
   auto it = log.metadata.find(key);
   return it == log.metadata.end() ? std::string() : it->second;
 }
 
-double metaNumber(const en::FlightLog& log, const std::string& key) {
+double metaNumber(const logs::FlightLog& log, const std::string& key) {
   try {
     return std::stod(meta(log, key));
   } catch (const std::exception&) {
@@ -32,9 +31,9 @@ struct Range {
   std::vector<double> air;  // values inside airborne windows
 };
 
-bool airborne(const en::FlightLog& log, double t) {
+bool airborne(const logs::FlightLog& log, double t) {
   return std::any_of(log.airborne.begin(), log.airborne.end(),
-                     [t](const en::TimeWindow& w) { return t >= w.begin && t <= w.end; });
+                     [t](const logs::TimeWindow& w) { return t >= w.begin && t <= w.end; });
 }
 
 nlohmann::json rangeJson(Range r) {
@@ -48,7 +47,7 @@ nlohmann::json rangeJson(Range r) {
   return j;
 }
 
-nlohmann::json infoJson(const en::FlightLog& log) {
+nlohmann::json infoJson(const logs::FlightLog& log) {
   Range v, i, p;
   for (const auto& s : log.samples) {
     const bool air = airborne(log, s.t);
@@ -99,7 +98,7 @@ nlohmann::json infoJson(const en::FlightLog& log) {
 void registerInfo(CLI::App& log_cmd) {
   struct Opts {
     std::string file;
-    en::LogReadOptions read;
+    logs::LogReadOptions read;
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -110,7 +109,7 @@ void registerInfo(CLI::App& log_cmd) {
   addLogReadOptions(cmd, o->read);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
-    const auto log = en::readFlightLog(o->file, o->read);
+    const auto log = logs::readFlightLog(o->file, o->read);
     const auto j = infoJson(log);
     if (o->json) {
       printJson(j);
@@ -136,7 +135,7 @@ void registerInfo(CLI::App& log_cmd) {
 void registerConvert(CLI::App& log_cmd) {
   struct Opts {
     std::string file, out;
-    en::LogReadOptions read;
+    logs::LogReadOptions read;
     bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
@@ -150,12 +149,12 @@ void registerConvert(CLI::App& log_cmd) {
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
     checkWritable(o->out, o->force, {o->file});
-    auto log = en::readFlightLog(o->file, o->read);
+    auto log = logs::readFlightLog(o->file, o->read);
     std::string windows;
     for (const auto& w : log.airborne)
       windows += (windows.empty() ? "" : "; ") + std::to_string(w.begin) + "-" + std::to_string(w.end);
     if (!windows.empty()) log.metadata["airborne_windows_s"] = windows;
-    writeTextFileAtomic(o->out, en::writeCsvLog(log));
+    writeTextFileAtomic(o->out, logs::writeCsvLog(log));
     if (o->json) {
       printJson({{"file", o->file},
                  {"out", o->out},

@@ -8,9 +8,9 @@
 
 #include "cli.hpp"
 #include "report_data.hpp"
-#include "wattswath/energy/diagnose.hpp"
-#include "wattswath/energy/log_io.hpp"
-#include "wattswath/energy/plan_prediction.hpp"
+#include "wattswath/calibration/diagnose.hpp"
+#include "wattswath/logs/log_io.hpp"
+#include "wattswath/calibration/plan_prediction.hpp"
 #include "wattswath/energy/tolerances.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -24,23 +24,23 @@ namespace {
 constexpr const char* kPaperEffects = "hover,kinetic,parasitic_drag";
 
 // Reads each log with readFlightLog (canonical CSV, ArduPilot .bin or PX4 .ulg, by content).
-std::vector<en::PreparedLog> prepareAll(const std::vector<std::string>& paths, const en::LogReadOptions& read) {
-  std::vector<en::PreparedLog> out;
+std::vector<calibration::PreparedLog> prepareAll(const std::vector<std::string>& paths, const logs::LogReadOptions& read) {
+  std::vector<calibration::PreparedLog> out;
   for (const auto& p : paths) {
     progress("reading " + p);
-    out.push_back(en::prepareLog(en::readFlightLog(p, read)));
+    out.push_back(calibration::prepareLog(logs::readFlightLog(p, read)));
   }
   return out;
 }
 
 // Path length flown in a log [m] (sum of its legs).
-double loggedDistance(const en::PreparedLog& l) {
+double loggedDistance(const calibration::PreparedLog& l) {
   double d = 0.0;
   for (const auto& leg : l.legs) d += leg.distance;
   return d;
 }
 
-json metricsJson(const en::ErrorMetrics& m) {
+json metricsJson(const calibration::ErrorMetrics& m) {
   json phases = json::object();
   for (int k = 0; k < en::kPhaseCount; ++k) {
     const auto& p = m.phases[k];
@@ -58,7 +58,7 @@ json metricsJson(const en::ErrorMetrics& m) {
           {"phases", phases}};
 }
 
-json residualsJson(const std::vector<en::ResidualTable>& tables) {
+json residualsJson(const std::vector<calibration::ResidualTable>& tables) {
   json out = json::object();
   for (const auto& t : tables) {
     json bins = json::array();
@@ -74,7 +74,7 @@ json residualsJson(const std::vector<en::ResidualTable>& tables) {
   return out;
 }
 
-json flightsJson(const std::vector<en::LogReplay>& reps) {
+json flightsJson(const std::vector<calibration::LogReplay>& reps) {
   json out = json::array();
   for (const auto& r : reps) {
     out.push_back({{"log", r.source},
@@ -88,7 +88,7 @@ json flightsJson(const std::vector<en::LogReplay>& reps) {
 }
 
 // {"effect": {"coef": value}} and the same shape for sigma.
-json coefficientsJson(const std::vector<en::FittedCoefficient>& cs, bool sigma) {
+json coefficientsJson(const std::vector<calibration::FittedCoefficient>& cs, bool sigma) {
   json out = json::object();
   for (const auto& c : cs) {
     if (!sigma) {
@@ -100,7 +100,7 @@ json coefficientsJson(const std::vector<en::FittedCoefficient>& cs, bool sigma) 
   return out;
 }
 
-void printMetrics(const std::string& label, const en::ErrorMetrics& m) {
+void printMetrics(const std::string& label, const calibration::ErrorMetrics& m) {
   std::cout << label << ": sample RMSE " << m.rmse_w << " W, whole-flight energy error " << m.energy_error_pct
             << " %, leg-energy MAPE " << m.leg_energy_mape_pct << " %\n";
 }
@@ -109,8 +109,8 @@ void registerReplay(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects, samples_out, plan;
     std::vector<std::string> logs;
-    en::LogReadOptions read;
-    en::PlanPredictionSettings plan_settings;
+    logs::LogReadOptions read;
+    calibration::PlanPredictionSettings plan_settings;
     bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
@@ -143,9 +143,9 @@ void registerReplay(CLI::App& app) {
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto logs = prepareAll(o->logs, o->read);
-    std::vector<en::LogReplay> reps;
-    for (const auto& l : logs) reps.push_back(en::replay(model, l));
-    const auto m = en::errorMetrics(reps);
+    std::vector<calibration::LogReplay> reps;
+    for (const auto& l : logs) reps.push_back(calibration::replay(model, l));
+    const auto m = calibration::errorMetrics(reps);
     json plans = json::array();
     if (!o->plan.empty()) {
       const auto area = wattswath::geometry::readSurveyArea(o->plan);
@@ -154,8 +154,8 @@ void registerReplay(CLI::App& app) {
       for (const auto& r : area.regions)
         for (const auto& q : r.outer) vertices.emplace_back(q.x() - area.home->x(), q.y() - area.home->y(), 0.0);
       for (std::size_t i = 0; i < logs.size(); ++i) {
-        const auto p = en::predictFromPlan(model, v, logs[i], vertices, o->plan_settings);
-        const auto c = en::comparePlan(reps[i], p);
+        const auto p = calibration::predictFromPlan(model, v, logs[i], vertices, o->plan_settings);
+        const auto c = calibration::comparePlan(reps[i], p);
         plans.push_back({{"source", reps[i].source},
                          {"energy_j", p.energy_j},
                          {"time_s", p.time_s},
@@ -185,7 +185,7 @@ void registerReplay(CLI::App& app) {
       printJson({{"effects", model.effectNames()},
                  {"metrics", metricsJson(m)},
                  {"flights", flightsJson(reps)},
-                 {"residuals", residualsJson(en::residualTables(reps))},
+                 {"residuals", residualsJson(calibration::residualTables(reps))},
                  {"plan_prediction", o->plan.empty() ? json(nullptr) : plans}});
       return;
     }
@@ -206,7 +206,7 @@ void registerDiagnose(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs;
-    en::LogReadOptions read;
+    logs::LogReadOptions read;
     int folds = 3;
     bool json = false;
     std::string report, report_svg;
@@ -233,10 +233,10 @@ void registerDiagnose(CLI::App& app) {
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto logs = prepareAll(o->logs, o->read);
-    en::DiagnoseSettings s;
+    calibration::DiagnoseSettings s;
     s.folds = o->folds;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
-    const auto d = en::diagnose(model, v, logs, s);
+    const auto d = calibration::diagnose(model, v, logs, s);
     if (!o->report.empty() || !o->report_svg.empty()) {
       auto data = validationFromReplays(d.physics_replay);
       data.title = "wattswath diagnosis";
@@ -306,7 +306,7 @@ void registerFit(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs, test_logs;
-    en::LogReadOptions read;
+    logs::LogReadOptions read;
     bool json = false;
     std::string report, report_svg;
     bool force = false;
@@ -330,7 +330,7 @@ void registerFit(CLI::App& app) {
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto train = prepareAll(o->logs, o->read);
     const auto test = prepareAll(o->test_logs, o->read);
-    const auto r = en::fitAndCompare(model, train, test);
+    const auto r = calibration::fitAndCompare(model, train, test);
     if (!o->report.empty() || !o->report_svg.empty()) {
       // The fitted model on the test logs when there are any (an honest picture), else on training.
       auto data = validationFromReplays(test.empty() ? r.train_replay : r.test_replay);
@@ -348,18 +348,18 @@ void registerFit(CLI::App& app) {
       data.diagnosis_caption = "Fitted effects (no held-out ranking: see diagnose)";
       for (const auto& e : model.effectNames()) {
         data.diagnosis.push_back({e, std::numeric_limits<double>::quiet_NaN(), fittedValuesText(r.fit.coefficients, e),
-                                  en::describeEffect(e, r.fit.coefficients), true});
+                                  calibration::describeEffect(e, r.fit.coefficients), true});
       }
       writeReport(report::validationReport(data), o->report, o->report_svg, o->force);
     }
-    auto side = [&](const en::ErrorMetrics& before, const en::ErrorMetrics& after) {
+    auto side = [&](const calibration::ErrorMetrics& before, const calibration::ErrorMetrics& after) {
       json j = metricsJson(after);
       j["before"] = metricsJson(before);
       return j;
     };
     if (o->json) {
       json summaries = json::object();
-      for (const auto& e : model.effectNames()) summaries[e] = en::describeEffect(e, r.fit.coefficients);
+      for (const auto& e : model.effectNames()) summaries[e] = calibration::describeEffect(e, r.fit.coefficients);
       printJson({{"effects", model.effectNames()},
                  {"coefficients", coefficientsJson(r.fit.coefficients, false)},
                  {"uncertainty", coefficientsJson(r.fit.coefficients, true)},
@@ -371,7 +371,7 @@ void registerFit(CLI::App& app) {
                  {"test_flights", flightsJson(r.test_replay)}});
       return;
     }
-    for (const auto& e : model.effectNames()) std::cout << e << ": " << en::describeEffect(e, r.fit.coefficients) << "\n";
+    for (const auto& e : model.effectNames()) std::cout << e << ": " << calibration::describeEffect(e, r.fit.coefficients) << "\n";
     for (const auto& n : r.fit.notes) std::cout << "note: " << n << "\n";
     printMetrics("train before", r.train_before);
     printMetrics("train after ", r.train_after);
@@ -386,7 +386,7 @@ void registerSimulate(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects, out, path;
     std::vector<std::string> sets;
-    en::SimulationSettings sim;
+    calibration::SimulationSettings sim;
     bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
@@ -447,16 +447,16 @@ void registerSimulate(CLI::App& app) {
         o->path.empty() ? std::vector<Eigen::Vector3d>{{0, 0, 0},    {0, 0, 15},    {160, 0, 15}, {160, 25, 15},
                                                        {0, 25, 15},  {0, 50, 15},   {160, 50, 15}, {160, 50, 25},
                                                        {80, 90, 25}, {0, 0, 25},    {0, 0, 0}}
-                        : en::readWaypointPath(o->path);
-    en::FlightLog log;
+                        : logs::readWaypointPath(o->path);
+    logs::FlightLog log;
     try {
-      log = en::simulateFlight(path, model, o->sim);
+      log = calibration::simulateFlight(path, model, o->sim);
     } catch (const std::invalid_argument& e) {
       if (o->path.empty()) throw;
       throw std::runtime_error(o->path + ": " + e.what());
     }
     log.metadata["vehicle"] = v.name;
-    writeTextFileAtomic(o->out, en::writeCsvLog(log));
+    writeTextFileAtomic(o->out, logs::writeCsvLog(log));
     if (o->json) {
       printJson({{"out", o->out}, {"samples", log.samples.size()}, {"duration_s", log.duration()}});
     } else {

@@ -116,7 +116,7 @@ report::SpeedReportData speedReportData(const std::vector<std::pair<std::string,
   return d;
 }
 
-report::ValidationReportData validationFromReplays(const std::vector<en::LogReplay>& replays) {
+report::ValidationReportData validationFromReplays(const std::vector<calibration::LogReplay>& replays) {
   report::ValidationReportData d;
   if (replays.empty()) return d;
   // Every log's samples one after the other (residuals pool them; power over time per log).
@@ -161,7 +161,7 @@ report::ValidationReportData validationFromReplays(const std::vector<en::LogRepl
   return d;
 }
 
-std::string fittedValuesText(const std::vector<en::FittedCoefficient>& coefficients, const std::string& effect) {
+std::string fittedValuesText(const std::vector<calibration::FittedCoefficient>& coefficients, const std::string& effect) {
   std::string text;
   for (const auto& x : coefficients) {
     if (!effect.empty() && x.effect != effect) continue;
@@ -175,7 +175,7 @@ std::string fittedValuesText(const std::vector<en::FittedCoefficient>& coefficie
   return text;
 }
 
-std::vector<report::DiagnosisRow> diagnosisRows(const en::Diagnosis& d) {
+std::vector<report::DiagnosisRow> diagnosisRows(const calibration::Diagnosis& d) {
   std::vector<report::DiagnosisRow> rows;
   for (std::size_t i = 0; i < d.candidates.size(); ++i) {
     const auto& c = d.candidates[i];

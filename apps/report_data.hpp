@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "wattswath/energy/diagnose.hpp"
+#include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/turns.hpp"
 #include "wattswath/report/reports.hpp"
@@ -31,12 +31,12 @@ report::SpeedReportData speedReportData(const std::vector<std::pair<std::string,
 
 /// The validation report's time series and leg energies from replays: power, speed, climb and
 /// heading of the first replay, phases as spans, and the legs of every replay.
-report::ValidationReportData validationFromReplays(const std::vector<energy::LogReplay>& replays);
+report::ValidationReportData validationFromReplays(const std::vector<calibration::LogReplay>& replays);
 
 /// "name = value +- sigma unit; ..." for the coefficients of `effect` (all when empty).
-std::string fittedValuesText(const std::vector<energy::FittedCoefficient>& coefficients, const std::string& effect = "");
+std::string fittedValuesText(const std::vector<calibration::FittedCoefficient>& coefficients, const std::string& effect = "");
 
 /// The diagnosis table rows (best first) from a diagnosis.
-std::vector<report::DiagnosisRow> diagnosisRows(const energy::Diagnosis& d);
+std::vector<report::DiagnosisRow> diagnosisRows(const calibration::Diagnosis& d);
 
 }  // namespace wattswath::apps

@@ -2,9 +2,10 @@
 // baseline of replaying the model once on the same log (measured in the same run).
 #include <benchmark/benchmark.h>
 
-#include "wattswath/energy/diagnose.hpp"
+#include "wattswath/calibration/diagnose.hpp"
 
 using namespace wattswath::energy;
+using namespace wattswath::calibration;
 
 namespace {
 

@@ -8,13 +8,15 @@
 #include <cmath>
 #include <random>
 
-#include "wattswath/energy/diagnose.hpp"
+#include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/energy/forward_flight.hpp"
-#include "wattswath/energy/log_io.hpp"
+#include "wattswath/logs/log_io.hpp"
 #include "wattswath/energy/marins.hpp"
 #include "wattswath/energy/optimal_speed.hpp"
 
 using namespace wattswath::energy;
+using namespace wattswath::logs;
+using namespace wattswath::calibration;
 
 namespace {
 

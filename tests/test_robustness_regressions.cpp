@@ -10,13 +10,15 @@
 #include <vector>
 
 #include "test_util.hpp"
-#include "wattswath/energy/autopilot_log.hpp"
-#include "wattswath/energy/diagnose.hpp"
-#include "wattswath/energy/log_io.hpp"
+#include "wattswath/logs/autopilot_log.hpp"
+#include "wattswath/calibration/diagnose.hpp"
+#include "wattswath/logs/log_io.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 
 using namespace wattswath::energy;
+using namespace wattswath::logs;
+using namespace wattswath::calibration;
 using wattswath::test::readAll;
 using wattswath::test::runCli;
 using wattswath::test::sourcePath;

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "format.hpp"
+#include "wattswath/energy/format.hpp"
 #include <vector>
 
 #include <boost/math/tools/minima.hpp>

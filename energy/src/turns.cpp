@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "format.hpp"
+#include "wattswath/energy/format.hpp"
 
 namespace wattswath::energy {
 namespace {

@@ -1,0 +1,146 @@
+#pragma once
+// Synthetic, seeded data for the report tests: shaped like real plans, logs and sweeps so that the
+// rendered pages exercise every figure (numbers are illustrative, not physics).
+#include <cmath>
+#include <random>
+
+#include "wattswath/report/reports.hpp"
+
+namespace wattswath::test {
+
+namespace wr = wattswath::report;
+
+/// pi.
+inline constexpr double kPi() { return 3.14159265358979323846; }
+
+/// A boustrophedon over a 300 x 200 m field with a pond, a no-fly zone and a transit home.
+inline wr::PlanReportData samplePlan() {
+  wr::PlanReportData d;
+  d.title = "Plan: sample field <test>";
+  d.facts = {{"vehicle", "sample quad"}, {"area", "6.0 ha"}, {"total energy", "123.4 kJ"}};
+  geometry::PolygonWithHoles a;
+  a.outer = {{0, 0}, {300, 0}, {320, 200}, {0, 200}};
+  a.holes = {{{120, 80}, {120, 120}, {170, 120}, {170, 80}}};
+  d.areas = {a};
+  d.no_fly = {{{250, 150}, {290, 150}, {290, 190}, {250, 190}}};
+  d.home = geometry::Point(-20, -20);
+  d.legs.push_back({{{-20, -20}, {10, 10}}, "transit", 6.0, 2500, 12, 42});
+  for (int i = 0; i < 10; ++i) {
+    const double y = 10 + 20 * i;
+    const bool east = i % 2 == 0;
+    const double x0 = east ? 10 : 300, x1 = east ? 300 : 10;
+    d.legs.push_back({{{x0, y}, {x1, y}}, "sweep", 6.0 + 0.3 * i, 9000.0 + 300 * i, 45, 290});
+    if (i < 9) {
+      std::vector<geometry::Point> arc;
+      for (int k = 0; k <= 8; ++k) {
+        const double a0 = -kPi() / 2 + kPi() * k / 8.0;
+        arc.push_back({x1 + (east ? 10 : -10) * std::cos(a0), y + 10 + 10 * std::sin(a0)});
+      }
+      d.legs.push_back({arc, "turn", 3.0, 800, 10, 31});
+    }
+  }
+  d.legs.push_back({{{10, 190}, {-20, -20}}, "transit", 8.0, 6000, 30, 212});
+  d.colour_by = wr::PlanColour::Speed;
+  d.coverage.effects = {"hover", "kinetic", "parasitic_drag"};
+  d.coverage.energy = {{8560, 27286, 6848, 1601, 0, 0, 0, 0}, {506, 0, 434, 0, 0, 0, 0, 0}, {131, 1096, 128, 13, 0, 0, 0, 0}};
+  d.transit.effects = d.coverage.effects;
+  d.transit.energy = {{900, 5000, 800, 0, 0, 0, 0, 0}, {60, 0, 50, 0, 0, 0, 0, 0}, {10, 300, 9, 0, 0, 0, 0, 0}};
+  for (int deg = 0; deg < 180; deg += 15) {
+    const double e = 120000 + 15000 * std::sin(deg * kPi() / 180.0) + 3000 * std::cos(3 * deg * kPi() / 180.0);
+    d.candidates.push_back({"boustrophedon", deg * kPi() / 180.0, e, deg == 0});
+  }
+  d.candidates.push_back({"spiral", 0.0, 131000, false});
+  d.baselines = {{"shortest path", 128000, 3400, 0}, {"ground-station default", 141000, 3500, 560}};
+  wr::BatteryTrace b;
+  b.model = "Hwang et al.";
+  for (int s = 0; s <= 600; s += 10) {
+    b.t.push_back(s);
+    b.soc.push_back(100.0 - 0.11 * s);
+    b.voltage.push_back(16.6 - 0.0025 * s - 0.3 * (s > 0));
+  }
+  d.battery = b;
+  return d;
+}
+
+/// A 300 s log with phases, a drag-like residual growing with speed, and leg energies.
+inline wr::ValidationReportData sampleValidation() {
+  wr::ValidationReportData d;
+  d.facts = {{"log", "sample.csv"}, {"model", "marins"}};
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 8.0);
+  for (int i = 0; i < 6000; ++i) {
+    const double t = 0.05 * i;
+    const double ph = std::fmod(t, 60.0);
+    const double v = ph < 8 ? ph : (ph < 40 ? 8.0 : (ph < 48 ? 48 - ph : 0.0));
+    const double model = 180 + 0.4 * v * v + (ph < 8 ? 25 : 0);
+    d.t.push_back(t);
+    d.modelled_power.push_back(model);
+    d.measured_power.push_back(model + 0.9 * v * v + noise(rng));
+    d.speed.push_back(v);
+    d.climb_rate.push_back(0.3 * std::sin(t / 7.0));
+    d.heading.push_back(std::floor(t / 60.0) * 1.2 - 3.0);
+  }
+  for (int k = 0; k < 5; ++k) {
+    const double t0 = 60.0 * k;
+    d.phases.push_back({t0, t0 + 8, "accelerate"});
+    d.phases.push_back({t0 + 8, t0 + 40, "cruise"});
+    d.phases.push_back({t0 + 40, t0 + 48, "brake"});
+    d.phases.push_back({t0 + 48, t0 + 60, "turn"});
+    d.legs.push_back({"leg " + std::to_string(k + 1), 14000.0 + 500 * k, 12000.0 + 450 * k});
+  }
+  d.staircase = {{"vehicle physics", 62.0}, {"refit base", 35.0}, {"+ parasitic_drag", 9.5}, {"+ climb", 8.9}};
+  d.diagnosis = {{"parasitic_drag", 72.9, "C_D A = 0.031 +- 0.002 m^2", "drag area of a 0.3 m^2 frame", true},
+                 {"climb", 6.3, "k = 0.8 +- 0.5 W s/m", "barely distinguishable from noise", false}};
+  return d;
+}
+
+/// Table V-like rows at three angles.
+inline wr::TurnReportData sampleTurns() {
+  wr::TurnReportData d;
+  d.facts = {{"vehicle", "sample quad"}};
+  for (const double deg : {45.0, 90.0, 135.0}) {
+    for (const double L : {10.0, 20.0, 50.0, 100.0}) {
+      const double b = deg * kPi() / 180.0;
+      wr::TurnRow r;
+      r.beta = b;
+      r.leg_length = L;
+      r.sharp_energy = 2 * (1800 + 250 * L) + 600 * (kPi() - b);
+      r.rounded_energy = 2 * 240 * L + 900 * (kPi() + b) / 2;
+      r.sharp_speed = std::min(8.0, std::sqrt(L));
+      r.rounded_speed = 4.0;
+      if (L == 50.0) r.paper_saving_pct = 100.0 * (r.sharp_energy - r.rounded_energy) / r.sharp_energy + 1.0;
+      d.rows.push_back(r);
+    }
+  }
+  return d;
+}
+
+/// Fig. 3-like curves and a few E(v) curves.
+inline wr::SpeedReportData sampleSpeed() {
+  wr::SpeedReportData d;
+  d.facts = {{"vehicle", "sample quad"}};
+  d.v_max = 15.0;
+  for (int variant = 0; variant < 3; ++variant) {
+    wr::SpeedCurve c;
+    c.name = variant == 0 ? "full model" : (variant == 1 ? "no drag" : "no kinetic");
+    for (double L = 2; L <= 1000; L *= 1.4) {
+      c.distance.push_back(L);
+      c.speed.push_back(std::min(15.0, (variant == 1 ? 1.6 : 1.2) * std::sqrt(L) + (variant == 2 ? 2.0 : 0.0)));
+    }
+    d.curves.push_back(c);
+  }
+  for (const double L : {20.0, 100.0}) {
+    wr::LegEnergyCurve e;
+    e.distance = L;
+    for (double v = 1; v <= 15; v += 0.5) {
+      e.speed.push_back(v);
+      e.energy.push_back(L * (180 / v + 0.2 * v * v) + 15 * v * v);
+    }
+    e.best_speed = 5.0;
+    e.best_energy = L * (180 / 5.0 + 5.0) + 375;
+    d.legs.push_back(e);
+  }
+  return d;
+}
+
+}  // namespace wattswath::test

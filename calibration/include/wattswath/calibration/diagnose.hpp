@@ -1,0 +1,146 @@
+#pragma once
+/// @file diagnose.hpp
+/// Learn which physical effect a model is missing and add it: bounded least-squares fits of
+/// effect coefficients (Ceres, private), cross-validated ranking of candidate effects, before /
+/// after comparisons on training and test logs, and simulated logs with hidden effects.
+
+#include <string>
+#include <vector>
+
+#include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/calibration/replay.hpp"
+
+namespace wattswath::calibration {
+
+/// Settings of a coefficient fit.
+struct FitSettings {
+  int max_samples = 4000;    ///< [samples] training samples used, evenly thinned above this; 100..1e6
+  int max_iterations = 60;   ///< [-] Levenberg-Marquardt iterations; 1..1000
+  double huber_w = 0.0;      ///< [W] Huber loss scale (0: plain least squares); 0..1e4
+};
+
+/// A fitted coefficient with its uncertainty.
+struct FittedCoefficient {
+  std::string effect;    ///< effect name
+  std::string name;      ///< coefficient name
+  std::string unit;      ///< SI unit
+  std::string meaning;   ///< plain-language meaning
+  double value = 0.0;    ///< fitted value, in `unit`
+  double sigma = 0.0;    ///< formal 1-sigma (Ceres covariance times residual variance; NaN if unknown)
+  bool at_bound = false; ///< true when the fit stopped on a sign/range bound
+  /// False when the data do not constrain this coefficient at all (the modelled power does not
+  /// change with it at the fitted values, e.g. a wind speed once the drag area has gone to 0):
+  /// its value is arbitrary and its sigma is NaN, never a misleading 0.
+  bool determined = true;
+};
+
+/// Result of fitting a model's coefficients.
+struct FitResult {
+  EnergyModel model;                            ///< the model with fitted coefficients
+  std::vector<FittedCoefficient> coefficients;  ///< every coefficient of every effect, model order
+  double train_rmse_w = 0.0;                    ///< [W] RMSE on the samples used by the fit
+  int samples = 0;                              ///< samples used
+  std::vector<std::string> notes;               ///< correlated coefficients, singular covariance, ...
+};
+
+/// Samples of one prepared log taken into a fit or an evaluation.
+struct SampleSet {
+  const PreparedLog* log = nullptr;  ///< the log
+  std::vector<int> index;            ///< sample indices (empty: all samples)
+};
+
+/// Fits every coefficient of `start` (its values are the initial guess) to the measured power
+/// of `data` within the coefficients' bounds (Ceres Levenberg-Marquardt, central differences).
+FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data, const FitSettings& s = {});
+
+/// Settings of a diagnosis.
+struct DiagnoseSettings {
+  FitSettings fit;                   ///< fit settings
+  int folds = 3;                     ///< [-] folds of interleaved time blocks for one log; 2..10
+  int blocks_per_fold = 4;           ///< [-] time blocks per fold (a fold spans the whole flight); 1..50
+  double indistinct_correlation = 0.9;  ///< [-] two effects whose fitted power contributions
+                                        ///< correlate above this cannot be told apart; 0..1
+  std::vector<std::string> candidates;  ///< effects to try (empty: every known effect not in the model)
+};
+
+/// One candidate effect tried by the diagnosis.
+struct CandidateResult {
+  std::string effect;                           ///< effect name
+  double rmse_w = 0.0;                          ///< [W] held-out sample RMSE with the effect added
+  double improvement_pct = 0.0;                 ///< [%] held-out RMSE reduction against the refitted base
+  double energy_error_pct = 0.0;                ///< [%] held-out whole-flight energy error
+  double leg_energy_mape_pct = 0.0;             ///< [%] held-out leg-energy MAPE
+  std::vector<FittedCoefficient> coefficients;  ///< the effect's coefficients fitted on all data
+  std::string summary;                          ///< physical reading, e.g. "drag area 0.019 +- 0.002 m^2"
+  std::vector<std::string> indistinct_from;     ///< candidates this one cannot be told apart from
+  std::vector<std::string> notes;               ///< fit notes (correlations, bounds)
+};
+
+/// One step of the error staircase: a model and its held-out errors.
+struct StaircaseStep {
+  std::string label;     ///< e.g. "vehicle physics", "refit base", "+ translational_lift"
+  ErrorMetrics metrics;  ///< held-out metrics (all data for the unfitted model)
+};
+
+/// What the diagnosis found.
+struct Diagnosis {
+  std::string validation;                   ///< "leave-one-flight-out" or "3-fold interleaved time blocks"
+  ErrorMetrics physics;                     ///< the model as given (vehicle physics), on all data
+  ErrorMetrics baseline;                    ///< the model refitted, held-out
+  std::vector<CandidateResult> candidates;  ///< best first (largest held-out improvement)
+  std::vector<StaircaseStep> staircase;     ///< physics -> refit -> + best candidate
+  std::vector<LogReplay> physics_replay;    ///< the model as given, per log (for plots)
+  std::vector<ResidualTable> residuals;     ///< residual tables of the model as given
+};
+
+/// Ranks the effects not in `model` by the held-out error reduction they bring when fitted
+/// together with the model's own coefficients. With two or more logs the validation is
+/// leave-one-flight-out, with one log interleaved time blocks.
+Diagnosis diagnose(const EnergyModel& model, const Vehicle& v, const std::vector<PreparedLog>& logs,
+                   const DiagnoseSettings& s = {});
+
+/// Before / after comparison of a fit.
+struct FitReport {
+  FitResult fit;                ///< the fit on the training logs
+  ErrorMetrics train_before;    ///< model as given, training logs
+  ErrorMetrics train_after;     ///< fitted model, training logs
+  ErrorMetrics test_before;     ///< model as given, test logs (empty when none)
+  ErrorMetrics test_after;      ///< fitted model, test logs
+  std::vector<LogReplay> train_replay;  ///< fitted model per training log (for plots)
+  std::vector<LogReplay> test_replay;   ///< fitted model per test log
+};
+
+/// Fits `model` on `train` and compares before/after on `train` and `test`.
+FitReport fitAndCompare(const EnergyModel& model, const std::vector<PreparedLog>& train,
+                        const std::vector<PreparedLog>& test, const FitSettings& s = {});
+
+/// A plain-language reading of an effect's fitted coefficients, e.g.
+/// "wind 4.2 +- 0.3 m/s towards 300 deg" or "payload 0.35 kg released at t = 148 s".
+std::string describeEffect(const std::string& effect, const std::vector<FittedCoefficient>& c);
+
+/// Settings of a simulated flight.
+struct SimulationSettings {
+  double rate_hz = 10.0;           ///< [Hz] sample rate; 0.1..1000
+  double cruise_speed = 8.0;       ///< [m/s] horizontal cruise speed; 0.5..40
+  double vertical_speed = 2.0;     ///< [m/s] speed of vertical legs; 0.2..10
+  double acceleration = 1.0;       ///< [m/s^2] acceleration and braking; 0.1..10
+  double yaw_rate = 1.0;           ///< [rad/s] turn-in-place rate at corners (0: no turns); 0..5
+  double hover_s = 3.0;            ///< [s] hover before the first and after the last leg; 0..600
+  double power_noise_w = 5.0;      ///< [W] standard deviation of power noise; 0..1000
+  double velocity_noise_mps = 0.05;  ///< [m/s] standard deviation of velocity noise; 0..10
+  double voltage_start_v = 12.4;   ///< [V] battery voltage at the start (linear sag); 1..1000
+  double voltage_end_v = 11.2;     ///< [V] battery voltage at the end
+  unsigned seed = 1;               ///< random seed (fixed: same log every time)
+  double max_samples = 2e7;        ///< [-] refuse flights needing more samples (about 2 GB of log); 1..1e9
+};
+
+/// A canonical log of `truth` flown through `waypoints` (ENU [m]): at each waypoint the vehicle
+/// stops, turns in place to the next leg, then flies it with accelerate / cruise / brake pieces
+/// (buildLegProfile). Power is the model's plus Gaussian noise; velocity gets Gaussian noise;
+/// current = power / voltage. format = "simulated"; the hidden effects are not written.
+/// Throws std::invalid_argument for fewer than 2 waypoints, a non-finite waypoint, or a flight
+/// needing more than `s.max_samples` samples (instead of running out of memory).
+FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& waypoints, const EnergyModel& truth,
+                         const SimulationSettings& s = {});
+
+}  // namespace wattswath::calibration

@@ -1,0 +1,83 @@
+#pragma once
+/// @file autopilot_log.hpp
+/// Flight logs as users have them: ArduPilot DataFlash (.bin) and PX4 ULog (.ulg) read into the
+/// same FlightLog the canonical CSV produces, plus airborne detection, time windows and one
+/// dispatch function that picks the reader by the file's content.
+///
+/// Resampling: the battery samples define the time base. Position, velocity, acceleration and yaw
+/// (yaw unwrapped first) are interpolated linearly at each battery sample time from the position
+/// source's two neighbouring samples; battery values are the measured ones, never interpolated.
+/// Battery samples before the first or after the last position sample are not kept; their count
+/// is in metadata `battery_samples_outside_position`. Positions are local ENU (x east, y north,
+/// z up) from the autopilot's EKF origin: NED x = north, y = east, z = down maps to
+/// (y, x, -z).
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "wattswath/logs/flight_log.hpp"
+
+namespace wattswath::logs {
+
+/// How the airborne part of a log is found.
+struct AirborneSettings {
+  double current_threshold_a = 5.0;  ///< [A] flying when current exceeds this (where no landed state is logged); > 0
+  double merge_gap_s = 1.0;          ///< [s] windows separated by less than this are merged; >= 0
+  double min_duration_s = 2.0;       ///< [s] windows shorter than this are dropped; >= 0
+  double landing_extend_s = 5.0;     ///< [s] a current-based window ending at most this long before a logged landing runs up to it; >= 0
+};
+
+/// Options of the flight-log readers.
+struct LogReadOptions {
+  double from_s = -std::numeric_limits<double>::infinity();  ///< [s] keep samples at t >= from_s (log clock)
+  double to_s = std::numeric_limits<double>::infinity();     ///< [s] keep samples at t <= to_s (log clock)
+  bool airborne_only = false;  ///< keep only the span from the first airborne window's start to the last one's end
+  bool lenient = false;        ///< skip corrupt or truncated parts of binary logs; each skip is listed in metadata `warnings`
+  int battery_instance = -1;   ///< [-] battery instance to use; -1: the first one with a plausible voltage (> 1 V)
+  std::string position_source; ///< force a position source ("XKF1", "NKF1", "NKF6", "EKF1", "vehicle_local_position"); empty: automatic
+  AirborneSettings airborne;   ///< airborne detection settings
+};
+
+/// A landed-state change the autopilot logged (take-off or landing event).
+struct LandedChange {
+  double t = 0.0;       ///< [s] time (log clock)
+  bool landed = false;  ///< state from `t` on
+  std::string what;     ///< which message said so, e.g. "EV 17 LAND_COMPLETE_MAYBE"
+};
+
+/// Airborne windows: where landed-state changes exist, the state from the first change on is
+/// theirs; before the first change (or everywhere, when there is none) the vehicle counts as
+/// airborne while `current` > settings.current_threshold_a, with crossing times interpolated
+/// linearly between samples; when the first change is a landing, the last current-based window
+/// ending at most landing_extend_s before it is extended to it. Windows closer than merge_gap_s are merged, shorter than
+/// min_duration_s dropped. `t` [s] increasing, `current` [A] of the same length.
+std::vector<TimeWindow> detectAirborne(const std::vector<double>& t, const std::vector<double>& current,
+                                       const std::vector<LandedChange>& changes, const AirborneSettings& settings);
+
+/// Reads an ArduPilot DataFlash log (.bin) from `path`.
+FlightLog readDataFlashLog(const std::string& path, const LogReadOptions& options = {});
+/// Reads a PX4 ULog file (.ulg) from `path`.
+FlightLog readUlogLog(const std::string& path, const LogReadOptions& options = {});
+/// Reads DataFlash bytes already in memory; `source` names them in messages (fuzzing, tests).
+FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& options);
+/// Reads ULog bytes already in memory; `source` names them in messages (fuzzing, tests).
+FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& options);
+
+/// Flight-log file formats the project reads.
+enum class LogFormat { Csv, DataFlash, Ulog };
+
+/// Format of the file at `path`, from its first bytes ("ULog" magic, 0xA3 0x95 header, else CSV).
+LogFormat detectLogFormat(const std::string& path);
+
+/// Reads a flight log of any supported format (picked by content, see detectLogFormat()) and
+/// applies options.from_s / to_s / airborne_only. The one entry point for `--log FILE`.
+FlightLog readFlightLog(const std::string& path, const LogReadOptions& options = {});
+
+/// Keeps the samples of `log` inside [options.from_s, options.to_s] (and the airborne span when
+/// options.airborne_only), clips log.airborne and log.events to it and records the window in
+/// metadata `window`. Throws when fewer than two samples remain, naming the window and the span.
+void applyTimeWindow(FlightLog& log, const LogReadOptions& options);
+
+}  // namespace wattswath::logs

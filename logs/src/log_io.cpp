@@ -1,0 +1,461 @@
+#include "wattswath/logs/log_io.hpp"
+
+#include <GeographicLib/LocalCartesian.hpp>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "wattswath/logs/local_fit.hpp"
+#include "wattswath/logs/tolerances.hpp"
+
+namespace wattswath::logs {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string trim(const std::string& s) {
+  size_t a = 0, b = s.size();
+  while (a < b && (s[a] == ' ' || s[a] == '\t')) ++a;
+  while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t')) --b;
+  return s.substr(a, b - a);
+}
+
+std::vector<std::string> splitCommas(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == ',') {
+      out.push_back(trim(cur));
+      cur.clear();
+    } else {
+      cur.push_back(c);
+    }
+  }
+  out.push_back(trim(cur));
+  return out;
+}
+
+[[noreturn]] void fail(const std::string& source, size_t line, const std::string& what) {
+  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + what);
+}
+
+/// Columns the model uses, with whether an empty cell means "not measured".
+struct Known {
+  const char* name;
+  bool empty_ok;
+};
+constexpr std::array<Known, 20> kKnown = {{{"time_s", false},    {"x_m", false},       {"y_m", false},
+                                           {"z_m", false},       {"lat_deg", false},   {"lon_deg", false},
+                                           {"alt_m", false},     {"vx_mps", false},    {"vy_mps", false},
+                                           {"vz_mps", false},    {"ax_mps2", false},   {"ay_mps2", false},
+                                           {"az_mps2", false},   {"yaw_rad", true},    {"voltage_v", false},
+                                           {"current_a", false}, {"power_w", false},   {"mass_kg", true},
+                                           {"wind_x_mps", true}, {"wind_y_mps", true}}};
+
+int knownIndex(const std::string& n) {
+  for (size_t i = 0; i < kKnown.size(); ++i)
+    if (n == kKnown[i].name) return static_cast<int>(i);
+  return -1;
+}
+
+std::string fmt(double v) {
+  std::array<char, 64> buf{};
+  auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  return std::string(buf.data(), r.ptr);
+}
+
+/// "-100000..100000 m": the altitude bound of log samples and origin metadata, in plain digits.
+std::string altitudeRange() {
+  const std::string b = std::to_string(static_cast<long long>(tol::kLogMaxAltitude));
+  return "-" + b + ".." + b + " m";
+}
+
+}  // namespace
+
+void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const DerivativeSettings& d) {
+  if (d.half_window < 1 || d.half_window > 50) {
+    throw std::invalid_argument("DerivativeSettings.half_window = " + std::to_string(d.half_window) +
+                                ", expected 1..50 samples");
+  }
+  auto& s = log.samples;
+  if (s.size() < 2) return;
+  const int n = static_cast<int>(s.size());
+  if (velocity) {
+    std::vector<Eigen::Vector3d> v(s.size());
+    for (size_t i = 0; i < s.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        v[i][k] = detail::localSlope(
+            n, static_cast<int>(i), d.half_window, [&](int j) { return s[j].t; }, [&](int j) { return s[j].position[k]; });
+    for (size_t i = 0; i < s.size(); ++i) s[i].velocity = v[i];
+    log.velocity_derived = true;
+    log.metadata["velocity_derivation"] = "quadratic least-squares (Savitzky-Golay) derivative of position over " +
+                                          std::to_string(2 * d.half_window + 1) + " samples";
+  }
+  if (acceleration) {
+    std::vector<Eigen::Vector3d> a(s.size());
+    for (size_t i = 0; i < s.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        a[i][k] = detail::localSlope(
+            n, static_cast<int>(i), d.half_window, [&](int j) { return s[j].t; }, [&](int j) { return s[j].velocity[k]; });
+    for (size_t i = 0; i < s.size(); ++i) s[i].acceleration = a[i];
+    log.acceleration_derived = true;
+    log.metadata["acceleration_derivation"] = "quadratic least-squares (Savitzky-Golay) derivative of velocity over " +
+                                              std::to_string(2 * d.half_window + 1) + " samples";
+  }
+}
+
+FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the flight log");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return parseCsvLog(os.str(), path, d);
+}
+
+FlightLog parseCsvLog(const std::string& text_in, const std::string& source, const DerivativeSettings& d) {
+  FlightLog log;
+  log.source = source;
+  log.format = "csv";
+  std::string_view text(text_in);
+  if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
+      static_cast<unsigned char>(text[2]) == 0xBF) {
+    text.remove_prefix(3);
+  }
+
+  std::vector<std::string> header;
+  std::vector<int> col_of(kKnown.size(), -1);  // known column -> index in the row
+  std::vector<int> extra_idx;
+  size_t header_line = 0;
+  size_t line_no = 0;
+  size_t pos = 0;
+  std::vector<std::pair<size_t, std::vector<std::string>>> rows;
+  while (pos <= text.size()) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string line(text.substr(pos, end - pos));
+    pos = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) {
+      if (pos > text.size()) break;
+      continue;  // blank line: not a row
+    }
+    if (header.empty()) {
+      if (line[0] == '#') {
+        const std::string body = trim(line.substr(1));
+        const size_t colon = body.find(':');
+        if (colon != std::string::npos) log.metadata[trim(body.substr(0, colon))] = trim(body.substr(colon + 1));
+        continue;
+      }
+      header = splitCommas(line);
+      header_line = line_no;
+      for (size_t c = 0; c < header.size(); ++c) {
+        if (header[c].empty()) fail(source, line_no, "column " + std::to_string(c + 1) + " has an empty name");
+        for (size_t e = 0; e < c; ++e)
+          if (header[e] == header[c]) fail(source, line_no, "column '" + header[c] + "' appears twice");
+        const int k = knownIndex(header[c]);
+        if (k >= 0) {
+          col_of[k] = static_cast<int>(c);
+        } else {
+          extra_idx.push_back(static_cast<int>(c));
+          log.extra_columns.push_back(header[c]);
+        }
+      }
+      continue;
+    }
+    if (line[0] == '#') {
+      fail(source, line_no, "comment line after the header; comments ('# key: value') must come before the header");
+    }
+    rows.emplace_back(line_no, splitCommas(line));
+  }
+  if (header.empty()) throw std::runtime_error(source + ":" + std::to_string(line_no) + ": no header row found");
+
+  auto has = [&](const char* n) { return col_of[knownIndex(n)] >= 0; };
+  auto requireCol = [&](const char* n, const std::string& why) {
+    if (!has(n)) fail(source, header_line, "missing required column '" + std::string(n) + "' (" + why + ")");
+  };
+  requireCol("time_s", "sample time");
+  const bool local = has("x_m") || has("y_m") || has("z_m");
+  const bool geodetic = !local && (has("lat_deg") || has("lon_deg") || has("alt_m"));
+  if (local) {
+    for (const char* n : {"x_m", "y_m", "z_m"}) requireCol(n, "local position x_m, y_m, z_m");
+  } else if (geodetic) {
+    for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) requireCol(n, "geodetic position lat_deg, lon_deg, alt_m");
+  } else {
+    fail(source, header_line, "missing required column 'x_m' (position: x_m, y_m, z_m or lat_deg, lon_deg, alt_m)");
+  }
+  const bool have_power = has("power_w");
+  if (!have_power) {
+    requireCol("voltage_v", "battery power: voltage_v and current_a, or power_w");
+    requireCol("current_a", "battery power: voltage_v and current_a, or power_w");
+  }
+  auto groupAll = [&](std::array<const char*, 3> g) {
+    const int n = has(g[0]) + has(g[1]) + has(g[2]);
+    if (n != 0 && n != 3) {
+      for (const char* c : g)
+        if (!has(c)) {
+          fail(source, header_line,
+               "missing column '" + std::string(c) + "': give all of " + g[0] + ", " + g[1] + ", " + g[2] + " or none");
+        }
+    }
+    return n == 3;
+  };
+  const bool have_vel = groupAll({"vx_mps", "vy_mps", "vz_mps"});
+  const bool have_acc = groupAll({"ax_mps2", "ay_mps2", "az_mps2"});
+  if (has("wind_x_mps") != has("wind_y_mps")) {
+    fail(source, header_line, std::string("missing column '") + (has("wind_x_mps") ? "wind_y_mps" : "wind_x_mps") +
+                                  "': give both wind columns or none");
+  }
+  // In a local-frame log the lat/lon/alt columns are not used: keep them verbatim.
+  if (local) {
+    for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) {
+      const int k = knownIndex(n);
+      if (col_of[k] >= 0) {
+        extra_idx.push_back(col_of[k]);
+        log.extra_columns.push_back(n);
+        col_of[k] = -1;
+      }
+    }
+  }
+
+  std::optional<GeographicLib::LocalCartesian> enu;
+  log.samples.reserve(rows.size());
+  log.extra_values.reserve(rows.size());
+  for (const auto& [ln, f] : rows) {
+    if (f.size() != header.size()) {
+      fail(source, ln, "row has " + std::to_string(f.size()) + " fields, the header has " +
+                           std::to_string(header.size()));
+    }
+    auto num = [&, ln = ln, &f = f](const char* n) -> double {
+      const int k = knownIndex(n);
+      const int c = col_of[k];
+      if (c < 0) return kNaN;
+      const std::string& cell = f[c];
+      if (cell.empty()) {
+        if (kKnown[k].empty_ok) return kNaN;
+        fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) +
+                             "): empty value, expected a finite number");
+      }
+      double v = 0.0;
+      const char* b = cell.data();
+      const char* e = b + cell.size();
+      if (*b == '+' && e - b > 1 && b[1] != '-') ++b;
+      auto r = std::from_chars(b, e, v);
+      if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v)) {
+        fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) + "): value '" + cell +
+                             "' is not a finite number");
+      }
+      const bool bounded_elsewhere = k == knownIndex("time_s") || k == knownIndex("lat_deg") || k == knownIndex("lon_deg");
+      if (!bounded_elsewhere && std::abs(v) > tol::kLogMaxMagnitude) {
+        fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) + "): value '" + cell +
+                             "' is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
+      }
+      return v;
+    };
+    LogSample s;
+    s.t = num("time_s");
+    if (local) {
+      s.position = {num("x_m"), num("y_m"), num("z_m")};
+    } else {
+      const double lat = num("lat_deg"), lon = num("lon_deg"), alt = num("alt_m");
+      if (std::abs(lat) > 90.0) {
+        fail(source, ln, "column 'lat_deg': value " + fmt(lat) + " is outside -90..90 degrees");
+      }
+      if (std::abs(lon) > 180.0) {
+        fail(source, ln, "column 'lon_deg': value " + fmt(lon) + " is outside -180..180 degrees");
+      }
+      if (std::abs(alt) > tol::kLogMaxAltitude) {
+        fail(source, ln, "column 'alt_m': value " + fmt(alt) + " is outside " + altitudeRange());
+      }
+      if (!enu) {
+        enu.emplace(lat, lon, alt);
+        log.has_geodetic_origin = true;
+        log.origin_lat_deg = lat;
+        log.origin_lon_deg = lon;
+        log.origin_alt_m = alt;
+      }
+      double x = 0, y = 0, z = 0;
+      enu->Forward(lat, lon, alt, x, y, z);
+      s.position = {x, y, z};
+    }
+    if (have_vel) s.velocity = {num("vx_mps"), num("vy_mps"), num("vz_mps")};
+    if (have_acc) s.acceleration = {num("ax_mps2"), num("ay_mps2"), num("az_mps2")};
+    s.yaw = num("yaw_rad");
+    s.voltage = num("voltage_v");
+    s.current = num("current_a");
+    s.power = have_power ? num("power_w") : s.voltage * s.current;
+    if (!have_power && !(std::abs(s.power) <= tol::kLogMaxMagnitude)) {
+      // Written back as power_w, which is bounded like every value: the log would not read back.
+      fail(source, ln, "columns 'voltage_v' x 'current_a': power " + fmt(s.power) +
+                           " W is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
+    }
+
+    s.mass = num("mass_kg");
+    s.wind = {num("wind_x_mps"), num("wind_y_mps")};
+    if (!log.samples.empty() && !(s.t > log.samples.back().t)) {
+      fail(source, ln, "column 'time_s': time " + fmt(s.t) + " s does not increase (previous row: " +
+                           fmt(log.samples.back().t) + " s)");
+    }
+    if (!log.samples.empty() && s.t - log.samples.back().t < tol::kLogMinTimeStep) {
+      fail(source, ln, "column 'time_s': time " + fmt(s.t) + " s is only " + fmt(s.t - log.samples.back().t) +
+                           " s after the previous row, expected steps of at least " + fmt(tol::kLogMinTimeStep) + " s");
+    }
+    std::vector<std::string> extra;
+    extra.reserve(extra_idx.size());
+    for (int c : extra_idx) extra.push_back(f[c]);
+    log.extra_values.push_back(std::move(extra));
+    log.samples.push_back(s);
+  }
+  // A local-frame log written from a geodetic one keeps its origin in the metadata.
+  if (local && log.metadata.count("origin_lat_deg") && log.metadata.count("origin_lon_deg") &&
+      log.metadata.count("origin_alt_m")) {
+    // Whole-text, finite, in range: std::stod would read "43.7abc" as 43.7 and accept "nan".
+    auto origin = [&](const char* key, double limit, const char* expected) {
+      const std::string& text = log.metadata[key];
+      double v = 0.0;
+      const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v) ||
+          std::abs(v) > limit) {
+        fail(source, header_line, "metadata '" + std::string(key) + "': value '" + text + "', expected " + expected);
+      }
+      return v;
+    };
+    log.origin_lat_deg = origin("origin_lat_deg", 90.0, "a latitude in -90..90 degrees");
+    log.origin_lon_deg = origin("origin_lon_deg", 180.0, "a longitude in -180..180 degrees");
+    log.origin_alt_m = origin("origin_alt_m", tol::kLogMaxAltitude, ("an altitude in " + altitudeRange()).c_str());
+    log.has_geodetic_origin = true;
+    for (const char* k : {"origin_lat_deg", "origin_lon_deg", "origin_alt_m"}) log.metadata.erase(k);
+  }
+  if (log.samples.size() < 2) {
+    throw std::runtime_error(source + ":" + std::to_string(line_no) + ": the log has " +
+                             std::to_string(log.samples.size()) + " sample(s), at least 2 are needed");
+  }
+  deriveKinematics(log, !have_vel, !have_acc, d);
+  // Finite inputs can still give non-finite derivatives (positions near 1e308, time steps of
+  // 1e-320 s); every later sum would turn NaN silently, so name the first such row.
+  for (size_t i = 0; i < log.samples.size(); ++i) {
+    const auto& x = log.samples[i];
+    if (!x.velocity.allFinite() || !x.acceleration.allFinite()) {
+      fail(source, rows[i].first,
+           std::string("derived ") + (x.velocity.allFinite() ? "acceleration" : "velocity") + " at time " + fmt(x.t) +
+               " s is not finite, expected finite derivatives (check for huge positions or near-zero time steps)");
+    }
+  }
+  return log;
+}
+
+std::string writeCsvLog(const FlightLog& log) {
+  const auto& s = log.samples;
+  auto anyFinite = [&](auto get) {
+    return std::any_of(s.begin(), s.end(), [&](const LogSample& x) { return std::isfinite(get(x)); });
+  };
+  auto allFinite = [&](auto get) {
+    return std::all_of(s.begin(), s.end(), [&](const LogSample& x) { return std::isfinite(get(x)); });
+  };
+  const bool yaw = anyFinite([](const LogSample& x) { return x.yaw; });
+  const bool vi = allFinite([](const LogSample& x) { return x.voltage; }) &&
+                  allFinite([](const LogSample& x) { return x.current; });
+  const bool mass = anyFinite([](const LogSample& x) { return x.mass; });
+  const bool wind = anyFinite([](const LogSample& x) { return x.wind.x(); }) ||
+                    anyFinite([](const LogSample& x) { return x.wind.y(); });
+  if (log.extra_values.size() != 0 && log.extra_values.size() != s.size()) {
+    throw std::invalid_argument("writeCsvLog: " + std::to_string(log.extra_values.size()) + " rows of extra values for " +
+                                std::to_string(s.size()) + " samples");
+  }
+
+  std::string out;
+  out.reserve(s.size() * 160 + 512);
+  for (const auto& [k, v] : log.metadata) {
+    if (log.has_geodetic_origin && k.rfind("origin_", 0) == 0) continue;  // written below
+    out += "# " + k + ": " + v + "\n";
+  }
+  if (log.has_geodetic_origin) {
+    out += "# origin_lat_deg: " + fmt(log.origin_lat_deg) + "\n# origin_lon_deg: " + fmt(log.origin_lon_deg) +
+           "\n# origin_alt_m: " + fmt(log.origin_alt_m) + "\n";
+  }
+  out += "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,ax_mps2,ay_mps2,az_mps2";
+  if (yaw) out += ",yaw_rad";
+  if (vi) out += ",voltage_v,current_a";
+  out += ",power_w";
+  if (mass) out += ",mass_kg";
+  if (wind) out += ",wind_x_mps,wind_y_mps";
+  for (const auto& c : log.extra_columns) out += "," + c;
+  out += "\n";
+  auto cell = [&](double v, size_t i, const char* what, bool optional) {
+    if (!std::isfinite(v)) {
+      if (optional) return std::string();
+      throw std::invalid_argument("writeCsvLog: sample " + std::to_string(i) + " (t = " + fmt(s[i].t) + " s): " + what +
+                                  " is not finite");
+    }
+    return fmt(v);
+  };
+  for (size_t i = 0; i < s.size(); ++i) {
+    const auto& x = s[i];
+    const double p = std::isfinite(x.power) ? x.power : x.voltage * x.current;
+    out += cell(x.t, i, "time", false);
+    for (int k = 0; k < 3; ++k) out += "," + cell(x.position[k], i, "position", false);
+    for (int k = 0; k < 3; ++k) out += "," + cell(x.velocity[k], i, "velocity", false);
+    for (int k = 0; k < 3; ++k) out += "," + cell(x.acceleration[k], i, "acceleration", false);
+    if (yaw) out += "," + cell(x.yaw, i, "yaw", true);
+    if (vi) out += "," + cell(x.voltage, i, "voltage", false) + "," + cell(x.current, i, "current", false);
+    out += "," + cell(p, i, "power (and voltage * current)", false);
+    if (mass) out += "," + cell(x.mass, i, "mass", true);
+    if (wind) out += "," + cell(x.wind.x(), i, "wind", true) + "," + cell(x.wind.y(), i, "wind", true);
+    if (!log.extra_values.empty()) {
+      for (const auto& v : log.extra_values[i]) out += "," + v;
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const std::string& source) {
+  std::istringstream in(text);
+  std::vector<Eigen::Vector3d> w;
+  std::string line;
+  int ln = 0;
+  auto number = [](double x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+  };
+  while (std::getline(in, line)) {
+    ++ln;
+    for (char& c : line)
+      if (c == ',' || c == '\r' || c == '\t') c = ' ';
+    if (line.find_first_not_of(' ') == std::string::npos || line[line.find_first_not_of(' ')] == '#') continue;
+    std::istringstream is(line);
+    double x, y, z;
+    std::string rest;
+    if (!(is >> x >> y >> z) || (is >> rest)) {
+      std::istringstream first(line);
+      double probe = 0.0;
+      if (w.empty() && ln == 1 && !(first >> probe)) continue;  // a header (not a row of numbers)
+      throw std::runtime_error(source + ":" + std::to_string(ln) + ": expected three numbers x y z [m], got '" + line + "'");
+    }
+    if (!(std::abs(x) <= tol::kLogMaxMagnitude && std::abs(y) <= tol::kLogMaxMagnitude &&
+          std::abs(z) <= tol::kLogMaxMagnitude)) {
+      throw std::runtime_error(source + ":" + std::to_string(ln) + ": expected three numbers x y z [m] of magnitude at most " +
+                               number(tol::kLogMaxMagnitude) + ", got '" + line + "'");
+    }
+    w.emplace_back(x, y, z);
+  }
+  if (w.size() < 2) throw std::runtime_error(source + ": a path needs at least 2 waypoints");
+  return w;
+}
+
+std::vector<Eigen::Vector3d> readWaypointPath(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the path file");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return parseWaypointPath(os.str(), path);
+}
+
+}  // namespace wattswath::logs

@@ -1,0 +1,378 @@
+#include "wattswath/logs/ulog.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "binary_read.hpp"
+
+namespace wattswath::logs::ulog {
+namespace {
+
+using binary::readLe;
+
+constexpr std::uint8_t kMagic[7] = {'U', 'L', 'o', 'g', 0x01, 0x12, 0x35};
+constexpr std::size_t kHeaderSize = 16;
+constexpr std::size_t kMaxFormatSize = 65535;  // a message payload cannot be larger
+constexpr int kMaxNesting = 16;
+
+std::string str(const std::uint8_t* p, std::size_t n) { return std::string(reinterpret_cast<const char*>(p), n); }
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r\n");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t\r\n");
+  return s.substr(a, b - a + 1);
+}
+
+double decodeBase(const std::string& type, const std::uint8_t* p) {
+  if (type == "float") return static_cast<double>(readLe<float>(p));
+  if (type == "double") return readLe<double>(p);
+  if (type == "uint8_t" || type == "bool" || type == "char") return static_cast<double>(readLe<std::uint8_t>(p));
+  if (type == "int8_t") return static_cast<double>(readLe<std::int8_t>(p));
+  if (type == "uint16_t") return static_cast<double>(readLe<std::uint16_t>(p));
+  if (type == "int16_t") return static_cast<double>(readLe<std::int16_t>(p));
+  if (type == "uint32_t") return static_cast<double>(readLe<std::uint32_t>(p));
+  if (type == "int32_t") return static_cast<double>(readLe<std::int32_t>(p));
+  if (type == "uint64_t") return static_cast<double>(readLe<std::uint64_t>(p));
+  if (type == "int64_t") return static_cast<double>(readLe<std::int64_t>(p));
+  return 0.0;
+}
+
+// Splits "type[N]" into base type and count (-1 when not an array). Returns false when malformed.
+bool parseType(const std::string& t, std::string& base, int& array) {
+  const auto lb = t.find('[');
+  if (lb == std::string::npos) {
+    base = t;
+    array = -1;
+    return !t.empty();
+  }
+  if (t.back() != ']' || lb == 0) return false;
+  base = t.substr(0, lb);
+  const std::string digits = t.substr(lb + 1, t.size() - lb - 2);
+  if (digits.empty() || digits.size() > 5 || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
+  array = std::stoi(digits);
+  return array <= static_cast<int>(kMaxFormatSize);
+}
+
+// Decodes an info/parameter value of ULog type `type` (may be "char[N]").
+std::string infoValue(const std::string& type, const std::uint8_t* p, std::size_t n, double* number) {
+  std::string base;
+  int array = -1;
+  if (parseType(type, base, array) && base == "char") {
+    std::string s = str(p, n);
+    const auto nul = s.find('\0');
+    if (nul != std::string::npos) s.resize(nul);
+    return s;
+  }
+  const std::size_t size = baseTypeSize(base);
+  if (size == 0 || n < size || array >= 0) return "";
+  const double v = decodeBase(base, p);
+  if (number) *number = v;
+  if (base == "float" || base == "double") return std::to_string(v);
+  return std::to_string(static_cast<long long>(v));
+}
+
+}  // namespace
+
+std::size_t baseTypeSize(const std::string& type) {
+  if (type == "int8_t" || type == "uint8_t" || type == "bool" || type == "char") return 1;
+  if (type == "int16_t" || type == "uint16_t") return 2;
+  if (type == "int32_t" || type == "uint32_t" || type == "float") return 4;
+  if (type == "int64_t" || type == "uint64_t" || type == "double") return 8;
+  return 0;
+}
+
+Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient) {
+  Log log;
+  log.source_ = source;
+  log.bytes_ = std::move(bytes);
+  const auto& b = log.bytes_;
+  const std::size_t n = b.size();
+  if (n < kHeaderSize)
+    throw std::runtime_error(source + ": " + std::to_string(n) + " bytes, shorter than the 16-byte ULog header");
+  if (std::memcmp(b.data(), kMagic, sizeof kMagic) != 0)
+    throw std::runtime_error(source + ": byte offset 0: not a ULog file (magic 'ULog' 0x01 0x12 0x35 missing)");
+  log.version_ = b[7];
+  log.start_us_ = readLe<std::uint64_t>(b.data() + 8);
+
+  std::vector<std::uint64_t> appended_offsets;
+  std::map<int, std::size_t> sub_by_msg_id;
+  auto where = [&](std::size_t off, char type) {
+    std::string s = source + ": byte offset " + std::to_string(off) + ": ";
+    if (type >= 32 && type < 127) s += std::string("'") + type + "' message: ";
+    return s;
+  };
+  std::size_t pos = kHeaderSize;
+  // Handles a bad message at `at`: with appended data, jumps to the next appended offset (the
+  // spec lets the logger leave an incomplete message before it); otherwise throws (strict) or
+  // stops reading (lenient). Returns the position to continue from, or n to stop.
+  auto bad = [&](std::size_t at, char type, const std::string& what) -> std::size_t {
+    for (std::uint64_t a : appended_offsets) {
+      if (a > at && a < n) {
+        log.warnings_.push_back(where(at, type) + what + "; continuing at appended data offset " +
+                                std::to_string(a));
+        return static_cast<std::size_t>(a);
+      }
+    }
+    if (!lenient) throw std::runtime_error(where(at, type) + what);
+    log.warnings_.push_back(where(at, type) + what + "; the rest of the file is not read");
+    return n;
+  };
+
+  while (pos < n) {
+    if (n - pos < 3) {
+      pos = bad(pos, 0, "file ends " + std::to_string(n - pos) + " bytes after the last message, too short for a message header (truncated)");
+      continue;
+    }
+    const std::size_t size = readLe<std::uint16_t>(b.data() + pos);
+    const char type = static_cast<char>(b[pos + 2]);
+    const std::uint8_t* p = b.data() + pos + 3;
+    if (n - pos - 3 < size) {
+      pos = bad(pos, type, "declares " + std::to_string(size) + " payload bytes but only " +
+                               std::to_string(n - pos - 3) + " remain (truncated file)");
+      continue;
+    }
+    const auto crossing = std::find_if(appended_offsets.begin(), appended_offsets.end(), [&](std::uint64_t a) {
+      return a > pos && a < pos + 3 + size;
+    });
+    if (crossing != appended_offsets.end()) {
+      pos = bad(pos, type, "runs into the appended data at offset " + std::to_string(*crossing) + " (incomplete message)");
+      continue;
+    }
+    if (size == 0 && type == 0) {
+      pos = bad(pos, type, "zero-length message of type 0 (corrupt or zero-filled data)");
+      continue;
+    }
+    std::string error;
+    switch (type) {
+      case 'B': {
+        if (size < 40) { error = "flag bits need 40 bytes, got " + std::to_string(size); break; }
+        const std::uint8_t* incompat = p + 8;
+        bool unknown = (incompat[0] & 0xFE) != 0;
+        for (int i = 1; i < 8; ++i) unknown = unknown || incompat[i] != 0;
+        if (unknown)  // never safe to read on, lenient or not
+          throw std::runtime_error(where(pos, type) + "unknown incompatible flag bits set; this reader cannot read the file");
+        log.appended_ = (incompat[0] & 1) != 0;
+        if (log.appended_) {
+          for (int i = 0; i < 3; ++i) {
+            const std::uint64_t a = readLe<std::uint64_t>(p + 16 + 8 * i);
+            if (a) appended_offsets.push_back(a);
+          }
+        }
+        break;
+      }
+      case 'F': {
+        const std::string def = str(p, size);
+        const auto colon = def.find(':');
+        if (colon == std::string::npos || colon == 0) { error = "format definition without 'name:' prefix"; break; }
+        const std::string name = def.substr(0, colon);
+        std::vector<Field> fields;
+        std::size_t start = colon + 1;
+        while (start < def.size()) {
+          auto semi = def.find(';', start);
+          if (semi == std::string::npos) semi = def.size();
+          const std::string item = trim(def.substr(start, semi - start));
+          start = semi + 1;
+          if (item.empty()) continue;
+          const auto sp = item.find(' ');
+          Field f;
+          if (sp == std::string::npos || !parseType(item.substr(0, sp), f.type, f.array)) {
+            error = "format " + name + ": malformed field '" + item + "'";
+            break;
+          }
+          f.name = trim(item.substr(sp + 1));
+          fields.push_back(f);
+        }
+        if (error.empty() && fields.empty()) error = "format " + name + " has no fields";
+        if (error.empty()) {
+          log.formats_[name] = fields;
+          log.resolved_.clear();
+        }
+        break;
+      }
+      case 'I': case 'P': case 'M': case 'Q': {
+        const std::size_t skip = (type == 'M' || type == 'Q') ? 1 : 0;
+        if (size < skip + 1) { error = "too short for a key"; break; }
+        const std::size_t key_len = p[skip];
+        if (size < skip + 1 + key_len) { error = "key length " + std::to_string(key_len) + " exceeds the message"; break; }
+        const std::string key = str(p + skip + 1, key_len);
+        const auto sp = key.find(' ');
+        if (sp == std::string::npos) { error = "key '" + key + "' is not 'type name'"; break; }
+        const std::string vtype = key.substr(0, sp), name = key.substr(sp + 1);
+        const std::uint8_t* v = p + skip + 1 + key_len;
+        const std::size_t vn = size - skip - 1 - key_len;
+        double number = 0.0;
+        const std::string value = infoValue(vtype, v, vn, &number);
+        if (type == 'I') log.info_[name] = value;
+        else if (type == 'M') log.info_[name] = (p[0] ? log.info_[name] : std::string()) + value;
+        else if (type == 'P') log.params_[name] = number;
+        break;
+      }
+      case 'A': {
+        if (size < 4) { error = "subscription needs at least 4 bytes, got " + std::to_string(size); break; }
+        Subscription s;
+        s.multi_id = p[0];
+        const int msg_id = readLe<std::uint16_t>(p + 1);
+        s.name = str(p + 3, size - 3);
+        if (!log.formats_.count(s.name)) { error = "subscription to " + s.name + ", which no 'F' message defines"; break; }
+        sub_by_msg_id[msg_id] = log.subs_.size();
+        log.subs_.push_back(s);
+        break;
+      }
+      case 'R': {
+        if (size >= 2) sub_by_msg_id.erase(readLe<std::uint16_t>(p));
+        break;
+      }
+      case 'D': {
+        if (size < 2) { error = "data message shorter than its msg_id"; break; }
+        const int msg_id = readLe<std::uint16_t>(p);
+        auto it = sub_by_msg_id.find(msg_id);
+        if (it == sub_by_msg_id.end()) { error = "data for msg_id " + std::to_string(msg_id) + " without an earlier 'A' subscription"; break; }
+        Subscription& s = log.subs_[it->second];
+        try {
+          const Resolved& r = log.resolve(s.name);
+          if (size - 2 < r.required) {
+            error = s.name + " data has " + std::to_string(size - 2) + " bytes, its format needs " +
+                    std::to_string(r.required) + " (" + std::to_string(r.size) + " with padding)";
+          } else if (size - 2 > r.size) {
+            error = s.name + " data has " + std::to_string(size - 2) + " bytes, more than its format's " +
+                    std::to_string(r.size);
+          }
+        } catch (const std::exception& e) {
+          error = e.what();
+        }
+        if (error.empty()) s.records.emplace_back(pos + 5, size - 2);
+        break;
+      }
+      case 'L': case 'C': {
+        const std::size_t head = type == 'L' ? 9 : 11;
+        if (size < head) { error = "logged string shorter than its " + std::to_string(head) + "-byte header"; break; }
+        LoggedString ls;
+        ls.level = p[0] >= '0' && p[0] <= '7' ? p[0] - '0' : p[0];
+        ls.t = static_cast<double>(readLe<std::uint64_t>(p + head - 8)) * 1e-6;
+        ls.text = str(p + head, size - head);
+        log.strings_.push_back(ls);
+        break;
+      }
+      case 'O': {
+        if (size >= 2) {
+          ++log.dropout_count_;
+          log.dropout_s_ += readLe<std::uint16_t>(p) * 1e-3;
+        }
+        break;
+      }
+      default:
+        break;  // 'S' sync and message types this reader does not know are skipped, per the spec
+    }
+    if (!error.empty()) {
+      const std::size_t next = pos + 3 + size;
+      if (lenient) {
+        log.warnings_.push_back(where(pos, type) + error + "; message skipped");
+        pos = next;
+      } else {
+        pos = bad(pos, type, error);
+      }
+      continue;
+    }
+    pos += 3 + size;
+  }
+  return log;
+}
+
+std::size_t Log::resolveInto(const std::string& name, const std::string& prefix, std::size_t base,
+                             Resolved& out, int depth) const {
+  if (depth > kMaxNesting)
+    throw std::runtime_error(source_ + ": format " + name + " nests deeper than " + std::to_string(kMaxNesting) +
+                             " levels (recursive definition?)");
+  auto it = formats_.find(name);
+  if (it == formats_.end()) throw std::runtime_error(source_ + ": no 'F' message defines type " + name);
+  std::size_t off = 0;
+  for (const Field& f : it->second) {
+    const std::size_t count = f.array < 0 ? 1 : static_cast<std::size_t>(f.array);
+    const std::size_t s = baseTypeSize(f.type);
+    const bool padding = f.name.rfind("_padding", 0) == 0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::string leaf = prefix + f.name + (f.array < 0 ? "" : "[" + std::to_string(k) + "]");
+      if (s > 0) {
+        if (!padding) {
+          out.leaves.push_back({leaf, f.type, base + off});
+          out.required = std::max(out.required, base + off + s);
+        }
+        off += s;
+      } else {
+        off += resolveInto(f.type, leaf + ".", base + off, out, depth + 1);
+      }
+      if (base + off > kMaxFormatSize)
+        throw std::runtime_error(source_ + ": format " + name + " is larger than a ULog message can be (" +
+                                 std::to_string(kMaxFormatSize) + " bytes)");
+    }
+  }
+  return off;
+}
+
+const Log::Resolved& Log::resolve(const std::string& name) const {
+  auto it = resolved_.find(name);
+  if (it != resolved_.end()) return it->second;
+  Resolved r;
+  r.size = resolveInto(name, "", 0, r, 0);
+  return resolved_.emplace(name, std::move(r)).first->second;
+}
+
+const Log::Subscription* Log::find(const std::string& name, int multi_id) const {
+  for (const auto& s : subs_)
+    if (s.name == name && s.multi_id == multi_id && !s.records.empty()) return &s;
+  for (const auto& s : subs_)
+    if (s.name == name && s.multi_id == multi_id) return &s;
+  return nullptr;
+}
+
+std::vector<int> Log::instances(const std::string& name) const {
+  std::vector<int> out;
+  for (const auto& s : subs_)
+    if (s.name == name && !s.records.empty() && std::find(out.begin(), out.end(), s.multi_id) == out.end())
+      out.push_back(s.multi_id);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::size_t Log::count(const std::string& name, int multi_id) const {
+  std::size_t c = 0;
+  for (const auto& s : subs_)
+    if (s.name == name && s.multi_id == multi_id) c += s.records.size();
+  return c;
+}
+
+bool Log::hasField(const std::string& name, const std::string& field) const {
+  if (!formats_.count(name)) return false;
+  try {
+    const auto& l = resolve(name).leaves;
+    return std::any_of(l.begin(), l.end(), [&](const Leaf& x) { return x.name == field; });
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+const std::vector<Leaf>& Log::leaves(const std::string& name) const { return resolve(name).leaves; }
+
+std::vector<double> Log::column(const std::string& name, int multi_id, const std::string& field) const {
+  const auto& l = resolve(name).leaves;
+  auto leaf = std::find_if(l.begin(), l.end(), [&](const Leaf& x) { return x.name == field; });
+  if (leaf == l.end()) throw std::runtime_error(source_ + ": topic " + name + " has no field " + field);
+  const std::size_t s = baseTypeSize(leaf->type);
+  std::vector<double> out;
+  for (const auto& sub : subs_) {
+    if (sub.name != name || sub.multi_id != multi_id) continue;
+    for (const auto& [off, size] : sub.records)
+      out.push_back(leaf->offset + s <= size ? decodeBase(leaf->type, bytes_.data() + off + leaf->offset) : 0.0);
+  }
+  return out;
+}
+
+std::vector<double> Log::times(const std::string& name, int multi_id) const {
+  auto t = column(name, multi_id, "timestamp");
+  for (double& x : t) x *= 1e-6;
+  return t;
+}
+
+}  // namespace wattswath::logs::ulog
