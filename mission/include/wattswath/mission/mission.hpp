@@ -1,0 +1,86 @@
+#pragma once
+/// @file mission.hpp
+/// What the autopilot is told: a mission as the items of a QGroundControl `.plan` or a QGC WPL 110
+/// `.waypoints` file (MAVLink mission items), with the planned home. Geodetic here, as in the
+/// files; flight.hpp turns it into local metres and a trajectory.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "wattswath/geometry/frame.hpp"
+
+namespace wattswath::mission {
+
+/// MAVLink MAV_CMD numbers this library knows (common.xml).
+enum class Command : int {
+  NavWaypoint = 16,          ///< fly to a position; param1 hold [s], param2 acceptance radius [m]
+  NavLoiterUnlimited = 17,   ///< loiter forever (a mission never ends after it)
+  NavLoiterTurns = 18,       ///< loiter a number of turns
+  NavLoiterTime = 19,        ///< fly to a position and hold there; param1 time [s]
+  NavReturnToLaunch = 20,    ///< return home and land
+  NavLand = 21,              ///< land at a position (0, 0: where the vehicle is)
+  NavTakeoff = 22,           ///< climb to the item's altitude
+  NavSplineWaypoint = 82,    ///< fly to a position on a spline; param1 hold [s]
+  NavDelay = 93,             ///< wait; param1 delay [s]
+  ConditionDelay = 112,      ///< delay the next DO command; param1 [s] (no effect on flight)
+  ConditionYaw = 115,        ///< turn to a heading; param1 angle [deg], param2 rate [deg/s]
+  DoJump = 177,              ///< jump to item param1, param2 times
+  DoChangeSpeed = 178,       ///< param1 speed type (0/1 horizontal, 2 climb, 3 descent), param2 [m/s]
+  DoSetHome = 179,           ///< set home (no effect on the trajectory here; listed)
+  DoSetRelay = 181,          ///< relay (no effect on flight)
+  DoSetServo = 183,          ///< servo (no effect on flight)
+  DoSetRoi = 201,            ///< region of interest (no effect on the path)
+  DoDigicamControl = 203,    ///< camera shot (no effect on flight)
+  DoMountControl = 205,      ///< gimbal (no effect on flight)
+  DoSetCamTriggDist = 206,   ///< camera trigger distance param1 [m] (0 stops)
+  DoGimbalManagerPitchyaw = 1000,  ///< gimbal (no effect on flight)
+  ImageStartCapture = 2000,  ///< camera (no effect on flight)
+  ImageStopCapture = 2001,   ///< camera (no effect on flight)
+  VideoStartCapture = 2500,  ///< camera (no effect on flight)
+  VideoStopCapture = 2501,   ///< camera (no effect on flight)
+  SetCameraMode = 530,       ///< camera (no effect on flight)
+};
+
+/// MAVLink MAV_FRAME of an item's altitude.
+enum class AltitudeFrame : int {
+  Absolute = 0,        ///< MAV_FRAME_GLOBAL: altitude above mean sea level [m]
+  Mission = 2,         ///< MAV_FRAME_MISSION: the item has no position (DO commands)
+  Relative = 3,        ///< MAV_FRAME_GLOBAL_RELATIVE_ALT: altitude above home [m]
+  Terrain = 10,        ///< MAV_FRAME_GLOBAL_TERRAIN_ALT: above terrain (flat terrain at home assumed)
+};
+
+/// One mission item, as in the file (seq 0 of a `.waypoints` file is home and is not an item).
+struct MissionItem {
+  int seq = 0;                   ///< item number as the autopilot counts it (1 = first after home)
+  int command = 0;               ///< MAV_CMD number (see Command)
+  int frame = 3;                 ///< MAV_FRAME number as written in the file
+  double param[4] = {0, 0, 0, 0};  ///< param1..param4 as written (NaN where the file has null/NaN)
+  double lat_deg = 0.0;          ///< [deg] x / latitude (0 for items without a position)
+  double lon_deg = 0.0;          ///< [deg] y / longitude
+  double alt_m = 0.0;            ///< [m] z / altitude in `frame`
+  bool autocontinue = true;      ///< false: the autopilot stops after this item
+  std::string where;             ///< "FILE:LINE" or "FILE: mission.items[3]" for messages
+};
+
+/// A whole mission: the planned home and the items in order.
+struct Mission {
+  std::string source;                 ///< file the mission was read from
+  std::string format;                 ///< "plan" or "waypoints"
+  geometry::GeoPoint home;            ///< [deg, m AMSL] planned home (take-off point)
+  bool home_known = false;            ///< false when the file gives no home (first position used)
+  std::vector<MissionItem> items;     ///< in file order (home excluded)
+  double plan_cruise_speed_mps = 0.0; ///< [m/s] `.plan` cruiseSpeed (0 when absent; QGC estimate only)
+  double plan_hover_speed_mps = 0.0;  ///< [m/s] `.plan` hoverSpeed (0 when absent; QGC estimate only)
+  int firmware_type = 0;              ///< `.plan` firmwareType (MAV_AUTOPILOT: 3 ArduPilot, 12 PX4; 0 unknown)
+  int vehicle_type = 0;               ///< `.plan` vehicleType (MAV_TYPE: 2 quad, 13 hexa, ...; 0 unknown)
+  std::vector<std::string> warnings;  ///< what was accepted leniently or ignored, each naming its item
+};
+
+/// Name of a MAV_CMD number ("NAV_WAYPOINT", ...), or "MAV_CMD <n>" when unknown.
+std::string commandName(int command);
+
+/// True for the commands that move the vehicle (NAV_*) as opposed to DO_* / CONDITION_*.
+bool isNavCommand(int command);
+
+}  // namespace wattswath::mission
