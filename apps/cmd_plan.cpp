@@ -16,12 +16,13 @@
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
+#include "wattswath/mission/planned_mission.hpp"
 #include "wattswath/planner/coverage.hpp"
-#include "wattswath/planner/mission.hpp"
 
 namespace wattswath::apps {
 namespace geo = wattswath::geometry;
 namespace pl = wattswath::planner;
+namespace ms = wattswath::mission;
 namespace fs = std::filesystem;
 
 namespace {
@@ -180,9 +181,9 @@ nlohmann::json batteryJson(const std::optional<pl::BatteryUse>& b) {
 }
 
 // Waypoints: the end of every line or arc, flown at that leg's cruise speed.
-pl::Mission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const geo::LocalFrame& frame,
-                      double home_alt_amsl) {
-  pl::Mission m;
+ms::PlannedMission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const geo::LocalFrame& frame,
+                             double home_alt_amsl) {
+  ms::PlannedMission m;
   m.home = frame.toGeodetic(pr.home);
   m.home_altitude_amsl_m = home_alt_amsl;
   m.takeoff_altitude_m = pr.altitude;
@@ -210,18 +211,18 @@ pl::Mission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, cons
     if (std::none_of(pr.area.holes.begin(), pr.area.holes.end(), [&](const geo::Ring& h) { return sameRing(h, z); }))
       fence.push_back(z);
   for (const auto& z : fence) {
-    std::vector<pl::GeoPoint> ring;
+    std::vector<ms::GeoPoint> ring;
     for (const auto& p : z) ring.push_back(frame.toGeodetic(p));
     m.no_fly.push_back(ring);
   }
   return m;
 }
 
-std::vector<pl::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFrame& frame) {
-  std::vector<pl::LegRecord> out;
+std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFrame& frame) {
+  std::vector<ms::LegRecord> out;
   for (size_t i = 0; i < f.path.legs.size(); ++i) {
     const auto& leg = f.path.legs[i];
-    pl::LegRecord l;
+    ms::LegRecord l;
     l.start = frame.toGeodetic(leg.start);
     l.end = frame.toGeodetic(leg.end);
     l.kind = leg.kind == geo::PrimitiveKind::Line ? "line" : leg.kind == geo::PrimitiveKind::Arc ? "arc" : "turn_in_place";
@@ -287,10 +288,10 @@ void runPlan(const PlanOpts& o) {
   go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
   go.leg_properties["time_s"] = r.plan.flown.leg_time;
   const fs::path dir(o.out);
-  writeTextFileAtomic((dir / "mission.plan").string(), pl::toQgcPlan(mission));
-  writeTextFileAtomic((dir / "mission.waypoints").string(), pl::toQgcWpl(mission));
+  writeTextFileAtomic((dir / "mission.plan").string(), ms::toQgcPlan(mission));
+  writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(mission));
   writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
-  writeTextFileAtomic((dir / "legs.csv").string(), pl::toLegCsv(legRecords(r.plan.flown, frame)));
+  writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
   if (!o.no_report || !o.report_svg.empty()) {
     const auto report = report::planReport(planReportData(r, pr, vehicle, model, o.area));
     writeReport(report, o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "test_util.hpp"
-#include "wattswath/planner/mission.hpp"
+#include "wattswath/mission/planned_mission.hpp"
 
 using wattswath::test::cliBinary;
 using wattswath::test::run;
@@ -76,7 +76,7 @@ void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
   EXPECT_TRUE(j.contains("battery"));
   for (const char* f : {"mission.plan", "mission.waypoints", "path.geojson"})
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
-  const auto problems = wattswath::planner::checkQgcPlan(slurp(out + "/mission.plan"));
+  const auto problems = wattswath::mission::checkQgcPlan(slurp(out + "/mission.plan"));
   EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
   EXPECT_EQ(slurp(out + "/mission.waypoints").rfind("QGC WPL 110", 0), 0u);
   const auto gj = nlohmann::json::parse(slurp(out + "/path.geojson"));

@@ -50,15 +50,19 @@ enum class AltitudeFrame : int {
   Terrain = 10,        ///< MAV_FRAME_GLOBAL_TERRAIN_ALT: above terrain (flat terrain at home assumed)
 };
 
+/// AltitudeFrame of a MAV_FRAME number as written: the _INT variants 5, 6, 11 (same meaning, integer
+/// lat/lon on the wire) give 0, 3, 10. Throws std::invalid_argument for any other than 0, 2, 3, 5, 6, 10, 11.
+AltitudeFrame altitudeFrame(int frame);
+
 /// One mission item, as in the file (seq 0 of a `.waypoints` file is home and is not an item).
 struct MissionItem {
   int seq = 0;                   ///< item number as the autopilot counts it (1 = first after home)
   int command = 0;               ///< MAV_CMD number (see Command)
   int frame = 3;                 ///< MAV_FRAME number as written in the file
   double param[4] = {0, 0, 0, 0};  ///< param1..param4 as written (NaN where the file has null/NaN)
-  double lat_deg = 0.0;          ///< [deg] x / latitude (0 for items without a position)
-  double lon_deg = 0.0;          ///< [deg] y / longitude
-  double alt_m = 0.0;            ///< [m] z / altitude in `frame`
+  double lat_deg = 0.0;          ///< [deg] x / param5 / latitude as written (0 or NaN: no position)
+  double lon_deg = 0.0;          ///< [deg] y / param6 / longitude as written
+  double alt_m = 0.0;            ///< [m] z / param7 / altitude in `frame` as written
   bool autocontinue = true;      ///< false: the autopilot stops after this item
   std::string where;             ///< "FILE:LINE" or "FILE: mission.items[3]" for messages
 };
@@ -82,5 +86,30 @@ std::string commandName(int command);
 
 /// True for the commands that move the vehicle (NAV_*) as opposed to DO_* / CONDITION_*.
 bool isNavCommand(int command);
+
+/// True for the commands the readers accept: NAV_TAKEOFF, NAV_WAYPOINT, NAV_SPLINE_WAYPOINT,
+/// NAV_LOITER_TIME, NAV_RETURN_TO_LAUNCH, NAV_LAND, NAV_DELAY, DO_CHANGE_SPEED, DO_SET_CAM_TRIGG_DIST,
+/// DO_JUMP, CONDITION_YAW, CONDITION_DELAY and the camera, gimbal, servo, relay and ROI commands of
+/// Command. Not: loiters without end (17, 18), DO_SET_HOME (moves the return point) or any other.
+bool isSupportedCommand(int command);
+
+/// True for the commands flown to a position given by lat/lon/alt (NAV_TAKEOFF, NAV_WAYPOINT,
+/// NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_LAND); their frame must be a global one (0, 3, 10, 5, 6, 11).
+bool isPositional(int command);
+
+/// True when `item` is positional and gives a position: lat/lon finite and not both 0 (ArduPilot
+/// flies lat = lon = 0 as "where the vehicle is", e.g. a take-off or land in place).
+bool hasPosition(const MissionItem& item);
+
+/// Same seq, command, frame, params, position and autocontinue; NaN equals NaN; `where` is not compared.
+bool operator==(const MissionItem& a, const MissionItem& b);
+/// Negation of ==.
+bool operator!=(const MissionItem& a, const MissionItem& b);
+
+/// Same home (and home_known), items, plan speeds, firmware and vehicle type; source, format and
+/// warnings are not compared.
+bool operator==(const Mission& a, const Mission& b);
+/// Negation of ==.
+bool operator!=(const Mission& a, const Mission& b);
 
 }  // namespace wattswath::mission

@@ -1,4 +1,4 @@
-#include "wattswath/planner/mission.hpp"
+#include "wattswath/mission/planned_mission.hpp"
 
 #include <array>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace wattswath::planner {
+namespace wattswath::mission {
 namespace {
 
 using nlohmann::json;
@@ -46,7 +46,7 @@ void checkPositive(double v, const std::string& what) {
 
 // The flight as MAVLink items: take-off, then per waypoint a speed change when its speed differs
 // from the current one, then the waypoint; finally return to launch.
-std::vector<Item> items(const Mission& m) {
+std::vector<Item> items(const PlannedMission& m) {
   validate(m);
   std::vector<Item> out;
   Item takeoff;
@@ -93,7 +93,7 @@ std::string csvEscape(const std::string& s) {
 
 }  // namespace
 
-void validate(const Mission& m) {
+void validate(const PlannedMission& m) {
   checkGeo(m.home, "home");
   if (!std::isfinite(m.home_altitude_amsl_m))
     throw std::invalid_argument("mission: home_altitude_amsl_m is not finite");
@@ -119,7 +119,7 @@ void validate(const Mission& m) {
   }
 }
 
-std::string toQgcPlan(const Mission& m) {
+std::string toQgcPlan(const PlannedMission& m) {
   const auto list = items(m);
   json jitems = json::array();
   int jump_id = 1;
@@ -159,7 +159,7 @@ std::string toQgcPlan(const Mission& m) {
   return plan.dump(4) + "\n";
 }
 
-std::string toQgcWpl(const Mission& m) {
+std::string toQgcWpl(const PlannedMission& m) {
   const auto list = items(m);
   std::ostringstream o;
   o << "QGC WPL 110\n";
@@ -288,4 +288,4 @@ std::string toLegCsv(const std::vector<LegRecord>& legs) {
   return o.str();
 }
 
-}  // namespace wattswath::planner
+}  // namespace wattswath::mission

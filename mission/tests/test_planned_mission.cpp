@@ -4,13 +4,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "wattswath/planner/mission.hpp"
+#include "wattswath/mission/planned_mission.hpp"
 
-using namespace wattswath::planner;
+using namespace wattswath::mission;
 
 namespace {
-Mission sample() {
-  Mission m;
+PlannedMission sample() {
+  PlannedMission m;
   m.home = {43.7200, 10.4200};
   m.home_altitude_amsl_m = 3.0;
   m.takeoff_altitude_m = 10.0;
@@ -20,7 +20,7 @@ Mission sample() {
 }
 }  // namespace
 
-TEST(Mission, QgcPlanLoadsByQgcRules) {
+TEST(PlannedMission, QgcPlanLoadsByQgcRules) {
   const std::string text = toQgcPlan(sample());
   EXPECT_TRUE(checkQgcPlan(text).empty()) << checkQgcPlan(text).front();
   const auto j = nlohmann::json::parse(text);
@@ -41,7 +41,7 @@ TEST(Mission, QgcPlanLoadsByQgcRules) {
   EXPECT_EQ(j["geoFence"]["polygons"][0]["polygon"].size(), 3u);
 }
 
-TEST(Mission, CheckerFindsBrokenPlans) {
+TEST(PlannedMission, CheckerFindsBrokenPlans) {
   auto j = nlohmann::json::parse(toQgcPlan(sample()));
   j["mission"]["items"][2].erase("autoContinue");
   j["mission"]["items"][3]["params"] = {1, 2, 3};
@@ -51,7 +51,7 @@ TEST(Mission, CheckerFindsBrokenPlans) {
   EXPECT_FALSE(checkQgcPlan("{not json").empty());
 }
 
-TEST(Mission, WplHasHomeRowAndTwelveTabbedColumns) {
+TEST(PlannedMission, WplHasHomeRowAndTwelveTabbedColumns) {
   const std::string text = toQgcWpl(sample());
   std::istringstream in(text);
   std::string line;
@@ -67,8 +67,8 @@ TEST(Mission, WplHasHomeRowAndTwelveTabbedColumns) {
   EXPECT_EQ(rows, 8);  // home + 7 items
 }
 
-TEST(Mission, InvalidMissionsAreRejectedWithTheField) {
-  Mission m = sample();
+TEST(PlannedMission, InvalidMissionsAreRejectedWithTheField) {
+  PlannedMission m = sample();
   m.waypoints[1].position.lat_deg = 95.0;
   try {
     toQgcPlan(m);
@@ -84,7 +84,7 @@ TEST(Mission, InvalidMissionsAreRejectedWithTheField) {
   EXPECT_THROW(toQgcPlan(m), std::invalid_argument);
 }
 
-TEST(Mission, CsvCarriesSpeedAndEnergy) {
+TEST(PlannedMission, CsvCarriesSpeedAndEnergy) {
   LegRecord l;
   l.start = {43.72, 10.42};
   l.end = {43.721, 10.421};

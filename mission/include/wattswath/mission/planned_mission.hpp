@@ -1,21 +1,22 @@
 #pragma once
-/// @file mission.hpp
-/// Mission files written from a plan: QGroundControl `.plan` (JSON), QGC WPL 110 `.waypoints`
-/// and a CSV of legs. Geodetic coordinates
-/// exist only here, at the output boundary; the caller converts ENU metres with its frame.
+/// @file planned_mission.hpp
+/// Mission files written from a plan (`wattswath plan`): QGroundControl `.plan` (JSON), QGC WPL 110
+/// `.waypoints` and a CSV of legs. Geodetic coordinates exist only here, at the output boundary; the
+/// caller converts ENU metres with its frame. (Moved from planner/; a follow-up writes plans through
+/// the item model of mission.hpp instead of this struct.)
 
 #include <string>
 #include <vector>
 
 #include "wattswath/geometry/frame.hpp"
 
-namespace wattswath::planner {
+namespace wattswath::mission {
 
 /// A WGS84 position [deg]: geometry's geodetic point (its alt_m is not used by the writers).
 using GeoPoint = geometry::GeoPoint;
 
 /// One waypoint of a mission, flown towards at `speed_mps`.
-struct MissionWaypoint {
+struct PlannedWaypoint {
   GeoPoint position;        ///< [deg] where to fly
   double altitude_m = 0.0;  ///< [m] above home (MAV_FRAME_GLOBAL_RELATIVE_ALT)
   double speed_mps = 0.0;   ///< [m/s] ground speed on the leg that ends here (> 0)
@@ -25,29 +26,29 @@ struct MissionWaypoint {
 enum class Firmware { ArduPilot = 3, PX4 = 12 };
 
 /// A complete mission: take-off at home, waypoints with speed changes, return to launch.
-struct Mission {
+struct PlannedMission {
   GeoPoint home;                                ///< [deg] planned home / launch position
   double home_altitude_amsl_m = 0.0;            ///< [m] home altitude above mean sea level
   double takeoff_altitude_m = 10.0;             ///< [m] take-off height above home, (0, 1000]
   double cruise_speed_mps = 5.0;                ///< [m/s] mission default speed written as cruiseSpeed
   double hover_speed_mps = 5.0;                 ///< [m/s] hoverSpeed of the .plan
   Firmware firmware = Firmware::ArduPilot;      ///< autopilot family (IRIS+ flights were ArduCopter)
-  std::vector<MissionWaypoint> waypoints;       ///< in flight order (at least one)
+  std::vector<PlannedWaypoint> waypoints;       ///< in flight order (at least one)
   std::vector<std::vector<GeoPoint>> no_fly;    ///< [deg] exclusion polygons for the geofence
 };
 
 /// Throws std::invalid_argument naming the field, index and value when `m` cannot be written
 /// (no waypoints, latitude/longitude out of range, non-positive speeds or altitudes, a no-fly
 /// polygon with fewer than 3 vertices).
-void validate(const Mission& m);
+void validate(const PlannedMission& m);
 
 /// QGroundControl `.plan` JSON text (fileType "Plan", version 1; mission version 2 with SimpleItems:
 /// 22 take-off, 178 DO_CHANGE_SPEED per leg whose speed changes, 16 waypoints, 20 return to launch;
 /// geoFence version 2 with the no-fly zones as exclusion polygons; rallyPoints version 2).
-std::string toQgcPlan(const Mission& m);
+std::string toQgcPlan(const PlannedMission& m);
 
 /// QGC WPL 110 text (tab separated; row 0 is home; same items as the `.plan`).
-std::string toQgcWpl(const Mission& m);
+std::string toQgcWpl(const PlannedMission& m);
 
 /// Checks `.plan` JSON text against the format QGroundControl loads (the keys, types and values
 /// its JSON loader requires). Returns the problems found; empty means it loads.
@@ -70,4 +71,4 @@ struct LegRecord {
 /// CSV of legs with a header row (units in the column names).
 std::string toLegCsv(const std::vector<LegRecord>& legs);
 
-}  // namespace wattswath::planner
+}  // namespace wattswath::mission
