@@ -40,7 +40,7 @@ const std::set<std::string>& knownVehicleKeys() {
       "name", "description", "source", "mass_kg", "rotor_count", "rotor_diameter_m", "disk_area_m2",
       "motor_efficiency", "propeller_efficiency", "drag_area_m2", "max_acceleration_mps2",
       "max_yaw_rate_radps", "max_speed_mps", "air_density_kgpm3", "gravity_mps2", "battery",
-      "extensions"};
+      "extensions", "autopilot"};
   return keys;
 }
 
@@ -213,6 +213,14 @@ Vehicle parseVehicle(const std::string& json_text, const std::string& source) {
     }
     for (auto it = x.begin(); it != x.end(); ++it) v.extensions[it.key()] = it.value().dump();
   }
+  if (j.contains("autopilot")) {
+    const json& a = j["autopilot"];
+    if (!a.is_object()) {
+      throw std::invalid_argument(prefix(source) + "field 'autopilot' = " + a.dump() +
+                                  ", expected an object {\"firmware\", \"version\", \"parameters\"}");
+    }
+    v.autopilot_json = a.dump();
+  }
   validate(v, source);
   return v;
 }
@@ -260,6 +268,7 @@ std::string vehicleToJson(const Vehicle& v) {
     for (const auto& [key, text] : v.extensions) x[key] = json::parse(text);
     j["extensions"] = x;
   }
+  if (!v.autopilot_json.empty()) j["autopilot"] = json::parse(v.autopilot_json);
   return j.dump(2);
 }
 

@@ -99,6 +99,31 @@ TEST(Vehicle, RoundTripsThroughJson) {
   EXPECT_EQ(v.name, w.name);
 }
 
+std::string withAutopilot(const std::string& autopilot) {
+  std::string text = irisJson();
+  return text.insert(text.size() - 1, R"(,"autopilot":)" + autopilot);
+}
+
+TEST(Vehicle, AutopilotObjectIsKeptRawAndRoundTrips) {
+  const std::string autopilot = R"({"firmware":"ArduCopter","version":"4.5.7","parameters":{"WPNAV_SPEED":1000,"ATC_INPUT_TC":0.15}})";
+  const Vehicle v = parseVehicle(withAutopilot(autopilot), "v.json");
+  // The same JSON, re-serialised compactly with the keys sorted.
+  EXPECT_EQ(v.autopilot_json,
+            R"({"firmware":"ArduCopter","parameters":{"ATC_INPUT_TC":0.15,"WPNAV_SPEED":1000},"version":"4.5.7"})");
+  const Vehicle w = parseVehicle(vehicleToJson(v), "roundtrip");
+  EXPECT_EQ(w.autopilot_json, v.autopilot_json);
+  EXPECT_TRUE(parseVehicle(irisJson(), "v.json").autopilot_json.empty());
+  EXPECT_EQ(vehicleToJson(parseVehicle(irisJson(), "v.json")).find("autopilot"), std::string::npos);
+}
+
+TEST(Vehicle, AutopilotMustBeAnObject) {
+  for (const std::string bad : {"[1,2]", "\"ArduCopter\"", "null", "3"}) {
+    const std::string e = errorOf(withAutopilot(bad));
+    EXPECT_NE(e.find("v.json: field 'autopilot' = "), std::string::npos) << e;
+    EXPECT_NE(e.find("expected an object"), std::string::npos) << e;
+  }
+}
+
 TEST(Vehicle, IdealMomentumHoverIsHalfOfMarinsEq4) {
   const Vehicle v = loadVehicle(wattswath::test::sourcePath("data/vehicles/iris.json"));
   EXPECT_NEAR(marinsRotorPowerW(v) / idealHoverPowerW(v), 2.0, 1e-12);

@@ -12,6 +12,8 @@
 #include "wattswath/logs/dataflash.hpp"
 #include "wattswath/logs/log_io.hpp"
 #include "wattswath/logs/ulog.hpp"
+#include "binary_read.hpp"
+#include "mav_type.hpp"
 
 namespace wattswath::logs {
 namespace {
@@ -219,12 +221,6 @@ std::string logEventName(int id) {
   return it == names.end() ? "" : it->second;
 }
 
-std::vector<std::uint8_t> readFileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& raw) {
   std::vector<Battery> found;
   for (const std::string name : {"BAT", "BAT2", "CURR", "CURR2"}) {
@@ -401,7 +397,7 @@ FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string&
 }
 
 FlightLog readDataFlashLog(const std::string& path, const LogReadOptions& options) {
-  return readDataFlashBytes(readFileBytes(path), path, options);
+  return readDataFlashBytes(binary::readFileBytes(path), path, options);
 }
 
 // ---------------------------------------------------------------- ULog
@@ -416,14 +412,6 @@ std::string px4Version(const std::string& release) {
   std::string kind = type == 0xFF ? "release" : type >= 192 ? "release candidate" : type >= 128 ? "beta" : type >= 64 ? "alpha" : "development";
   return "v" + std::to_string((v >> 24) & 0xFF) + "." + std::to_string((v >> 16) & 0xFF) + "." +
          std::to_string((v >> 8) & 0xFF) + " (" + kind + ")";
-}
-
-std::string mavType(int t) {
-  static const std::map<int, std::string> names = {{1, "fixed wing"}, {2, "quadrotor"}, {3, "coaxial"},
-      {4, "helicopter"}, {10, "ground rover"}, {13, "hexarotor"}, {14, "octorotor"}, {15, "tricopter"},
-      {19, "VTOL tailsitter duorotor"}, {20, "VTOL tailsitter quadrotor"}, {21, "VTOL tiltrotor"}, {22, "VTOL"}};
-  auto it = names.find(t);
-  return it == names.end() ? "MAV_TYPE " + std::to_string(t) : it->second;
 }
 
 std::string navStateName(int s) {
@@ -466,7 +454,7 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
   raw.vehicle.clear();
   if (!L.instances("vehicle_status").empty() && L.hasField("vehicle_status", "system_type")) {
     const auto st = L.column("vehicle_status", 0, "system_type");
-    if (!st.empty()) raw.vehicle = mavType(static_cast<int>(st.back()));
+    if (!st.empty()) raw.vehicle = mavTypeName(static_cast<int>(st.back()));
   }
   if (raw.vehicle.empty()) raw.vehicle = "unknown";
   if (!infoOr("ver_hw").empty()) raw.vehicle += ", board " + infoOr("ver_hw");
@@ -571,7 +559,7 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
 }
 
 FlightLog readUlogLog(const std::string& path, const LogReadOptions& options) {
-  return readUlogBytes(readFileBytes(path), path, options);
+  return readUlogBytes(binary::readFileBytes(path), path, options);
 }
 
 // ---------------------------------------------------------------- common

@@ -1,8 +1,13 @@
 #pragma once
-// Private helpers of the binary log readers: little-endian reads from a byte buffer.
+// Private helpers of the binary log readers: whole-file reads, little-endian reads from a byte buffer.
 #include <cstdint>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 namespace wattswath::logs::binary {
 
@@ -19,6 +24,13 @@ T readLe(const std::uint8_t* p) {
   T v;
   std::memcpy(&v, buf, sizeof(T));
   return v;
+}
+
+/// The bytes of the file at `path`; throws std::runtime_error naming it when it cannot be opened.
+inline std::vector<std::uint8_t> readFileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace wattswath::logs::binary

@@ -133,6 +133,7 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
                                " bytes after the last message, too short for a message header (truncated)";
       if (!lenient) fail(pos, what);
       log.warnings_.push_back(where(pos) + what);
+      log.cut_end_ = true;
       break;
     }
     if (b[pos] != kHead1 || b[pos + 1] != kHead2) {
@@ -165,6 +166,7 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
                                " remain: the file is truncated";
       if (!lenient) fail(pos, what);
       log.warnings_.push_back(where(pos) + what);
+      log.cut_end_ = true;
       break;
     }
     if (type == kFmtType) {

@@ -207,6 +207,8 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
         if (type == 'I') log.info_[name] = value;
         else if (type == 'M') log.info_[name] = (p[0] ? log.info_[name] : std::string()) + value;
         else if (type == 'P') log.params_[name] = number;
+        if (type == 'Q' && (p[0] & 1)) log.defaults_[name] = number;                // system-wide default
+        if (type == 'Q' && (p[0] & 2)) log.configuration_defaults_[name] = number;  // airframe default
         break;
       }
       case 'A': {

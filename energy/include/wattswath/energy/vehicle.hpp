@@ -57,6 +57,7 @@ struct Vehicle {
   /// Model-specific data: the JSON text of each entry of the file's `extensions` object, keyed by
   /// its name (e.g. "hwang"); each model parses and validates its own entry.
   std::map<std::string, std::string> extensions;
+  std::string autopilot_json;  ///< raw JSON text of the file's "autopilot" object (empty when absent); parsed by wattswath::mission
 
   /// Total propulsive efficiency eta_tot = eta_mot * eta_prop [-] (Marins Eq. 1).
   double totalEfficiency() const { return motor_efficiency * propeller_efficiency; }

@@ -60,6 +60,9 @@ class Log {
   std::size_t offsetOf(const std::string& name, std::size_t i) const;
   /// Problems skipped in lenient mode, each naming the byte offset.
   const std::vector<std::string>& warnings() const { return warnings_; }
+  /// True when, in lenient mode, the file ended inside a message (the cut final record ArduPilot's
+  /// logger leaves when it stops); the cut is also listed in warnings().
+  bool endsInCutMessage() const { return cut_end_; }
   /// Total number of messages decoded.
   std::size_t messageCount() const { return message_count_; }
   /// Name of the file the log was read from.
@@ -75,6 +78,7 @@ class Log {
   std::map<int, std::vector<std::size_t>> records_;    // type id -> payload offsets
   std::vector<std::string> warnings_;
   std::size_t message_count_ = 0;
+  bool cut_end_ = false;
 };
 
 /// Size in bytes of format character `c`, or 0 when it is not a DataFlash format character.

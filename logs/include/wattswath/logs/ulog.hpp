@@ -49,6 +49,11 @@ class Log {
   const std::map<std::string, std::string>& info() const { return info_; }
   /// Parameters ('P'; later values replace earlier ones) by name.
   const std::map<std::string, double>& parameters() const { return params_; }
+  /// System-wide default parameter values ('Q' with default_types bit 0) by name; PX4 logs them
+  /// only for parameters whose value differs from the default.
+  const std::map<std::string, double>& defaultParameters() const { return defaults_; }
+  /// Defaults for the current airframe configuration ('Q' with default_types bit 1) by name.
+  const std::map<std::string, double>& configurationDefaults() const { return configuration_defaults_; }
   /// Logged strings in file order.
   const std::vector<LoggedString>& strings() const { return strings_; }
   /// Number of dropout ('O') messages and their total duration [s].
@@ -103,6 +108,8 @@ class Log {
   mutable std::map<std::string, Resolved> resolved_;
   std::map<std::string, std::string> info_;
   std::map<std::string, double> params_;
+  std::map<std::string, double> defaults_;
+  std::map<std::string, double> configuration_defaults_;
   std::vector<LoggedString> strings_;
   std::vector<Subscription> subs_;
   int dropout_count_ = 0;
