@@ -71,6 +71,7 @@ void registerLogFileCommands(CLI::App& app);   ///< log info, log convert (cmd_l
 void registerAreaCommands(CLI::App& app);      ///< area info (cmd_area.cpp)
 void registerPlanCommand(CLI::App& app);      ///< plan (cmd_plan.cpp)
 void registerEnduranceCommands(CLI::App& app); ///< endurance, models (cmd_endurance.cpp)
+void registerVehicleCommands(CLI::App& app);   ///< vehicle params (cmd_vehicle.cpp)
 
 /// Parses `--speed` text: one speed "U" or a range "FROM:TO:STEP" [m/s]; throws
 /// std::invalid_argument quoting the text otherwise.

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   wattswath::apps::registerPlanCommand(app);
   wattswath::apps::registerEnduranceCommands(app);
   wattswath::apps::registerCoverageCommand(app);
+  wattswath::apps::registerVehicleCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

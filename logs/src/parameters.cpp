@@ -160,7 +160,7 @@ dataflash::Log parseDataFlash(std::vector<std::uint8_t> bytes, const std::string
   auto L = dataflash::Log::parse(std::move(bytes), source, true);
   const auto& w = L.warnings();
   const bool only_cut_end = w.size() == 1 && L.endsInCutMessage();
-  if (!lenient && !w.empty() && !only_cut_end) throw std::runtime_error(w.front() + " (a lenient read skips it)");
+  if (!lenient && !w.empty() && !only_cut_end) throw std::runtime_error(w.front() + " (only a lenient read goes on past this)");
   return L;
 }
 

@@ -8,36 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "log_bytes.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
 #include "wattswath/logs/dataflash.hpp"
 #include "wattswath/logs/ulog.hpp"
 
 namespace {
 
-using Bytes = std::vector<std::uint8_t>;
-
-template <typename T>
-void put(Bytes& b, T v) {
-  std::uint8_t raw[sizeof(T)];
-  std::memcpy(raw, &v, sizeof(T));
-  for (std::uint8_t x : raw) b.push_back(x);  // (insert() trips GCC 12's bogus -Wnonnull)
-}
-void putText(Bytes& b, const std::string& s, std::size_t n) {
-  for (std::size_t k = 0; k < n; ++k) b.push_back(k < s.size() ? static_cast<std::uint8_t>(s[k]) : 0);
-}
-
-// ------------------------------------------------------------ DataFlash builder
-struct DataFlash {
-  Bytes b;
-  DataFlash() { fmt(128, 89, "FMT", "BBnNZ", "Type,Length,Name,Format,Columns"); }
-  void fmt(std::uint8_t type, std::uint8_t len, const std::string& name, const std::string& format, const std::string& cols) {
-    b.insert(b.end(), {0xA3, 0x95, 128, type, len});
-    putText(b, name, 4);
-    putText(b, format, 16);
-    putText(b, cols, 64);
-  }
-  void head(std::uint8_t type) { b.insert(b.end(), {0xA3, 0x95, type}); }
-};
+using namespace wattswath::test::logbytes;
 
 // ArduPilot 4.x style: BAT with two instances (0 reads no voltage), XKF1 with two cores, EV, MODE.
 Bytes modernDataFlash() {
@@ -161,39 +139,6 @@ TEST(DataFlash, NotADataFlashFile) {
   EXPECT_THROW(wattswath::logs::dataflash::Log::parse(Bytes{'h', 'e', 'l', 'l', 'o'}, "t.bin", false), std::runtime_error);
 }
 
-// ------------------------------------------------------------ ULog builder
-struct ULog {
-  Bytes b;
-  explicit ULog(bool appended_flag = false, std::uint64_t appended_at = 0) {
-    b = {'U', 'L', 'o', 'g', 0x01, 0x12, 0x35, 1};
-    put<std::uint64_t>(b, 1000);
-    Bytes flags(40, 0);
-    if (appended_flag) {
-      flags[8] = 1;
-      std::memcpy(flags.data() + 16, &appended_at, 8);
-    }
-    msg('B', flags);
-  }
-  void msg(char type, const Bytes& payload) {
-    put<std::uint16_t>(b, static_cast<std::uint16_t>(payload.size()));
-    b.push_back(static_cast<std::uint8_t>(type));
-    b.insert(b.end(), payload.begin(), payload.end());
-  }
-  void text(char type, const std::string& s) { msg(type, Bytes(s.begin(), s.end())); }
-  void subscribe(std::uint8_t multi, std::uint16_t id, const std::string& name) {
-    Bytes p{multi};
-    put<std::uint16_t>(p, id);
-    p.insert(p.end(), name.begin(), name.end());
-    msg('A', p);
-  }
-  void data(std::uint16_t id, const Bytes& fields) {
-    Bytes p;
-    put<std::uint16_t>(p, id);
-    p.insert(p.end(), fields.begin(), fields.end());
-    msg('D', p);
-  }
-  std::size_t appendedOffsetPos() const { return 16 + 3 + 16; }
-};
 
 void definitions(ULog& u) {
   u.text('F', "esc_report:uint32_t esc_rpm;float esc_voltage;");

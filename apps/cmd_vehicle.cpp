@@ -1,0 +1,154 @@
+// `wattswath vehicle params`: the autopilot's firmware and flight parameters read from a log of the
+// vehicle and written into a copy of a vehicle file, as its `autopilot` object (data/README.md).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "cli.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/logs/parameters.hpp"
+
+namespace wattswath::apps {
+
+namespace {
+
+using OrderedJson = nlohmann::ordered_json;
+
+struct ParamsOptions {
+  std::string log, vehicle, out;
+  logs::LogReadOptions read;
+  bool force = false, json = false, all = false;
+};
+
+// A parameter value as JSON: an integer when whole; else the shortest decimal that reads back to the
+// same 32-bit float (ArduPilot logs floats: 0.15000000596 is written 0.15), else the double.
+OrderedJson parameterValue(double v) {
+  if (std::round(v) == v && std::fabs(v) < 9e15) return static_cast<long long>(v);
+  const float f = static_cast<float>(v);
+  if (static_cast<double>(f) != v) return v;
+  for (int digits = 6; digits <= 9; ++digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(f));
+    if (std::strtof(text, nullptr) == f) return std::strtod(text, nullptr);
+  }
+  return v;
+}
+
+OrderedJson parameterObject(const std::map<std::string, double>& parameters) {
+  OrderedJson j = OrderedJson::object();
+  for (const auto& [name, value] : parameters) j[name] = parameterValue(value);
+  return j;
+}
+
+// The `autopilot` object: firmware, version (when the log says) and parameters.
+OrderedJson autopilotObject(const logs::AutopilotParameters& p, const std::map<std::string, double>& kept) {
+  OrderedJson a = {{"firmware", p.firmware.family}};
+  if (!p.firmware.version.empty()) a["version"] = p.firmware.version;
+  a["parameters"] = parameterObject(kept);
+  return a;
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open vehicle file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// BASE's JSON text (validated as a vehicle first, so every error names the file and field) with
+// its `autopilot` object replaced; the other fields keep their order and text.
+std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson& autopilot) {
+  energy::loadVehicle(base_path);
+  OrderedJson j = OrderedJson::parse(readText(base_path));
+  j["autopilot"] = autopilot;
+  return j.dump(2) + "\n";
+}
+
+void warnAbout(const logs::AutopilotParameters& p) {
+  const std::string& family = p.firmware.family;
+  if (family != "ArduCopter" && family != "PX4")
+    progress("warning: " + p.source + ": firmware " + family + " (" + (p.firmware_text.empty() ? "no version text" : p.firmware_text) +
+             "); the mission flight models know ArduCopter and PX4 only");
+  if (p.firmware.version.empty())
+    progress("warning: " + p.source + ": the log does not say the firmware version; set autopilot.version by hand");
+  for (const auto& w : p.warnings) progress("warning: " + w);
+  if (!p.changed_after_takeoff.empty()) {
+    std::string names;
+    for (const auto& n : p.changed_after_takeoff) names += (names.empty() ? "" : ", ") + n;
+    progress("note: changed after take-off (the value before take-off is kept): " + names);
+  }
+}
+
+void runParams(const ParamsOptions& o) {
+  checkWritable(o.out, o.force, {o.log, o.vehicle});
+  energy::loadVehicle(o.vehicle);  // a bad BASE fails before the (possibly large) log is read
+  const auto p = logs::readAutopilotParameters(o.log, o.read);
+  const auto kept = o.all ? p.parameters : logs::flightBehaviourParameters(p);
+  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept));
+  energy::parseVehicle(text, o.out);  // what is written reads back
+  writeTextFileAtomic(o.out, text);
+  warnAbout(p);
+  if (o.json) {
+    printJson({{"log", o.log},
+               {"out", o.out},
+               {"firmware", p.firmware.family},
+               {"version", p.firmware.version},
+               {"firmware_text", p.firmware_text},
+               {"vehicle_type", p.vehicle_type},
+               {"parameter_count", p.parameters.size()},
+               {"kept_count", kept.size()},
+               {"selection", p.selection},
+               {"changed_after_takeoff", p.changed_after_takeoff},
+               {"kept", parameterObject(kept)}});
+  } else {
+    progress("wrote " + o.out + ": " + p.firmware.family + (p.firmware.version.empty() ? "" : " " + p.firmware.version) +
+             ", " + std::to_string(kept.size()) + " of the log's " + std::to_string(p.parameters.size()) +
+             " parameters (" + (o.all ? "all" : "flight behaviour") + ")");
+  }
+}
+
+constexpr const char* kParamsHelp = R"(
+Reads the autopilot's firmware (family and version) and parameters from a log of the vehicle
+(ArduPilot DataFlash .bin: MSG/VER text and PARM messages; PX4 .ulg: ver_sw_release and the 'P'
+parameters) and writes BASE, unchanged otherwise, with an `autopilot` object:
+  {"firmware": "ArduCopter", "version": "4.7.0-dev", "parameters": {"WPNAV_SPEED": 1000, ...}}
+Values are in the autopilot's own units (WPNAV_SPEED cm/s, RTL_ALT cm, MPC_XY_CRUISE m/s).
+A parameter logged several times keeps its last value before take-off (ArduPilot).
+Kept by default, the parameters that shape how the vehicle flies a mission:
+  ArduPilot: WPNAV_*, PSC_JERK_*, PSC_ANGLE_MAX, ANGLE_MAX, ATC_INPUT_TC, ATC_ACCEL_*_MAX,
+    ATC_RATE_*_MAX, ATC_SLEW_YAW, WP_YAW_BEHAVIOR, RTL_*, LAND_*, PILOT_SPEED_UP/DN,
+    PILOT_TKOFF_ALT, TKOFF_*, WP_NAVALT_MIN, LOIT_* (3.x: RC_FEEL_RP, PILOT_VELZ_MAX, PILOT_ACCEL_Z)
+  PX4: MPC_* (incl. MPC_TKO_*, MPC_LAND_*), NAV_ACC_RAD, NAV_MC_ALT_RAD, RTL_*, MIS_*
+--all keeps every parameter. Parameters left out take the firmware's documented defaults.
+Example: wattswath vehicle params flight.bin --vehicle data/vehicles/iris.json --out my-iris.json
+)";
+
+void registerParams(CLI::App& vehicle_cmd) {
+  auto o = std::make_shared<ParamsOptions>();
+  auto* cmd = vehicle_cmd.add_subcommand("params", "Write a vehicle file with the autopilot firmware and flight parameters of a log");
+  cmd->footer(kParamsHelp);
+  cmd->add_option("LOG", o->log, "Log of the vehicle: ArduPilot DataFlash .bin or PX4 .ulg")->required()->check(CLI::ExistingFile);
+  addVehicleOption(cmd, o->vehicle)->description("Vehicle file to start from (JSON, e.g. data/vehicles/iris.json)");
+  cmd->add_option("--out", o->out, "Vehicle file to write (JSON): BASE with the log's `autopilot` object")->required();
+  cmd->add_flag("--all", o->all, "Keep every parameter of the log, not only the flight-behaviour ones");
+  cmd->add_flag("--lenient", o->read.lenient,
+                "Read past corrupt parts of the log (each skip is a warning); a cut final record of a .bin is always accepted");
+  addForceFlag(cmd, o->force);
+  addJsonFlag(cmd, o->json)->description(
+      "Print a summary on stdout: {firmware, version, parameter_count, kept: {...}, ...}");
+  cmd->callback([o]() { runParams(*o); });
+}
+
+}  // namespace
+
+void registerVehicleCommands(CLI::App& app) {
+  auto* vehicle_cmd = app.add_subcommand("vehicle", "Vehicle files: fill in the autopilot parameters from a log");
+  vehicle_cmd->require_subcommand(1);
+  registerParams(*vehicle_cmd);
+}
+
+}  // namespace wattswath::apps
