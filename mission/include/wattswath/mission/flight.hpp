@@ -1,0 +1,104 @@
+#pragma once
+/// @file flight.hpp
+/// How the autopilot flies a mission: the mission sequenced into navigation steps in local metres
+/// (the autopilot's own rules for DO commands, holds and jumps), then flown by a flight-behaviour
+/// model of its family (ArduCopter S-curves, ArduCopter's leash, PX4's jerk-limited velocity
+/// tracking) into a sampled trajectory, and that trajectory as energy::Pieces for the effects to
+/// integrate. docs/autopilots.md states what each model follows and leaves out.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wattswath/energy/profile.hpp"
+#include "wattswath/geometry/frame.hpp"
+#include "wattswath/mission/autopilot.hpp"
+#include "wattswath/mission/mission.hpp"
+
+namespace wattswath::mission {
+
+/// Part of a flight, as pilots and the measured phases count it.
+enum class FlightPhase { Takeoff = 0, Mission, Return, Landing };
+/// Number of flight phases.
+inline constexpr int kFlightPhaseCount = 4;
+/// Lower-case name ("takeoff", "mission", "return", "landing").
+const char* toString(FlightPhase p);
+
+/// One navigation step the autopilot executes, in the local ENU frame of the home position.
+struct NavStep {
+  /// What the step does.
+  enum class Kind { Takeoff, Waypoint, SplineWaypoint, LoiterTime, Delay, ReturnToLaunch, Land };
+  Kind kind = Kind::Waypoint;                              ///< what the step does
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();        ///< [m] ENU position (Takeoff: z only)
+  bool has_position = true;                                ///< false: Land / LoiterTime "here"
+  double hold_s = 0.0;                                     ///< [s] hold after reaching (waypoint, loiter, delay)
+  double speed_xy = 0.0;                                   ///< [m/s] horizontal speed in force (0: autopilot default)
+  double speed_up = 0.0;                                   ///< [m/s] climb speed in force (0: default)
+  double speed_down = 0.0;                                 ///< [m/s] descent speed in force (0: default)
+  double accept_radius_m = 0.0;                            ///< [m] item acceptance radius (0: default)
+  int item = -1;                                           ///< index into Mission::items (-1: none)
+};
+
+/// Throws std::invalid_argument when the mission cannot be sequenced: no navigation item, a
+/// speed of 0 or below (other than -1 "no change"), a position not finite. Items after a
+/// NAV_RETURN_TO_LAUNCH or NAV_LAND are never reached and are ignored (listed in `warnings`).
+/// DO_JUMP is unrolled (bounded by `max_steps`). Altitudes: relative frames are above home,
+/// absolute ones minus the home altitude, terrain frames are taken as above home (flat terrain).
+std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>* warnings = nullptr,
+                                     std::size_t max_steps = 100000);
+
+/// One sample of a flown trajectory.
+struct FlightSample {
+  double t = 0.0;                                    ///< [s] since the take-off command
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< [m] ENU from home
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< [m/s] ENU
+  FlightPhase phase = FlightPhase::Takeoff;          ///< phase the vehicle is in
+  int step = -1;                                     ///< index of the NavStep being flown
+  bool airborne = true;                              ///< false while spooling up or landed
+};
+
+/// When a step was reached.
+struct StepEvent {
+  int step = -1;              ///< index into the steps
+  double reached_s = 0.0;     ///< [s] when the autopilot declared it reached (NaN: never)
+  double completed_s = 0.0;   ///< [s] when it moved on (after any hold)
+};
+
+/// A flight predicted by a behaviour model.
+struct FlownMission {
+  std::vector<NavStep> steps;       ///< the sequenced mission
+  std::vector<FlightSample> samples;  ///< trajectory, every FlightSettings::sample_dt
+  std::vector<StepEvent> events;    ///< one per step
+  std::vector<std::string> notes;   ///< what the model assumed (e.g. "RTL speed = WPNAV_SPEED")
+};
+
+/// Settings of the simulation.
+struct FlightSettings {
+  double dt = 0.01;         ///< [s] simulation step (the autopilots run at 100-400 Hz); 0.001..0.05
+  double sample_dt = 0.1;   ///< [s] output sample interval, a multiple of dt; 0.01..1
+  double max_time_s = 6 * 3600.0;  ///< [s] refuse missions longer than this (6 h)
+  /// [s] from the take-off command to lift-off (motor spool-up, liftoff detection); < 0: the
+  /// autopilot's documented spool time (ArduCopter MOT_SPOOL_TIME, PX4 COM_SPOOLUP_TIME)
+  double takeoff_delay_s = -1.0;
+  double landed_detect_s = 1.0;  ///< [s] from touch-down to "landed" (ArduCopter LAND_DETECTOR_TRIGGER_SEC)
+};
+
+/// Flies `steps` with the behaviour model of `autopilot`. Throws std::invalid_argument naming the
+/// parameter when a parameter is out of range (a speed of 0, ...), std::runtime_error when the
+/// flight exceeds `s.max_time_s`.
+FlownMission flyMission(const std::vector<NavStep>& steps, const AutopilotConfig& autopilot,
+                        const FlightSettings& s = {});
+
+/// The flown trajectory as constant-acceleration pieces (one per sample interval: speeds at the
+/// ends, heading change as yaw, height change as climb), with the flight phase and step of each.
+struct FlightPieces {
+  std::vector<energy::Piece> pieces;       ///< for EnergyModel::evaluate
+  std::vector<FlightPhase> phase;          ///< flight phase of each piece
+  std::vector<int> step;                   ///< step of each piece
+};
+
+/// Converts a flown trajectory to pieces.
+FlightPieces toPieces(const FlownMission& f);
+
+}  // namespace wattswath::mission

@@ -1,0 +1,75 @@
+#pragma once
+/// @file predict.hpp
+/// How much energy and time a mission file will take, and whether it fits the battery: the
+/// mission sequenced and flown by the vehicle's autopilot model (flight.hpp), the energy model's
+/// effects integrated over the flown trajectory, split by flight phase and by mission item, and
+/// the battery discharged along it (energy/battery.hpp, Hwang et al. Eq. 9-15).
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "wattswath/energy/battery.hpp"
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/mission/flight.hpp"
+
+namespace wattswath::mission {
+
+/// Settings of a prediction.
+struct PredictSettings {
+  FlightSettings flight;           ///< simulation settings of the behaviour model
+  double reserve_fraction = 0.25;  ///< [-] share of the usable charge to keep on landing; 0..0.9
+};
+
+/// Energy, time and distance of one part of the flight.
+struct Totals {
+  double energy_j = 0.0;    ///< [J] electrical energy
+  double time_s = 0.0;      ///< [s] duration
+  double distance_m = 0.0;  ///< [m] distance flown (3-D)
+};
+
+/// One step of the mission as flown.
+struct ItemPrediction {
+  int step = -1;             ///< index into MissionPrediction::flight.steps
+  int item = -1;             ///< index into Mission::items (-1: added by the model, e.g. a take-off)
+  int seq = -1;              ///< the item's number in the file (-1 when added)
+  std::string command;       ///< MAVLink command name
+  double reached_s = 0.0;    ///< [s] since the take-off command, when the autopilot declares it reached
+  double completed_s = 0.0;  ///< [s] when it moves on (after any hold)
+  Totals totals;             ///< energy, time and distance flown while this step was active
+};
+
+/// The battery along the flight (when the vehicle file has one).
+struct BatteryPrediction {
+  bool known = false;              ///< false: the vehicle has no battery; the rest is unset
+  double usable_left_end = 0.0;    ///< [-] usable charge left on landing (1 full, 0 cut-off)
+  double reserve_fraction = 0.0;   ///< [-] reserve asked for
+  bool fits = false;               ///< true when the landing leaves at least the reserve
+  bool depleted = false;           ///< true when the cut-off is reached in flight
+  double depleted_at_s = 0.0;      ///< [s] when the cut-off is reached (depleted only)
+  std::vector<double> t_s;         ///< [s] times of the state-of-charge samples
+  std::vector<double> usable_left; ///< [-] usable charge left at t_s
+  std::vector<double> voltage_v;   ///< [V] terminal voltage at t_s
+  std::string verdict;             ///< one plain sentence on the reserve
+};
+
+/// A mission predicted from take-off command to landing.
+struct MissionPrediction {
+  Totals total;                                     ///< the whole flight
+  std::array<Totals, kFlightPhaseCount> phases{};   ///< by FlightPhase
+  std::vector<ItemPrediction> items;                ///< one per step
+  energy::Breakdown breakdown;                      ///< energy by effect and energy phase
+  BatteryPrediction battery;                        ///< state of charge (when known)
+  FlownMission flight;                              ///< the trajectory
+  FlightPieces pieces;                              ///< the trajectory as pieces
+  std::vector<double> piece_energy_j;               ///< [J] energy of each piece
+  std::vector<std::string> warnings;                ///< from sequencing and the model
+};
+
+/// Predicts `m` flown by `autopilot` on vehicle `v` with energy model `model`. Throws what
+/// sequenceMission and flyMission throw, and std::invalid_argument for settings out of range.
+MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
+                                 const AutopilotConfig& autopilot, const PredictSettings& s = {});
+
+}  // namespace wattswath::mission

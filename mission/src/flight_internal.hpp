@@ -1,0 +1,122 @@
+#pragma once
+// Private to mission/src: what the behaviour models share (recording the trajectory, limits in SI,
+// the landing descent, hovering in place).
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wattswath/mission/flight.hpp"
+
+namespace wattswath::mission::detail {
+
+inline constexpr double kGravity = 9.80665;  // [m/s^2] as the autopilots use it
+
+/// Records the simulated state every tick and keeps a sample every sample_dt.
+class Recorder {
+ public:
+  Recorder(const FlightSettings& s, std::size_t step_count) : s_(s), every_(std::max(1L, std::lround(s.sample_dt / s.dt))) {
+    out_.events.resize(step_count);
+    for (std::size_t i = 0; i < step_count; ++i) {
+      out_.events[i].step = static_cast<int>(i);
+      out_.events[i].reached_s = out_.events[i].completed_s = std::nan("");
+    }
+  }
+  /// Advances one tick to state (p, v) and records it when a sample is due.
+  void tick(const Eigen::Vector3d& p, const Eigen::Vector3d& v, FlightPhase phase, int step, bool airborne = true) {
+    t_ += s_.dt;
+    ++ticks_;
+    pos_ = p;
+    vel_ = v;
+    if (t_ > s_.max_time_s) {
+      throw std::runtime_error("the predicted flight exceeds " + std::to_string(s_.max_time_s / 3600.0) +
+                               " h; expected a mission a battery-powered multicopter can fly");
+    }
+    if (ticks_ % every_ == 0) out_.samples.push_back({t_, p, v, phase, step, airborne});
+  }
+  /// Stays at the current position for `seconds` [s].
+  void hold(double seconds, FlightPhase phase, int step, bool airborne = true) {
+    const long n = std::lround(std::max(0.0, seconds) / s_.dt);
+    for (long i = 0; i < n; ++i) tick(pos_, Eigen::Vector3d::Zero(), phase, step, airborne);
+  }
+  /// Marks step `k` reached now.
+  void reached(int k) {
+    if (k >= 0 && k < static_cast<int>(out_.events.size()) && std::isnan(out_.events[k].reached_s)) out_.events[k].reached_s = t_;
+  }
+  /// Marks step `k` complete now.
+  void completed(int k) {
+    if (k >= 0 && k < static_cast<int>(out_.events.size())) out_.events[k].completed_s = t_;
+  }
+  /// Adds a note on what the model assumed.
+  void note(const std::string& n) { out_.notes.push_back(n); }
+  /// Starts the record at `p` (the first sample, t = 0).
+  void start(const Eigen::Vector3d& p) {
+    pos_ = p;
+    out_.samples.push_back({0.0, p, Eigen::Vector3d::Zero(), FlightPhase::Takeoff, 0, false});
+  }
+  double time() const { return t_; }
+  double dt() const { return s_.dt; }
+  const Eigen::Vector3d& position() const { return pos_; }
+  const Eigen::Vector3d& velocity() const { return vel_; }
+  const FlightSettings& settings() const { return s_; }
+  FlownMission take(std::vector<NavStep> steps) {
+    out_.steps = std::move(steps);
+    return std::move(out_);
+  }
+
+ private:
+  FlightSettings s_;
+  long every_;
+  long ticks_ = 0;
+  double t_ = 0.0;
+  Eigen::Vector3d pos_ = Eigen::Vector3d::Zero(), vel_ = Eigen::Vector3d::Zero();
+  FlownMission out_;
+};
+
+/// sqrt_controller of the autopilots: speed [m/s] that brings an error `e` [m] to 0 with gain
+/// `p` [1/s] and deceleration `a` [m/s^2] (linear near zero, square root far away); signed as e.
+inline double sqrtController(double e, double p, double a) {
+  const double lin = a / (p * p);
+  const double mag = std::abs(e) <= lin ? p * std::abs(e) : std::sqrt(2.0 * a * (std::abs(e) - 0.5 * lin));
+  return std::copysign(mag, e);
+}
+
+/// Direction-scaled limit of a 3-D leg (ArduPilot kinematic_limit): the largest speed (or
+/// acceleration) along unit direction `u` such that its horizontal part stays within `xy` and its
+/// vertical part within `up` (climbing) or `down` (descending).
+inline double kinematicLimit(const Eigen::Vector3d& u, double xy, double up, double down) {
+  const double uxy = std::hypot(u.x(), u.y()), uz = u.z();
+  double lim = 1e300;
+  if (uxy > 1e-9) lim = std::min(lim, xy / uxy);
+  if (std::abs(uz) > 1e-9) lim = std::min(lim, (uz > 0 ? up : down) / std::abs(uz));
+  return lim;
+}
+
+/// Throws std::invalid_argument naming the autopilot parameter unless lo <= value <= hi.
+inline double checkParameter(const std::string& name, double value, double lo, double hi, const char* unit) {
+  if (!(value >= lo && value <= hi)) {
+    throw std::invalid_argument("autopilot parameter " + name + " = " + std::to_string(value) + " " + unit +
+                                ", expected " + std::to_string(lo) + ".." + std::to_string(hi));
+  }
+  return value;
+}
+
+/// Descends vertically to the ground with a speed law `speed(h)` [m/s, > 0] of the height above
+/// home `h` [m], then waits `detect_s` on the ground (the landing detector).
+template <class SpeedLaw>
+void descendAndLand(Recorder& rec, SpeedLaw speed, double accel, int step, double detect_s) {
+  Eigen::Vector3d p = rec.position();
+  double vz = std::min(0.0, rec.velocity().z());
+  while (p.z() > 0.0) {
+    const double target = -speed(p.z());
+    const double dv = std::clamp(target - vz, -accel * rec.dt(), accel * rec.dt());
+    vz += dv;
+    p.z() = std::max(0.0, p.z() + vz * rec.dt());
+    rec.tick(p, Eigen::Vector3d(0, 0, p.z() > 0.0 ? vz : 0.0), FlightPhase::Landing, step);
+  }
+  rec.hold(detect_s, FlightPhase::Landing, step, false);
+}
+
+}  // namespace wattswath::mission::detail

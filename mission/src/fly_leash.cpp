@@ -1,0 +1,233 @@
+// ArduCopter before 4.1 (3.x AC_WPNav): a target point (the "carrot") is dragged along each leg at
+// up to WPNAV_SPEED, accelerating at 2 x WPNAV_ACCEL while it stays within a leash of the vehicle,
+// braking into a waypoint only when the waypoint has a hold time; a waypoint without one is
+// "reached" when the carrot reaches it, and the next leg's carrot starts with the vehicle's
+// velocity along the new leg. The vehicle chases the carrot: a square-root position controller
+// (POS_XY_P, WPNAV_ACCEL) gives the velocity it asks for, a proportional velocity loop (VEL_XY_P)
+// the acceleration, limited by the lean angle and delayed by the attitude response
+// (docs/autopilots.md, section "ArduCopter before 4.1").
+#include <algorithm>
+#include <cmath>
+
+#include "flight_internal.hpp"
+
+namespace wattswath::mission {
+namespace {
+
+using detail::kGravity;
+using detail::Recorder;
+using detail::sqrtController;
+
+constexpr double kAttitudeLag = 0.15;  // [s] attitude response time constant (docs/autopilots.md)
+
+struct Params {
+  double speed, speed_up, speed_dn, accel, accel_z, radius, pos_xy_p, pos_z_p, vel_xy_p, accel_max;
+  double rtl_alt, rtl_alt_final, rtl_climb_min, rtl_loiter_s, land_speed, land_alt_low, spool_s;
+};
+
+Params readParams(const AutopilotConfig& ap) {
+  using detail::checkParameter;
+  Params p{};
+  p.speed = checkParameter("WPNAV_SPEED", ap.get("WPNAV_SPEED"), 20, 5000, "cm/s") / 100.0;
+  p.speed_up = checkParameter("WPNAV_SPEED_UP", ap.get("WPNAV_SPEED_UP"), 10, 1000, "cm/s") / 100.0;
+  p.speed_dn = checkParameter("WPNAV_SPEED_DN", ap.get("WPNAV_SPEED_DN"), 10, 500, "cm/s") / 100.0;
+  p.accel = checkParameter("WPNAV_ACCEL", ap.get("WPNAV_ACCEL"), 50, 500, "cm/s/s") / 100.0;
+  p.accel_z = checkParameter("WPNAV_ACCEL_Z", ap.get("WPNAV_ACCEL_Z"), 50, 500, "cm/s/s") / 100.0;
+  p.radius = checkParameter("WPNAV_RADIUS", ap.get("WPNAV_RADIUS"), 5, 1000, "cm") / 100.0;
+  p.pos_xy_p = checkParameter("POS_XY_P", ap.get("POS_XY_P"), 0.1, 10, "1/s");
+  p.pos_z_p = checkParameter("POS_Z_P", ap.get("POS_Z_P"), 0.1, 10, "1/s");
+  p.vel_xy_p = checkParameter("VEL_XY_P", ap.get("VEL_XY_P"), 0.1, 10, "1/s");
+  const double angle_max = checkParameter("ANGLE_MAX", ap.get("ANGLE_MAX"), 1000, 8000, "cdeg") / 100.0;
+  p.accel_max = std::min(9.8, kGravity * std::tan(angle_max * M_PI / 180.0));
+  p.rtl_alt = checkParameter("RTL_ALT", ap.get("RTL_ALT"), 0, 300000, "cm") / 100.0;
+  p.rtl_alt_final = std::max(0.0, ap.get("RTL_ALT_FINAL")) / 100.0;
+  p.rtl_climb_min = std::max(0.0, ap.get("RTL_CLIMB_MIN")) / 100.0;
+  p.rtl_loiter_s = checkParameter("RTL_LOIT_TIME", ap.get("RTL_LOIT_TIME"), 0, 600000, "ms") / 1000.0;
+  p.land_speed = checkParameter("LAND_SPEED", ap.get("LAND_SPEED"), 30, 200, "cm/s") / 100.0;
+  p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
+  p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
+  return p;
+}
+
+// Leash length of a position controller (AC_PosControl::calc_leash_length) [m].
+double leashLength(double speed, double accel, double kp) {
+  const double l = speed <= accel / kp ? speed / kp : accel / (2.0 * kp * kp) + speed * speed / (2.0 * accel);
+  return std::max(l, 1.0);
+}
+
+// The vehicle and the carrot it chases.
+struct Vehicle {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
+};
+
+struct Leg {
+  Eigen::Vector3d origin, dest, u;
+  double length = 0.0, desired = 0.0, lim = 0.0, track_speed = 0.0, track_accel = 0.0, leash = 0.0, slow_down = 0.0;
+  bool fast = false, slowing = false;
+  Eigen::Vector3d carrot() const { return origin + u * desired; }
+};
+
+Leg startLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool fast, const Vehicle& veh, const Params& P) {
+  Leg g;
+  g.origin = from;
+  g.dest = to;
+  const Eigen::Vector3d d = to - from;
+  g.length = d.norm();
+  g.u = g.length > 1e-9 ? Eigen::Vector3d(d / g.length) : Eigen::Vector3d::Zero();
+  g.fast = fast;
+  if (g.length <= 1e-9) return g;
+  g.track_speed = detail::kinematicLimit(g.u, speed, P.speed_up, P.speed_dn);
+  g.track_accel = detail::kinematicLimit(g.u, P.accel, P.accel_z, P.accel_z);
+  g.leash = std::min(detail::kinematicLimit(g.u, leashLength(speed, P.accel, P.pos_xy_p), 1e300, 1e300),
+                     detail::kinematicLimit(g.u, 1e300, leashLength(P.speed_up, P.accel_z, P.pos_z_p),
+                                            leashLength(P.speed_dn, P.accel_z, P.pos_z_p)));
+  g.slow_down = g.track_speed * g.track_speed / (4.0 * g.track_accel);
+  g.lim = std::clamp(veh.v.dot(g.u), 0.0, g.track_speed);
+  return g;
+}
+
+// Moves the carrot one step (AC_WPNav::advance_wp_target_along_track of 3.x).
+void advanceCarrot(Leg& g, const Vehicle& veh, const Params& P, double dt) {
+  if (g.length <= 1e-9) return;
+  const Eigen::Vector3d rel = veh.p - g.origin;
+  const double covered = rel.dot(g.u);
+  const double cross = (rel - g.u * covered).norm();
+  const double slack = g.leash > cross ? std::sqrt(g.leash * g.leash - cross * cross) : 0.0;
+  const double max_desired = covered + slack;
+  const bool at_leash = g.desired > max_desired;
+  const double v_along = veh.v.dot(g.u), v_lin = g.track_accel / P.pos_xy_p;
+  if (v_along < -v_lin) {
+    g.lim = 0.0;
+  } else {
+    if (!at_leash) g.lim += 2.0 * g.track_accel * dt;
+    g.lim = std::clamp(g.lim, 0.0, g.track_speed);
+    if (!g.fast) {
+      if (g.length - g.desired <= g.slow_down) g.slowing = true;
+      if (g.slowing) g.lim = std::min(g.lim, std::max(std::sqrt(4.0 * g.track_accel * std::max(0.0, g.length - g.desired)), 0.5));
+    }
+    if (std::abs(v_along) < v_lin) g.lim = std::clamp(g.lim, v_along - v_lin, v_along + v_lin);
+  }
+  if (!at_leash) {
+    g.desired += g.lim * dt;
+    if (g.desired > max_desired) {
+      g.desired = max_desired;
+      g.lim = std::max(0.0, g.lim - 2.0 * g.track_accel * dt);
+    }
+  }
+  g.desired = std::clamp(g.desired, 0.0, g.length + (g.fast ? 2.0 : 0.0));
+}
+
+// The vehicle chases `carrot` one step: square-root position controller, velocity loop, lean
+// limit, attitude lag; vertical: square-root controller to a climb or descent speed.
+void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, double dt) {
+  Eigen::Vector2d err = (carrot - veh.p).head<2>();
+  const double leash = leashLength(speed, P.accel, P.pos_xy_p);
+  if (err.norm() > leash) err *= leash / err.norm();
+  Eigen::Vector2d v_cmd = Eigen::Vector2d::Zero();
+  if (err.norm() > 1e-9) v_cmd = err / err.norm() * sqrtController(err.norm(), P.pos_xy_p, P.accel);
+  if (v_cmd.norm() > speed) v_cmd *= speed / v_cmd.norm();
+  Eigen::Vector2d a_cmd = P.vel_xy_p * (v_cmd - veh.v.head<2>());
+  if (a_cmd.norm() > P.accel_max) a_cmd *= P.accel_max / a_cmd.norm();
+  veh.a.head<2>() += (a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
+  const double vz_cmd = std::clamp(sqrtController(carrot.z() - veh.p.z(), P.pos_z_p, P.accel_z), -P.speed_dn, P.speed_up);
+  veh.a.z() = std::clamp((vz_cmd - veh.v.z()) / std::max(dt, 0.2), -P.accel_z, P.accel_z);
+  veh.v += veh.a * dt;
+  veh.p += veh.v * dt;
+}
+
+struct Flyer {
+  Recorder& rec;
+  const Params& P;
+  Vehicle veh;
+
+  // Flies one leg to `to`; returns when the autopilot declares it reached.
+  void leg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool fast, FlightPhase phase, int step) {
+    Leg g = startLeg(from, to, speed, fast, veh, P);
+    while (true) {
+      advanceCarrot(g, veh, P, rec.dt());
+      chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, rec.dt());
+      rec.tick(veh.p, veh.v, phase, step);
+      const bool carrot_there = g.desired >= g.length;
+      if (carrot_there && (fast || (veh.p - to).norm() <= P.radius)) return;
+    }
+  }
+  // Hovers at `at` for `seconds`, the vehicle still converging on it.
+  void hold(const Eigen::Vector3d& at, double seconds, double speed, FlightPhase phase, int step) {
+    const long n = std::lround(seconds / rec.dt());
+    for (long i = 0; i < n; ++i) {
+      chase(veh, at, speed, P, rec.dt());
+      rec.tick(veh.p, veh.v, phase, step);
+    }
+  }
+};
+
+bool flownThrough(const NavStep& s) {
+  return s.kind == NavStep::Kind::Waypoint || s.kind == NavStep::Kind::SplineWaypoint || s.kind == NavStep::Kind::LoiterTime;
+}
+
+void land(Recorder& rec, const Params& P, int step, const FlightSettings& s) {
+  const double alt_low = std::max(P.land_alt_low, 1.0);
+  auto law = [&](double h) { return h > alt_low ? std::max(P.speed_dn, P.land_speed) : P.land_speed; };
+  detail::descendAndLand(rec, law, P.accel_z, step, s.landed_detect_s);
+}
+
+}  // namespace
+
+FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
+  const Params P = readParams(ap);
+  Recorder rec(s, steps.size());
+  rec.start(Eigen::Vector3d::Zero());
+  rec.hold(s.takeoff_delay_s >= 0.0 ? s.takeoff_delay_s : P.spool_s, FlightPhase::Takeoff, 0, false);
+  Flyer f{rec, P, {}};
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();  // where the carrot is
+  double speed = P.speed;  // DO_CHANGE_SPEED overwrites WPNAV_SPEED in memory (RTL inherits it)
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const NavStep& st = steps[k];
+    const int ki = static_cast<int>(k);
+    if (st.speed_xy >= 1.0) speed = st.speed_xy;  // 3.x ignores requests below 1 m/s
+    if (st.kind == NavStep::Kind::Takeoff) {
+      const Eigen::Vector3d top(target.x(), target.y(), std::max(st.target.z(), 1.0));
+      f.leg(target, top, speed, false, FlightPhase::Takeoff, ki);
+      target = top;
+    } else if (flownThrough(st)) {
+      const Eigen::Vector3d to = st.has_position ? st.target : target;
+      const bool fast = st.kind != NavStep::Kind::LoiterTime && st.hold_s <= 0.0;
+      f.leg(target, to, speed, fast, FlightPhase::Mission, ki);
+      rec.reached(ki);
+      f.hold(to, st.hold_s, speed, FlightPhase::Mission, ki);
+      target = to;
+    } else if (st.kind == NavStep::Kind::Delay) {
+      rec.reached(ki);
+      f.hold(target, st.hold_s, speed, FlightPhase::Mission, ki);
+    } else if (st.kind == NavStep::Kind::ReturnToLaunch) {
+      const double alt = std::max({P.rtl_alt, f.veh.p.z() + P.rtl_climb_min, f.veh.p.z()});
+      const Eigen::Vector3d climb(target.x(), target.y(), alt), home(0.0, 0.0, alt);
+      f.leg(target, climb, speed, true, FlightPhase::Return, ki);
+      f.leg(climb, home, speed, false, FlightPhase::Return, ki);
+      rec.reached(ki);
+      f.hold(home, P.rtl_loiter_s, speed, FlightPhase::Return, ki);
+      target = home;
+      if (P.rtl_alt_final > 0.0) {
+        f.leg(home, {0.0, 0.0, P.rtl_alt_final}, speed, false, FlightPhase::Return, ki);
+        rec.note("RTL_ALT_FINAL > 0: the prediction ends hovering at " + std::to_string(P.rtl_alt_final) + " m");
+      } else {
+        land(rec, P, ki, s);
+      }
+    } else {  // Land
+      if (st.has_position) {
+        const Eigen::Vector3d over(st.target.x(), st.target.y(), target.z());
+        f.leg(target, over, speed, false, FlightPhase::Landing, ki);
+      }
+      rec.reached(ki);
+      land(rec, P, ki, s);
+    }
+    if (st.kind == NavStep::Kind::Takeoff) rec.reached(ki);
+    rec.completed(ki);
+  }
+  rec.note("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + std::to_string(P.accel) + " m/s/s, lean-limited acceleration " +
+           std::to_string(P.accel_max) + " m/s/s, attitude lag " + std::to_string(kAttitudeLag) +
+           " s; RTL flies at the last DO_CHANGE_SPEED (3.x overwrites WPNAV_SPEED in memory)");
+  return rec.take(steps);
+}
+
+}  // namespace wattswath::mission

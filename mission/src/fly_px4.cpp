@@ -1,0 +1,178 @@
+// PX4 multicopter missions (FlightTaskAuto + PositionSmoothing): each cycle a desired velocity
+// points at the current waypoint, its size limited by the cruise speed and by a braking law that
+// arrives at the waypoint with the corner speed sqrt(MPC_XY_TRAJ_P MPC_ACC_HOR r tan(alpha/2))
+// (0 at a stop); a jerk-limited tracker (MPC_ACC_HOR, MPC_JERK_AUTO) follows it. A waypoint is
+// reached when the vehicle is within its acceptance radius (NAV_ACC_RAD) horizontally and
+// NAV_MC_ALT_RAD vertically (docs/autopilots.md, section "PX4").
+#include <algorithm>
+#include <cmath>
+
+#include "flight_internal.hpp"
+
+namespace wattswath::mission {
+namespace {
+
+using detail::Recorder;
+
+struct Params {
+  double cruise, vel_max, acc, jerk, traj_p, up, down, acc_up, acc_down, vel_max_dn, tko_speed, tko_ramp, land_speed,
+      land_alt1, land_alt2, acc_rad, alt_rad, rtl_alt, rtl_descend, rtl_delay, spool;
+};
+
+Params readParams(const AutopilotConfig& ap) {
+  using detail::checkParameter;
+  Params p{};
+  p.cruise = checkParameter("MPC_XY_CRUISE", ap.get("MPC_XY_CRUISE"), 0.5, 30, "m/s");
+  p.vel_max = checkParameter("MPC_XY_VEL_MAX", ap.get("MPC_XY_VEL_MAX"), 0.5, 30, "m/s");
+  p.acc = checkParameter("MPC_ACC_HOR", ap.get("MPC_ACC_HOR"), 0.5, 20, "m/s/s");
+  p.jerk = checkParameter("MPC_JERK_AUTO", ap.get("MPC_JERK_AUTO"), 0.5, 80, "m/s/s/s");
+  p.traj_p = checkParameter("MPC_XY_TRAJ_P", ap.get("MPC_XY_TRAJ_P"), 0.1, 1, "-");
+  p.up = checkParameter("MPC_Z_V_AUTO_UP", ap.get("MPC_Z_V_AUTO_UP"), 0.5, 8, "m/s");
+  p.down = checkParameter("MPC_Z_V_AUTO_DN", ap.get("MPC_Z_V_AUTO_DN"), 0.5, 4, "m/s");
+  p.acc_up = checkParameter("MPC_ACC_UP_MAX", ap.get("MPC_ACC_UP_MAX"), 0.5, 15, "m/s/s");
+  p.acc_down = checkParameter("MPC_ACC_DOWN_MAX", ap.get("MPC_ACC_DOWN_MAX"), 0.5, 15, "m/s/s");
+  p.vel_max_dn = checkParameter("MPC_Z_VEL_MAX_DN", ap.get("MPC_Z_VEL_MAX_DN"), 0.5, 4, "m/s");
+  p.tko_speed = checkParameter("MPC_TKO_SPEED", ap.get("MPC_TKO_SPEED"), 0.2, 5, "m/s");
+  p.tko_ramp = checkParameter("MPC_TKO_RAMP_T", ap.get("MPC_TKO_RAMP_T"), 0.0, 10, "s");
+  p.land_speed = checkParameter("MPC_LAND_SPEED", ap.get("MPC_LAND_SPEED"), 0.2, 2, "m/s");
+  p.land_alt1 = ap.get("MPC_LAND_ALT1");
+  p.land_alt2 = ap.get("MPC_LAND_ALT2");
+  p.acc_rad = checkParameter("NAV_ACC_RAD", ap.get("NAV_ACC_RAD"), 0.05, 200, "m");
+  p.alt_rad = checkParameter("NAV_MC_ALT_RAD", ap.get("NAV_MC_ALT_RAD"), 0.05, 200, "m");
+  p.rtl_alt = ap.get("RTL_RETURN_ALT");
+  p.rtl_descend = ap.get("RTL_DESCEND_ALT");
+  p.rtl_delay = std::max(0.0, ap.get("RTL_LAND_DELAY"));
+  p.spool = std::max(0.0, ap.get("COM_SPOOLUP_TIME"));
+  return p;
+}
+
+// Largest speed [m/s] from which the vehicle can reach `v_end` within `d` [m] braking at `a`
+// after a jerk delay (TrajMath computeMaxSpeedFromDistance): v^2 + (4 a^2 / j) v = 2 a d + v_end^2.
+double brakingSpeed(double j, double a, double d, double v_end) {
+  const double b = 4.0 * a * a / j;
+  return std::max(0.5 * (-b + std::sqrt(b * b + 4.0 * (2.0 * a * d + v_end * v_end))), v_end);
+}
+
+// Jerk-limited tracking of a desired velocity on one axis: acceleration towards the change,
+// at most `a_max`, changing at most `jerk` per second and easing in (sqrt law) near the target.
+void trackAxis(double v_des, double a_max, double jerk, double dt, double& v, double& a) {
+  const double dv = v_des - v;
+  const double a_des = std::copysign(std::min(a_max, std::sqrt(2.0 * jerk * std::abs(dv))), dv);
+  a += std::clamp(a_des - a, -jerk * dt, jerk * dt);
+  v += a * dt;
+}
+
+struct Flyer {
+  Recorder& rec;
+  const Params& P;
+  Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
+
+  void step(const Eigen::Vector3d& v_des, double acc_xy, double acc_z_up, double acc_z_dn, FlightPhase phase, int k) {
+    const double dt = rec.dt();
+    for (int i = 0; i < 2; ++i) trackAxis(v_des[i], acc_xy, P.jerk, dt, v[i], a[i]);
+    trackAxis(v_des.z(), v_des.z() > v.z() ? acc_z_up : acc_z_dn, P.jerk, dt, v[2], a[2]);
+    p += v * dt;
+    rec.tick(p, v, phase, k);
+  }
+
+  // Flies to `to` at `cruise`, leaving it at `v_exit` [m/s]; returns when it is reached.
+  void flyTo(const Eigen::Vector3d& to, double cruise, double v_exit, double acc_rad, FlightPhase phase, int k) {
+    while (true) {
+      const Eigen::Vector3d d = to - p;
+      const double dxy = d.head<2>().norm();
+      if (dxy <= acc_rad && std::abs(d.z()) <= P.alt_rad) return;
+      Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
+      if (dxy > 1e-6) {
+        const double speed = std::min(cruise, brakingSpeed(P.jerk, P.acc, dxy, v_exit));
+        v_des.head<2>() = d.head<2>() / dxy * speed;
+      }
+      v_des.z() = std::clamp(detail::sqrtController(d.z(), 1.0, P.acc_down), -P.down, P.up);
+      step(v_des, P.acc, P.acc_up, P.acc_down, phase, k);
+    }
+  }
+
+  void hover(double seconds, FlightPhase phase, int k) {
+    const long n = std::lround(seconds / rec.dt());
+    for (long i = 0; i < n; ++i) step(Eigen::Vector3d::Zero(), P.acc, P.acc_up, P.acc_down, phase, k);
+  }
+
+  // Vertical flight to height `z` [m] at up to `speed` [m/s].
+  void vertical(double z, double speed, double acc, FlightPhase phase, int k) {
+    while (std::abs(z - p.z()) > P.alt_rad * 0.5 || std::abs(v.z()) > 0.1) {
+      Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
+      v_des.z() = std::clamp(detail::sqrtController(z - p.z(), 1.0, acc), -speed, speed);
+      step(v_des, P.acc, acc, acc, phase, k);
+    }
+  }
+};
+
+// Corner speed at waypoint `here` between `from` and `next` (TrajectoryConstraints).
+double cornerSpeed(const Eigen::Vector3d& from, const Eigen::Vector3d& here, const Eigen::Vector3d& next, const Params& P,
+                   double acc_rad) {
+  const Eigen::Vector2d a = (here - from).head<2>(), b = (next - here).head<2>();
+  if (a.norm() < 1e-3 || b.norm() < std::max(acc_rad, 1e-3)) return 0.0;
+  const double cos_turn = std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0);
+  const double alpha = M_PI - std::acos(cos_turn);  // interior angle, pi = straight on
+  if (alpha >= M_PI - 1e-6) return 1e9;
+  return std::sqrt(P.traj_p * P.acc * acc_rad * std::tan(0.5 * alpha));
+}
+
+}  // namespace
+
+FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
+  const Params P = readParams(ap);
+  Recorder rec(s, steps.size());
+  rec.start(Eigen::Vector3d::Zero());
+  rec.hold(s.takeoff_delay_s >= 0.0 ? s.takeoff_delay_s : P.spool, FlightPhase::Takeoff, 0, false);
+  Flyer f{rec, P};
+  double cruise = P.cruise;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const NavStep& st = steps[k];
+    const int ki = static_cast<int>(k);
+    if (st.speed_xy > 0.0) cruise = std::min(st.speed_xy, P.vel_max);
+    if (st.kind == NavStep::Kind::Takeoff) {
+      const double acc = P.tko_ramp > 0.0 ? std::min(P.acc_up, P.tko_speed / P.tko_ramp) : P.acc_up;
+      f.vertical(std::max(st.target.z(), 0.5), P.tko_speed, acc, FlightPhase::Takeoff, ki);
+    } else if (st.kind == NavStep::Kind::Waypoint || st.kind == NavStep::Kind::SplineWaypoint ||
+               st.kind == NavStep::Kind::LoiterTime) {
+      const Eigen::Vector3d to = st.has_position ? st.target : f.p;
+      const double rad = st.accept_radius_m > 0.0 ? st.accept_radius_m : P.acc_rad;
+      double v_exit = 0.0;
+      const bool stop = st.hold_s > 0.0 || st.kind == NavStep::Kind::LoiterTime || k + 1 >= steps.size() ||
+                        !steps[k + 1].has_position || steps[k + 1].kind == NavStep::Kind::ReturnToLaunch;
+      if (!stop) v_exit = std::min(cruise, cornerSpeed(f.p, to, steps[k + 1].target, P, rad));
+      f.flyTo(to, cruise, v_exit, rad, FlightPhase::Mission, ki);
+      rec.reached(ki);
+      if (st.hold_s > 0.0) f.hover(st.hold_s, FlightPhase::Mission, ki);
+    } else if (st.kind == NavStep::Kind::Delay) {
+      rec.reached(ki);
+      f.hover(st.hold_s, FlightPhase::Mission, ki);
+    } else {
+      const bool rtl = st.kind == NavStep::Kind::ReturnToLaunch;
+      const FlightPhase ph = rtl ? FlightPhase::Return : FlightPhase::Landing;
+      if (rtl) {
+        f.vertical(std::max(P.rtl_alt, f.p.z()), P.up, P.acc_up, ph, ki);
+        f.flyTo({0.0, 0.0, f.p.z()}, cruise, 0.0, 0.5, ph, ki);
+        if (f.p.z() > P.rtl_descend) f.vertical(P.rtl_descend, P.down, P.acc_down, ph, ki);
+        f.hover(P.rtl_delay, ph, ki);
+      } else if (st.has_position) {
+        f.flyTo({st.target.x(), st.target.y(), f.p.z()}, cruise, 0.0, 0.5, ph, ki);
+      }
+      rec.reached(ki);
+      auto law = [&](double h) {
+        if (h >= P.land_alt1) return P.vel_max_dn;
+        if (h <= P.land_alt2) return P.land_speed;
+        return P.land_speed + (P.vel_max_dn - P.land_speed) * (h - P.land_alt2) / (P.land_alt1 - P.land_alt2);
+      };
+      detail::descendAndLand(rec, law, P.acc_down, ki, s.landed_detect_s);
+    }
+    if (st.kind == NavStep::Kind::Takeoff) rec.reached(ki);
+    rec.completed(ki);
+  }
+  rec.note("PX4 " + ap.version + " model: MPC_XY_CRUISE " + std::to_string(P.cruise) + " m/s, MPC_ACC_HOR " +
+           std::to_string(P.acc) + " m/s/s, MPC_JERK_AUTO " + std::to_string(P.jerk) + " m/s/s/s, NAV_ACC_RAD " +
+           std::to_string(P.acc_rad) + " m; take-off at MPC_TKO_SPEED; RTL cone not modelled");
+  return rec.take(steps);
+}
+
+}  // namespace wattswath::mission

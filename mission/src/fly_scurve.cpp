@@ -1,0 +1,265 @@
+// ArduCopter 4.1 and later: every leg is a rest-to-rest S-curve (scurve.hpp); at a waypoint the
+// vehicle does not stop when the next navigation item is a waypoint and this one has no hold: the
+// next leg's S-curve is started early and added to the end of this one once the predicted middle of
+// the overlap is within WPNAV_RADIUS of the waypoint, slower than both legs' speeds and within the
+// corner acceleration (AC_WPNav / SCurve::advance_target_along_track, docs/autopilots.md).
+#include <algorithm>
+#include <cmath>
+
+#include "flight_internal.hpp"
+#include "wattswath/mission/scurve.hpp"
+
+namespace wattswath::mission {
+namespace {
+
+using detail::kGravity;
+using detail::Recorder;
+
+struct Params {
+  double speed_xy, speed_up, speed_dn, accel_xy, accel_z, jerk, snap, radius, accel_corner;
+  double jerk_z, rtl_alt, rtl_alt_final, rtl_climb_min, rtl_speed, rtl_loiter_s, land_speed, land_speed_high,
+      land_alt_low, pos_z_p, spool_s, rtl_cone_slope;
+};
+
+Params readParams(const AutopilotConfig& ap) {
+  using detail::checkParameter;
+  Params p{};
+  p.speed_xy = checkParameter("WPNAV_SPEED", ap.get("WPNAV_SPEED"), 20, 5000, "cm/s") / 100.0;
+  p.speed_up = checkParameter("WPNAV_SPEED_UP", ap.get("WPNAV_SPEED_UP"), 10, 1000, "cm/s") / 100.0;
+  p.speed_dn = checkParameter("WPNAV_SPEED_DN", ap.get("WPNAV_SPEED_DN"), 10, 500, "cm/s") / 100.0;
+  p.accel_xy = checkParameter("WPNAV_ACCEL", ap.get("WPNAV_ACCEL"), 50, 500, "cm/s/s") / 100.0;
+  p.accel_z = checkParameter("WPNAV_ACCEL_Z", ap.get("WPNAV_ACCEL_Z"), 50, 500, "cm/s/s") / 100.0;
+  const double wp_jerk = ap.get("WPNAV_JERK");
+  p.jerk = wp_jerk > 0.0 ? checkParameter("WPNAV_JERK", wp_jerk, 0.1, 20, "m/s/s/s") : p.accel_xy;
+  const double rate_max = std::min(ap.get("ATC_RATE_R_MAX"), ap.get("ATC_RATE_P_MAX"));  // [deg/s]
+  if (rate_max > 0.0) p.jerk = std::min(p.jerk, rate_max * M_PI / 180.0 * kGravity);
+  const double tc = std::max(ap.get("ATC_INPUT_TC"), 0.1);
+  p.snap = p.jerk * M_PI / (2.0 * tc);
+  const double ang_accel = std::min(ap.get("ATC_ACCEL_R_MAX"), ap.get("ATC_ACCEL_P_MAX"));  // [cdeg/s/s]
+  if (ang_accel > 0.0) p.snap = std::min(p.snap, ang_accel / 100.0 * M_PI / 180.0 * kGravity);
+  p.snap *= 0.5;
+  p.radius = checkParameter("WPNAV_RADIUS", ap.get("WPNAV_RADIUS"), 5, 1000, "cm") / 100.0;
+  const double accel_c = ap.get("WPNAV_ACCEL_C") / 100.0;
+  p.accel_corner = accel_c > 0.0 ? accel_c : 2.0 * p.accel_xy;
+  p.jerk_z = checkParameter("PSC_JERK_Z", ap.get("PSC_JERK_Z"), 0.1, 50, "m/s/s/s");
+  p.rtl_alt = checkParameter("RTL_ALT", ap.get("RTL_ALT"), 30, 300000, "cm") / 100.0;
+  p.rtl_alt_final = std::max(0.0, ap.get("RTL_ALT_FINAL")) / 100.0;
+  p.rtl_climb_min = std::max(0.0, ap.get("RTL_CLIMB_MIN")) / 100.0;
+  p.rtl_cone_slope = ap.get("RTL_CONE_SLOPE");
+  const double rtl_speed = ap.get("RTL_SPEED");
+  p.rtl_speed = rtl_speed > 0.0 ? rtl_speed / 100.0 : p.speed_xy;
+  p.rtl_loiter_s = checkParameter("RTL_LOIT_TIME", ap.get("RTL_LOIT_TIME"), 0, 600000, "ms") / 1000.0;
+  p.land_speed = checkParameter("LAND_SPEED", ap.get("LAND_SPEED"), 30, 200, "cm/s") / 100.0;
+  p.land_speed_high = std::max(0.0, ap.get("LAND_SPEED_HIGH")) / 100.0;
+  p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
+  p.pos_z_p = checkParameter("PSC_POSZ_P", ap.get("PSC_POSZ_P"), 0.1, 10, "1/s");
+  p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
+  return p;
+}
+
+// One straight leg and its S-curve; positions relative to `origin`.
+struct Leg {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero(), dest = Eigen::Vector3d::Zero(), u = Eigen::Vector3d::Zero();
+  SCurveProfile prof;
+  double vmax = 0.0, accz = 0.0, t = 0.0;
+  bool started = false;
+  double remaining() const { return prof.duration() - t; }
+  void state(double tt, Eigen::Vector3d& p, Eigen::Vector3d& v, Eigen::Vector3d& a) const {
+    const TrackState s = prof.at(tt);
+    p = u * s.pos;
+    v = u * s.vel;
+    a = u * s.acc;
+  }
+  void advance(double dt) { t = std::min(t + dt, prof.duration()); }
+};
+
+// What one leg of a chain asks for.
+struct LegSpec {
+  Eigen::Vector3d target;
+  double speed_xy, speed_up, speed_dn, hold_s;
+  int step;
+  bool fast;  // the next leg follows without a stop
+};
+
+Leg makeLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const LegSpec& spec, const Params& P, double jerk) {
+  Leg leg;
+  leg.origin = from;
+  leg.dest = to;
+  const Eigen::Vector3d d = to - from;
+  const double len = d.norm();
+  if (len < 1e-6) return leg;
+  leg.u = d / len;
+  leg.vmax = detail::kinematicLimit(leg.u, spec.speed_xy, spec.speed_up, spec.speed_dn);
+  const double amax = detail::kinematicLimit(leg.u, P.accel_xy, P.accel_z, P.accel_z);
+  leg.accz = P.accel_z;
+  const double snap = P.snap * jerk / P.jerk;
+  leg.prof = SCurveProfile::restToRest(len, {leg.vmax, amax, jerk, snap});
+  return leg;
+}
+
+// Whether the next leg may start now: the middle of the overlap, predicted, is close enough to
+// the waypoint, slow enough and within the corner accelerations.
+bool mayStartNext(const Leg& cur, const Leg& next, const Params& P) {
+  const double tr = cur.remaining();
+  Eigen::Vector3d pc, vc, ac, pn, vn, an;
+  cur.state(cur.t + 0.5 * tr, pc, vc, ac);
+  next.state(0.5 * tr, pn, vn, an);
+  const Eigen::Vector3d p = pc - (cur.dest - cur.origin) + pn, v = vc + vn, a = ac + an;
+  return p.norm() < P.radius && v.norm() < std::min(cur.vmax, next.vmax) &&
+         std::hypot(a.x(), a.y()) < P.accel_corner && std::abs(a.z()) < std::min(cur.accz, next.accz);
+}
+
+// Flies a chain of legs from `here`, blending corners into every leg marked fast; returns where
+// the vehicle stops (the last leg's target, after its hold).
+Eigen::Vector3d flyChain(Recorder& rec, const std::vector<LegSpec>& legs, Eigen::Vector3d here, const Params& P,
+                         FlightPhase phase, double jerk) {
+  Leg prev, cur = makeLeg(here, legs[0].target, legs[0], P, jerk), next;
+  std::size_t i = 0;
+  auto prepareNext = [&] {
+    next = Leg();
+    if (legs[i].fast && i + 1 < legs.size()) next = makeLeg(legs[i].target, legs[i + 1].target, legs[i + 1], P, jerk);
+  };
+  prepareNext();
+  while (true) {
+    const bool blend = legs[i].fast && next.prof.duration() > 0.0 && cur.prof.duration() > 0.0;
+    if (cur.prof.duration() > 0.0 || prev.remaining() > 0.0 || next.started) {
+      prev.advance(rec.dt());
+      cur.advance(rec.dt());
+      if (blend && !next.started && cur.t >= cur.prof.decelStartTime() && cur.remaining() <= next.prof.accelEndTime() &&
+          mayStartNext(cur, next, P)) {
+        next.started = true;
+      }
+      if (next.started) next.advance(rec.dt());
+      Eigen::Vector3d p, v, a, pp, vp, ap, pn, vn, an;
+      cur.state(cur.t, p, v, a);
+      prev.state(prev.t, pp, vp, ap);
+      next.state(next.started ? next.t : 0.0, pn, vn, an);
+      const Eigen::Vector3d prev_tail = prev.prof.duration() > 0.0 ? Eigen::Vector3d(pp - (prev.dest - prev.origin)) : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d pos = cur.origin + p + prev_tail + (next.started ? pn : Eigen::Vector3d::Zero());
+      const Eigen::Vector3d vel = v + vp + (next.started ? vn : Eigen::Vector3d::Zero());
+      rec.tick(pos, vel, phase, legs[i].step);
+    }
+    const bool passed = next.started && next.t >= cur.remaining();
+    const bool stopped = !next.started && cur.t >= cur.prof.duration() && prev.remaining() <= 0.0;
+    if (passed || stopped || cur.prof.duration() <= 0.0) {
+      rec.reached(legs[i].step);
+      if (passed || (cur.prof.duration() <= 0.0 && next.started)) {
+        rec.completed(legs[i].step);
+        prev = cur;
+        cur = next;
+        cur.started = true;
+        ++i;
+        prepareNext();
+        continue;
+      }
+      rec.hold(legs[i].hold_s, phase, legs[i].step);
+      rec.completed(legs[i].step);
+      if (i + 1 >= legs.size()) return legs[i].target;
+      here = legs[i].target;
+      prev = Leg();
+      ++i;
+      cur = makeLeg(here, legs[i].target, legs[i], P, jerk);
+      prepareNext();
+    }
+  }
+}
+
+bool flownThrough(const NavStep& s) {
+  return s.kind == NavStep::Kind::Waypoint || s.kind == NavStep::Kind::SplineWaypoint || s.kind == NavStep::Kind::LoiterTime;
+}
+
+LegSpec specOf(const NavStep& s, const Params& P, int k) {
+  // DO_CHANGE_SPEED is capped at WPNAV_SPEED (the SITL logs never exceed it).
+  return {s.target, s.speed_xy > 0 ? std::min(s.speed_xy, P.speed_xy) : P.speed_xy, s.speed_up > 0 ? s.speed_up : P.speed_up,
+          s.speed_down > 0 ? s.speed_down : P.speed_dn, s.hold_s, k, false};
+}
+
+// The waypoints from step k on that the vehicle flies without stopping, up to the first stop.
+std::vector<LegSpec> chainFrom(const std::vector<NavStep>& steps, std::size_t k, const Eigen::Vector3d& here,
+                               const Params& P) {
+  std::vector<LegSpec> legs;
+  for (std::size_t j = k; j < steps.size() && flownThrough(steps[j]); ++j) {
+    LegSpec spec = specOf(steps[j], P, static_cast<int>(j));
+    if (!steps[j].has_position) spec.target = legs.empty() ? here : legs.back().target;
+    const bool next_flown = j + 1 < steps.size() && flownThrough(steps[j + 1]) && steps[j + 1].has_position;
+    spec.fast = steps[j].kind != NavStep::Kind::LoiterTime && steps[j].hold_s <= 0.0 && next_flown;
+    legs.push_back(spec);
+    if (!spec.fast) break;
+  }
+  return legs;
+}
+
+void land(Recorder& rec, const Params& P, double speed_dn, int step, const FlightSettings& s) {
+  const double v_hi = std::max(P.land_speed_high > 0.0 ? P.land_speed_high : speed_dn, P.land_speed);
+  const double alt_low = std::max(P.land_alt_low, 1.0);
+  auto law = [&](double h) {
+    if (h <= alt_low) return P.land_speed;
+    return std::clamp(std::abs(detail::sqrtController(alt_low - h, P.pos_z_p, P.accel_z)), P.land_speed, v_hi);
+  };
+  detail::descendAndLand(rec, law, P.accel_z, step, s.landed_detect_s);
+}
+
+}  // namespace
+
+FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
+  const Params P = readParams(ap);
+  Recorder rec(s, steps.size());
+  rec.start(Eigen::Vector3d::Zero());
+  rec.hold(s.takeoff_delay_s >= 0.0 ? s.takeoff_delay_s : P.spool_s, FlightPhase::Takeoff, 0, false);
+  Eigen::Vector3d here = Eigen::Vector3d::Zero();
+  FlightPhase phase = FlightPhase::Mission;
+  for (std::size_t k = 0; k < steps.size();) {
+    const NavStep& st = steps[k];
+    const int ki = static_cast<int>(k);
+    if (st.kind == NavStep::Kind::Takeoff) {
+      LegSpec up = specOf(st, P, ki);
+      up.target = {here.x(), here.y(), std::max(st.target.z(), here.z() + 1.0)};
+      here = flyChain(rec, {up}, here, P, FlightPhase::Takeoff, P.jerk_z);
+      ++k;
+    } else if (flownThrough(st)) {
+      const std::vector<LegSpec> legs = chainFrom(steps, k, here, P);
+      here = flyChain(rec, legs, here, P, phase, P.jerk);
+      k += legs.size();
+    } else if (st.kind == NavStep::Kind::Delay) {
+      rec.reached(ki);
+      rec.hold(st.hold_s, phase, ki);
+      rec.completed(ki);
+      ++k;
+    } else if (st.kind == NavStep::Kind::ReturnToLaunch) {
+      // Return altitude (ModeRTL::compute_return_target): RTL_ALT (at least RTL_CLIMB_MIN above
+      // here), within the cone RTL_CONE_SLOPE x distance home (at least 2.5 m), never a descent.
+      double alt = std::max(P.rtl_alt, here.z() + P.rtl_climb_min);
+      if (P.rtl_cone_slope >= 0.5) alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, 2.5));
+      alt = std::max(alt, here.z());
+      LegSpec climb{{here.x(), here.y(), alt}, P.rtl_speed, P.speed_up, P.speed_dn, 0.0, ki, true};
+      LegSpec home{{0.0, 0.0, alt}, P.rtl_speed, P.speed_up, P.speed_dn, P.rtl_loiter_s, ki, false};
+      here = flyChain(rec, {climb, home}, here, P, FlightPhase::Return, P.jerk);
+      if (P.rtl_alt_final > 0.0) {
+        here = flyChain(rec, {{{0.0, 0.0, P.rtl_alt_final}, P.rtl_speed, P.speed_up, P.speed_dn, 0.0, ki, false}}, here, P,
+                        FlightPhase::Return, P.jerk_z);
+        rec.note("RTL_ALT_FINAL > 0: the vehicle hovers at " + std::to_string(P.rtl_alt_final) + " m; the prediction ends there");
+      } else {
+        land(rec, P, P.speed_dn, ki, s);
+      }
+      rec.completed(ki);
+      ++k;
+    } else {  // Land
+      if (st.has_position) {
+        LegSpec over = specOf(st, P, ki);
+        over.target.z() = here.z();
+        here = flyChain(rec, {over}, here, P, FlightPhase::Landing, P.jerk);
+      }
+      land(rec, P, st.speed_down > 0 ? st.speed_down : P.speed_dn, ki, s);
+      rec.reached(ki);
+      rec.completed(ki);
+      ++k;
+    }
+  }
+  rec.note("ArduCopter " + ap.version + " S-curve model: WPNAV_SPEED " + std::to_string(P.speed_xy) + " m/s, WPNAV_ACCEL " +
+           std::to_string(P.accel_xy) + " m/s/s, jerk " + std::to_string(P.jerk) + " m/s/s/s, snap " +
+           std::to_string(P.snap) + " m/s^4, WPNAV_RADIUS " + std::to_string(P.radius) + " m, RTL speed " +
+           std::to_string(P.rtl_speed) + " m/s (RTL_SPEED, else WPNAV_SPEED)");
+  return rec.take(steps);
+}
+
+}  // namespace wattswath::mission

@@ -1,0 +1,189 @@
+#include "wattswath/mission/scurve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace wattswath::mission {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct State {
+  double acc = 0.0, vel = 0.0, pos = 0.0;
+};
+
+// State after `tau` [s] of a segment of `kind` (0 constant jerk, 1 rising raised-cosine jerk, 2
+// falling) with (peak) jerk `jerk` and ramp time `tj`, from `s`. Our own integrals of
+// j(t) = J/2 (1 -+ cos(pi t / tj)).
+State advance(int kind, double tau, double jerk, double tj, const State& s) {
+  State r;
+  const double base_v = s.vel + s.acc * tau;
+  const double base_p = s.pos + s.vel * tau + 0.5 * s.acc * tau * tau;
+  if (kind == 0 || tj <= 0.0) {
+    const double j = kind == 0 ? jerk : 0.0;
+    r.acc = s.acc + j * tau;
+    r.vel = base_v + 0.5 * j * tau * tau;
+    r.pos = base_p + j * tau * tau * tau / 6.0;
+    return r;
+  }
+  const double k = tj / kPi, h = 0.5 * jerk, sn = std::sin(tau / k), cs = std::cos(tau / k);
+  const double sign = kind == 1 ? -1.0 : 1.0;  // rising: 1 - cos; falling: 1 + cos
+  r.acc = s.acc + h * (tau + sign * k * sn);
+  r.vel = base_v + h * (0.5 * tau * tau - sign * k * k * (cs - 1.0));
+  r.pos = base_p + h * (tau * tau * tau / 6.0 + sign * (k * k * tau - k * k * k * sn));
+  return r;
+}
+
+// State at the end of a whole speed change `c` from `s` (sign +1 speeds up, -1 slows down).
+State runChange(const SpeedChange& c, double sign, State s) {
+  const double j = sign * c.jerk;
+  s = advance(1, c.tj, j, c.tj, s);
+  s = advance(0, c.t2, j, c.tj, s);
+  s = advance(2, c.tj, j, c.tj, s);
+  s = advance(0, c.t4, 0.0, c.tj, s);
+  s = advance(1, c.tj, -j, c.tj, s);
+  s = advance(0, c.t2, -j, c.tj, s);
+  s = advance(2, c.tj, -j, c.tj, s);
+  return s;
+}
+
+// Largest x in [lo, hi] with ok(x) true, given ok(lo) (bisection; ok is monotone).
+template <class F>
+double largestFeasible(double lo, double hi, F ok) {
+  if (ok(hi)) return hi;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (ok(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+void checkLimit(const char* name, double v) {
+  if (!(v > 0.0 && std::isfinite(v))) {
+    throw std::invalid_argument(std::string("SCurveLimits.") + name + " = " + std::to_string(v) +
+                                ", expected a positive finite value");
+  }
+}
+
+}  // namespace
+
+SpeedChangeExtent extentOf(const SpeedChange& c, double v0) {
+  State s;
+  s.vel = v0;
+  const State e = runChange(c, 1.0, s);
+  return {e.pos, e.vel - v0, 4.0 * c.tj + 2.0 * c.t2 + c.t4};
+}
+
+SpeedChange planSpeedChange(double v0, double vmax, double distance, const SCurveLimits& lim) {
+  SpeedChange c;
+  if (!(vmax > v0) || !(distance > 0.0)) return c;
+  double tj = lim.jerk * kPi / (2.0 * lim.snap);
+  double jerk = lim.jerk, accel = lim.accel;
+  const double a_reach = std::min({accel, (vmax - v0) / (2.0 * tj), (distance - 4.0 * v0 * tj) / (4.0 * tj * tj)});
+  if (!(a_reach > 0.0)) return c;
+  auto fits = [&](const SpeedChange& x) {
+    const SpeedChangeExtent e = extentOf(x, v0);
+    return e.distance <= distance * (1.0 + 1e-12) && v0 + e.speed_gain <= vmax * (1.0 + 1e-12);
+  };
+  if (a_reach < jerk * tj) {
+    // The jerk ramps alone reach more than the acceleration that fits: shorten them.
+    if (v0 == 0.0) {
+      tj = std::min({tj, std::pow(distance * kPi / (8.0 * lim.snap), 0.25), std::cbrt(vmax * kPi / (4.0 * lim.snap)),
+                     std::sqrt(accel * kPi / (2.0 * lim.snap))});
+      jerk = 2.0 * lim.snap * tj / kPi;
+    } else {
+      jerk = a_reach / tj;
+    }
+    c.jerk = jerk;
+    c.tj = tj;
+    accel = jerk * tj;
+    const double t4_speed = std::max(0.0, (vmax - v0) / accel - 2.0 * tj);
+    c.t4 = largestFeasible(0.0, t4_speed, [&](double t4) {
+      SpeedChange x = c;
+      x.t4 = t4;
+      return fits(x);
+    });
+    return c;
+  }
+  c.jerk = jerk;
+  c.tj = tj;
+  // Full jerk: find the largest acceleration (with no constant-acceleration time) that fits, then
+  // the constant-acceleration time.
+  auto withAccel = [&](double a, double t4) {
+    SpeedChange x = c;
+    x.t2 = std::max(0.0, a / jerk - tj);
+    x.t4 = t4;
+    return x;
+  };
+  const double a = largestFeasible(jerk * tj, accel, [&](double a_try) { return fits(withAccel(a_try, 0.0)); });
+  if (a < accel) return withAccel(a, 0.0);
+  const double t4_speed = std::max(0.0, (vmax - v0 - accel * tj - accel * accel / jerk) / accel);
+  const double t4 = largestFeasible(0.0, t4_speed, [&](double t4_try) { return fits(withAccel(accel, t4_try)); });
+  return withAccel(accel, t4);
+}
+
+void SCurveProfile::push(int& i, Kind kind, double duration, double jerk) {
+  const State prev{end_acc_[i - 1], end_vel_[i - 1], end_pos_[i - 1]};
+  const double tj = duration;
+  const int k = kind == Kind::ConstJerk ? 0 : (kind == Kind::IncrJerk ? 1 : 2);
+  const State s = duration > 0.0 ? advance(k, duration, jerk, tj, prev) : prev;
+  kind_[i] = kind;
+  jerk_[i] = jerk;
+  end_time_[i] = end_time_[i - 1] + std::max(duration, 0.0);
+  end_acc_[i] = s.acc;
+  end_vel_[i] = s.vel;
+  end_pos_[i] = s.pos;
+  ++i;
+}
+
+void SCurveProfile::pushJerkRamp(int& i, double tj, double jerk, double t_const) {
+  push(i, Kind::IncrJerk, tj, jerk);
+  push(i, Kind::ConstJerk, t_const, jerk);
+  push(i, Kind::DecrJerk, tj, jerk);
+}
+
+void SCurveProfile::pushPhase(int& i, double tj, double jerk, double t2, double t4) {
+  pushJerkRamp(i, tj, jerk, t2);
+  push(i, Kind::ConstJerk, t4, 0.0);
+  pushJerkRamp(i, tj, -jerk, t2);
+}
+
+SCurveProfile SCurveProfile::restToRest(double length, const SCurveLimits& limits) {
+  checkLimit("speed", limits.speed);
+  checkLimit("accel", limits.accel);
+  checkLimit("jerk", limits.jerk);
+  checkLimit("snap", limits.snap);
+  if (!(length >= 0.0) || !std::isfinite(length)) {
+    throw std::invalid_argument("S-curve leg length " + std::to_string(length) + " m, expected a finite value >= 0");
+  }
+  SCurveProfile p;
+  p.length_ = length;
+  if (length == 0.0) return p;
+  const SpeedChange c = planSpeedChange(0.0, limits.speed, 0.5 * length, limits);
+  int i = 1;
+  p.pushPhase(i, c.tj, c.jerk, c.t2, c.t4);
+  p.end_acc_[kAccelEnd] = 0.0;  // rounding of the ramps
+  const double v = p.end_vel_[kAccelEnd];
+  const double cruise = v > 0.0 ? std::max(0.0, (length - 2.0 * p.end_pos_[kAccelEnd]) / v) : 0.0;
+  p.push(i, Kind::ConstJerk, cruise, 0.0);
+  p.pushPhase(i, c.tj, -c.jerk, c.t2, c.t4);
+  p.end_acc_[kSegments - 1] = 0.0;
+  p.end_vel_[kSegments - 1] = 0.0;
+  return p;
+}
+
+TrackState SCurveProfile::at(double t) const {
+  if (!(t > 0.0)) return {0.0, 0.0, 0.0};
+  if (t >= duration()) return {length_, 0.0, 0.0};
+  int i = 1;
+  while (i < kSegments - 1 && t >= end_time_[i]) ++i;
+  const State prev{end_acc_[i - 1], end_vel_[i - 1], end_pos_[i - 1]};
+  const double tj = end_time_[i] - end_time_[i - 1];
+  const int k = kind_[i] == Kind::ConstJerk ? 0 : (kind_[i] == Kind::IncrJerk ? 1 : 2);
+  const State s = advance(k, t - end_time_[i - 1], jerk_[i], tj, prev);
+  return {std::min(s.pos, length_), std::max(s.vel, 0.0), s.acc};
+}
+
+}  // namespace wattswath::mission

@@ -1,0 +1,189 @@
+// The mission as the autopilot executes it: DO commands applied where AP_Mission runs them (a DO
+// command between two navigation items takes effect when the first is complete, so it governs
+// the leg into the second), DO_JUMP unrolled, positions in the local ENU frame of home.
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "wattswath/mission/flight.hpp"
+
+namespace wattswath::mission {
+namespace {
+
+// Altitude above home [m] of an item in its frame.
+double altitudeAboveHome(const MissionItem& it, const Mission& m) {
+  switch (it.frame) {
+    case 0:
+    case 5: return it.alt_m - m.home.alt_m;  // MAV_FRAME_GLOBAL(_INT): above mean sea level
+    case 3:
+    case 6:                                   // relative to home
+    case 10:
+    case 11: return it.alt_m;                 // above terrain: flat terrain at home's height assumed
+    default: break;
+  }
+  throw std::invalid_argument(it.where + ": " + commandName(it.command) + " in MAV_FRAME " + std::to_string(it.frame) +
+                              ", expected 0/5 (absolute), 3/6 (relative) or 10/11 (terrain)");
+}
+
+bool hasLatLon(const MissionItem& it) {
+  return std::isfinite(it.lat_deg) && std::isfinite(it.lon_deg) && !(it.lat_deg == 0.0 && it.lon_deg == 0.0);
+}
+
+struct Sequencer {
+  const Mission& m;
+  geometry::LocalFrame frame;
+  std::vector<std::string>* warnings;
+  std::vector<NavStep> steps;
+  double speed_xy = 0.0, speed_up = 0.0, speed_down = 0.0;
+
+  void warn(const std::string& w) {
+    if (warnings) warnings->push_back(w);
+  }
+
+  Eigen::Vector3d position(const MissionItem& it) const {
+    const geometry::Point p = frame.toLocal(it.lat_deg, it.lon_deg);
+    return {p.x(), p.y(), altitudeAboveHome(it, m)};
+  }
+
+  void changeSpeed(const MissionItem& it) {
+    const double v = it.param[1];
+    if (v == -1.0 || std::isnan(v)) return;  // "no change"
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      throw std::invalid_argument(it.where + ": DO_CHANGE_SPEED speed (param2) = " + std::to_string(v) +
+                                  " m/s, expected > 0 (or -1 for no change)");
+    }
+    const int type = static_cast<int>(it.param[0]);
+    if (type == 2) speed_up = v;
+    else if (type == 3) speed_down = v;
+    else speed_xy = v;
+  }
+
+  NavStep step(NavStep::Kind kind, int index) const {
+    NavStep s;
+    s.kind = kind;
+    s.item = index;
+    s.speed_xy = speed_xy;
+    s.speed_up = speed_up;
+    s.speed_down = speed_down;
+    return s;
+  }
+
+  // Adds the step of navigation item `index`; returns false when the mission ends there.
+  bool nav(int index) {
+    const MissionItem& it = m.items[index];
+    switch (static_cast<Command>(it.command)) {
+      case Command::NavTakeoff: {
+        NavStep s = step(NavStep::Kind::Takeoff, index);
+        s.target = {0.0, 0.0, altitudeAboveHome(it, m)};
+        steps.push_back(s);
+        return true;
+      }
+      case Command::NavWaypoint:
+      case Command::NavSplineWaypoint:
+      case Command::NavLoiterTime: {
+        const bool loiter = it.command == static_cast<int>(Command::NavLoiterTime);
+        NavStep s = step(loiter ? NavStep::Kind::LoiterTime
+                                : (it.command == static_cast<int>(Command::NavSplineWaypoint) ? NavStep::Kind::SplineWaypoint
+                                                                                               : NavStep::Kind::Waypoint),
+                         index);
+        s.has_position = hasLatLon(it);
+        if (s.has_position) s.target = position(it);
+        s.hold_s = std::isfinite(it.param[0]) ? std::max(0.0, it.param[0]) : 0.0;
+        if (!loiter && std::isfinite(it.param[1])) s.accept_radius_m = std::max(0.0, it.param[1]);
+        steps.push_back(s);
+        return true;
+      }
+      case Command::NavDelay: {
+        NavStep s = step(NavStep::Kind::Delay, index);
+        s.has_position = false;
+        s.hold_s = std::isfinite(it.param[0]) ? std::max(0.0, it.param[0]) : 0.0;
+        steps.push_back(s);
+        return true;
+      }
+      case Command::NavReturnToLaunch:
+        steps.push_back(step(NavStep::Kind::ReturnToLaunch, index));
+        return false;
+      case Command::NavLand: {
+        NavStep s = step(NavStep::Kind::Land, index);
+        s.has_position = hasLatLon(it);
+        if (s.has_position) s.target = position(it);
+        steps.push_back(s);
+        return false;
+      }
+      default: break;
+    }
+    throw std::invalid_argument(it.where + ": " + commandName(it.command) +
+                                " cannot be flown by the flight model (supported: NAV_TAKEOFF, NAV_WAYPOINT, "
+                                "NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_DELAY, NAV_RETURN_TO_LAUNCH, NAV_LAND)");
+  }
+};
+
+}  // namespace
+
+const char* toString(FlightPhase p) {
+  switch (p) {
+    case FlightPhase::Takeoff: return "takeoff";
+    case FlightPhase::Mission: return "mission";
+    case FlightPhase::Return: return "return";
+    case FlightPhase::Landing: return "landing";
+  }
+  return "unknown";
+}
+
+std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>* warnings, std::size_t max_steps) {
+  Sequencer q{m, geometry::LocalFrame(m.home), warnings, {}};
+  std::map<int, int> seq_to_index, jumps_done;
+  for (std::size_t i = 0; i < m.items.size(); ++i) seq_to_index[m.items[i].seq] = static_cast<int>(i);
+  int i = 0;
+  bool ended = false;
+  std::size_t visited = 0;
+  while (i < static_cast<int>(m.items.size()) && !ended) {
+    if (++visited > max_steps) {
+      throw std::invalid_argument(m.source + ": the mission runs more than " + std::to_string(max_steps) +
+                                  " items with its DO_JUMPs unrolled; expected a bounded mission");
+    }
+    const MissionItem& it = m.items[i];
+    if (it.command == static_cast<int>(Command::DoJump)) {
+      const int target = static_cast<int>(it.param[0]), repeat = static_cast<int>(it.param[1]);
+      auto to = seq_to_index.find(target);
+      if (to == seq_to_index.end()) {
+        throw std::invalid_argument(it.where + ": DO_JUMP to item " + std::to_string(target) + ", which does not exist");
+      }
+      if (repeat < 0) throw std::invalid_argument(it.where + ": DO_JUMP repeats forever (param2 = -1); expected a count");
+      if (jumps_done[i] < repeat) {
+        ++jumps_done[i];
+        i = to->second;
+        continue;
+      }
+      ++i;
+      continue;
+    }
+    if (it.command == static_cast<int>(Command::DoChangeSpeed)) q.changeSpeed(it);
+    if (isNavCommand(it.command)) ended = !q.nav(i);
+    ++i;
+  }
+  if (ended && i < static_cast<int>(m.items.size())) {
+    q.warn(m.items[i].where + ": items after " + commandName(q.steps.back().item >= 0 ? m.items[q.steps.back().item].command : 0) +
+           " are never flown (" + std::to_string(m.items.size() - i) + " ignored)");
+  }
+  if (q.steps.empty()) throw std::invalid_argument(m.source + ": the mission has no navigation item to fly");
+  if (q.steps.front().kind != NavStep::Kind::Takeoff) {
+    const double z = q.steps.front().has_position ? q.steps.front().target.z() : 10.0;
+    NavStep t = q.steps.front();
+    t.kind = NavStep::Kind::Takeoff;
+    t.target = {0.0, 0.0, z};
+    t.hold_s = 0.0;
+    t.item = -1;
+    q.steps.insert(q.steps.begin(), t);
+    q.warn(m.source + ": no NAV_TAKEOFF first: a vertical take-off to " + std::to_string(z) + " m is assumed");
+  }
+  const NavStep::Kind last = q.steps.back().kind;
+  if (last != NavStep::Kind::ReturnToLaunch && last != NavStep::Kind::Land) {
+    q.warn(m.source + ": the mission does not end with NAV_RETURN_TO_LAUNCH or NAV_LAND: the vehicle hovers at the "
+           "last item and the prediction ends there, in the air");
+  }
+  return q.steps;
+}
+
+}  // namespace wattswath::mission

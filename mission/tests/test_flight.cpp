@@ -1,0 +1,235 @@
+// Flight-behaviour models against hand-worked cases: an S-curve leg reaches its speed with the
+// jerk and acceleration ramps ArduCopter derives; a 90 degree corner is blended at the speed the
+// overlap allows; a hold stops the vehicle; PX4's corner speed and straight-leg timing; the
+// leash model's stop; bad inputs give clear errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "wattswath/mission/flight.hpp"
+#include "wattswath/mission/scurve.hpp"
+
+using namespace wattswath::mission;
+
+namespace {
+
+// A mission in local metres: home at the origin of a frame, waypoints given as ENU offsets.
+Mission localMission(const std::vector<Eigen::Vector3d>& wps, double hold_s = 0.0, double speed = 0.0, bool rtl = true) {
+  const wattswath::geometry::GeoPoint home{43.7, 10.4, 0.0};
+  const wattswath::geometry::LocalFrame frame(home);
+  Mission m;
+  m.source = "test";
+  m.home = home;
+  m.home_known = true;
+  int seq = 1;
+  auto add = [&](int cmd, const Eigen::Vector3d& p, double p1 = 0.0, double p2 = 0.0, int frame_no = 3) {
+    MissionItem it;
+    it.seq = seq++;
+    it.command = cmd;
+    it.frame = frame_no;
+    it.param[0] = p1;
+    it.param[1] = p2;
+    if (p.head<2>().norm() > 0.0 || cmd == 16) {
+      const auto g = frame.toGeodetic({p.x(), p.y()});
+      it.lat_deg = g.lat_deg;
+      it.lon_deg = g.lon_deg;
+    }
+    it.alt_m = p.z();
+    it.where = "test item " + std::to_string(it.seq);
+    m.items.push_back(it);
+  };
+  add(22, {0, 0, wps.front().z()});
+  if (speed > 0.0) add(178, {0, 0, 0}, 1.0, speed, 2);
+  for (const auto& w : wps) add(16, w, hold_s);
+  if (rtl) add(20, {0, 0, 0}, 0, 0, 2);
+  return m;
+}
+
+double minSpeedBetween(const FlownMission& f, double t0, double t1) {
+  double v = 1e9;
+  for (const auto& s : f.samples)
+    if (s.t >= t0 && s.t <= t1) v = std::min(v, s.velocity.norm());
+  return v;
+}
+
+}  // namespace
+
+TEST(SCurve, LongLegReachesSpeedWithTheDerivedRamps) {
+  // ArduCopter 4.x defaults: V 10 m/s, A 2.5 m/s^2, J 1 m/s^3, snap 5.236 m/s^4 -> tj = 0.3 s;
+  // T_acc = V/A + tj + A/J = 6.8 s, D_acc = V T_acc / 2 = 34 m; a 200 m leg takes 2 T_acc + (200 - 68)/10.
+  const SCurveLimits lim{10.0, 2.5, 1.0, 1.0 * M_PI / 0.3 * 0.5};
+  const SCurveProfile p = SCurveProfile::restToRest(200.0, lim);
+  EXPECT_NEAR(p.accelEndTime(), 6.8, 1e-6);
+  EXPECT_NEAR(p.at(p.accelEndTime()).pos, 34.0, 1e-6);
+  EXPECT_NEAR(p.peakSpeed(), 10.0, 1e-9);
+  EXPECT_NEAR(p.duration(), 2 * 6.8 + 13.2, 1e-6);
+  double a_max = 0.0, j_max = 0.0, prev_a = 0.0;
+  for (double t = 0.0; t <= p.duration(); t += 0.001) {
+    const TrackState s = p.at(t);
+    a_max = std::max(a_max, std::abs(s.acc));
+    if (t > 0.0) j_max = std::max(j_max, std::abs(s.acc - prev_a) / 0.001);
+    prev_a = s.acc;
+  }
+  EXPECT_NEAR(a_max, 2.5, 1e-3);
+  EXPECT_NEAR(j_max, 1.0, 5e-3);
+  EXPECT_NEAR(p.at(p.duration()).pos, 200.0, 1e-9);
+}
+
+TEST(SCurve, ShortLegNeverReachesItsSpeedAndStillEndsAtRestOnTheTarget) {
+  const SCurveLimits lim{10.0, 2.5, 1.0, 5.236};
+  for (double L : {0.05, 1.0, 10.0, 60.0}) {
+    const SCurveProfile p = SCurveProfile::restToRest(L, lim);
+    EXPECT_LT(p.peakSpeed(), 10.0) << L;
+    EXPECT_NEAR(p.at(p.duration()).pos, L, 1e-9) << L;
+    EXPECT_NEAR(p.at(0.5 * p.duration()).pos, 0.5 * L, 1e-6 * L + 1e-9) << L;  // symmetric
+    double prev = 0.0;
+    for (double t = 0.0; t <= p.duration(); t += p.duration() / 500) {
+      EXPECT_GE(p.at(t).pos + 1e-9, prev) << L;  // never backwards
+      prev = p.at(t).pos;
+    }
+  }
+}
+
+TEST(SCurve, RejectsLimitsThatAreNotPositive) {
+  EXPECT_THROW(SCurveProfile::restToRest(10.0, {0.0, 2.5, 1.0, 5.0}), std::invalid_argument);
+  EXPECT_THROW(SCurveProfile::restToRest(-1.0, {10.0, 2.5, 1.0, 5.0}), std::invalid_argument);
+}
+
+TEST(ArduCopterSCurve, NinetyDegreeCornerIsBlendedNotStopped) {
+  // 200 m east, then 200 m north at 10 m/s (WPNAV_SPEED default): the corner is flown through at
+  // about 2.9 m/s (docs/autopilots.md: WPNAV_RADIUS 2 m binds; overlap mid-point speed V cos 45 of
+  // the accelerating/decelerating S-curves), never at rest.
+  const Mission m = localMission({{200, 0, 10}, {200, 200, 10}});
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
+  const double t_corner = f.events[1].reached_s;
+  ASSERT_TRUE(std::isfinite(t_corner));
+  const double v_min = minSpeedBetween(f, t_corner - 3.0, t_corner + 3.0);
+  EXPECT_GT(v_min, 2.0);
+  EXPECT_LT(v_min, 4.0);
+  // The corner is cut by about WPNAV_RADIUS (2 m; the check is on the predicted mid-point, samples are 0.1 s apart).
+  double closest = 1e9;
+  for (const auto& s : f.samples) closest = std::min(closest, (s.position - Eigen::Vector3d(200, 0, 10)).norm());
+  EXPECT_LT(closest, 2.1);
+  EXPECT_GT(closest, 0.5);
+}
+
+TEST(ArduCopterSCurve, HoldTimeStopsTheVehicle) {
+  const Mission m = localMission({{100, 0, 10}, {100, 100, 10}}, 3.0);
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
+  const StepEvent& e = f.events[1];
+  ASSERT_NEAR(e.completed_s - e.reached_s, 3.0, 0.02);
+  EXPECT_LT(minSpeedBetween(f, e.reached_s, e.completed_s), 1e-6);
+  // A stop-to-stop 100 m leg at 10 m/s: 2 x 6.8 s + (100 - 68) / 10 = 16.8 s after the take-off.
+  EXPECT_NEAR(e.reached_s - f.events[0].reached_s, 16.8, 0.05);
+}
+
+TEST(ArduCopterSCurve, TakeoffClimbsAtWpnavSpeedUpAndLandingEndsOnTheGround) {
+  const Mission m = localMission({{0, 50, 10}});
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
+  // 10 m at 2.5 m/s with 1 m/s^2 and 5 m/s^3: about 10/2.5 + 2.5 + jerk rounding, after 0.5 s spool.
+  EXPECT_NEAR(f.events[0].reached_s, 0.5 + 6.5, 0.6);
+  EXPECT_NEAR(f.samples.back().position.z(), 0.0, 1e-9);
+  EXPECT_FALSE(f.samples.back().airborne);
+}
+
+TEST(Px4, CornerSpeedFollowsTheAcceptanceRadiusFormula) {
+  // MPC_XY_TRAJ_P 0.5, MPC_ACC_HOR 3, NAV_ACC_RAD 10 m, 90 deg: sqrt(0.5 * 3 * 10 * tan 45) = 3.87 m/s;
+  // at 5 m/s cruise the vehicle is not slowed before the acceptance radius.
+  AutopilotConfig px4 = parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test");
+  const Mission m = localMission({{100, 0, 10}, {100, 100, 10}});
+  const FlownMission f = flyMission(sequenceMission(m), px4);
+  const double t = f.events[1].reached_s;
+  double v_at_switch = 0.0;
+  for (const auto& s : f.samples)
+    if (std::abs(s.t - t) < 0.06) v_at_switch = s.velocity.norm();
+  EXPECT_NEAR(v_at_switch, 5.0, 0.3);
+  EXPECT_GT(minSpeedBetween(f, t, t + 4.0), 2.0);
+}
+
+TEST(Px4, StraightLegAccelerationTakesVOverAPlusAOverJ) {
+  AutopilotConfig px4 = parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test");
+  const Mission m = localMission({{300, 0, 10}}, 1.0);
+  const FlownMission f = flyMission(sequenceMission(m), px4);
+  // Find when the speed first reaches 99 % of 5 m/s after the take-off: about V/A + A/J = 2.42 s.
+  const double t0 = f.events[0].completed_s;
+  double t99 = 0.0;
+  for (const auto& s : f.samples)
+    if (s.t > t0 && s.velocity.head<2>().norm() >= 0.99 * 5.0) {
+      t99 = s.t - t0;
+      break;
+    }
+  EXPECT_NEAR(t99, 5.0 / 3.0 + 3.0 / 4.0, 0.5);
+}
+
+TEST(ArduCopterLeash, StopWaypointIsReachedWithinTheRadiusAndHoldsStill) {
+  AutopilotConfig ac3 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.3.3"})", "test");
+  ASSERT_EQ(ac3.family, AutopilotFamily::ArduCopterLeash);
+  const Mission m = localMission({{100, 0, 10}}, 5.0);
+  const FlownMission f = flyMission(sequenceMission(m), ac3);
+  const StepEvent& e = f.events[1];
+  // 100 m at WPNAV_SPEED 5 m/s with WPNAV_ACCEL 1 m/s^2: longer than 20 s at constant speed, shorter
+  // than a triangular profile at half the acceleration.
+  const double leg = e.reached_s - f.events[0].completed_s;
+  EXPECT_GT(leg, 20.0);
+  EXPECT_LT(leg, 35.0);
+  for (const auto& s : f.samples)
+    if (s.t > e.reached_s && s.t < e.completed_s) EXPECT_LT((s.position - Eigen::Vector3d(100, 0, 10)).norm(), 2.5);
+}
+
+TEST(Sequence, DoChangeSpeedGovernsTheNextLegAndBadSpeedsAreErrors) {
+  Mission m = localMission({{100, 0, 10}}, 0.0, 4.0);
+  const auto steps = sequenceMission(m);
+  ASSERT_EQ(steps.size(), 3u);
+  EXPECT_EQ(steps[1].speed_xy, 4.0);
+  m.items[1].param[1] = 0.0;
+  try {
+    sequenceMission(m);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("DO_CHANGE_SPEED speed (param2) = 0"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Sequence, DoJumpLoopsAreBoundedAndUnrolled) {
+  Mission m = localMission({{50, 0, 10}, {50, 50, 10}}, 0.0, 0.0, false);
+  MissionItem jump;
+  jump.seq = 4;
+  jump.command = 177;
+  jump.frame = 2;
+  jump.param[0] = 2;  // back to the first waypoint
+  jump.param[1] = 3;  // three more times
+  jump.where = "test item 4";
+  m.items.push_back(jump);
+  std::vector<std::string> w;
+  const auto steps = sequenceMission(m, &w);
+  EXPECT_EQ(steps.size(), 1u + 2u * 4u);
+  jump.param[1] = -1;
+  m.items.back() = jump;
+  EXPECT_THROW(sequenceMission(m), std::invalid_argument);
+}
+
+TEST(Autopilot, FamiliesFollowFirmwareAndVersion) {
+  EXPECT_EQ(familyOf("ArduCopter", "4.0.7"), AutopilotFamily::ArduCopterLeash);
+  EXPECT_EQ(familyOf("ArduCopter", "V4.1.0"), AutopilotFamily::ArduCopterSCurve);
+  EXPECT_EQ(familyOf("PX4", "v1.15.0"), AutopilotFamily::PX4);
+  EXPECT_THROW(familyOf("ArduPlane", "4.5"), std::invalid_argument);
+  EXPECT_THROW(parseAutopilot(R"({"firmware":"ArduCopter","version":"4.5","parameters":{"WPNAV_SPEED":"fast"}})", "v.json"),
+               std::invalid_argument);
+  const AutopilotConfig c = parseAutopilot(R"({"firmware":"ArduCopter","version":"4.5","parameters":{"WPNAV_SPEED":500}})", "v");
+  EXPECT_EQ(c.get("WPNAV_SPEED"), 500);
+  EXPECT_EQ(c.get("WPNAV_ACCEL"), 250);  // documented default
+  EXPECT_THROW(c.get("NO_SUCH_PARAM"), std::out_of_range);
+}
+
+TEST(FlightPieces, PiecesKeepTheTrajectoryTimeAndLength) {
+  const Mission m = localMission({{100, 0, 10}, {100, 100, 10}});
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
+  const FlightPieces p = toPieces(f);
+  double t = 0.0, path = 0.0;
+  for (const auto& pc : p.pieces) t += pc.duration;
+  for (std::size_t i = 1; i < f.samples.size(); ++i) path += (f.samples[i].position - f.samples[i - 1].position).norm();
+  EXPECT_NEAR(t, f.samples.back().t, 1e-9);
+  double len = 0.0;
+  for (const auto& pc : p.pieces) len += pc.length;
+  EXPECT_NEAR(len, path, 0.01 * path);
+}
