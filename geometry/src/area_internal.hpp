@@ -1,6 +1,7 @@
 #pragma once
-// Internal to geometry/src: raw polygons as parsed (before projection), shared by the readers
-// (area_readers.cpp, no CGAL) and the validation (area_validate.cpp, CGAL).
+// Internal to geometry/src: raw polygons as parsed (before projection), shared by the format
+// parsers (area_formats.cpp), the read pipeline (area_readers.cpp; both without CGAL) and the
+// validation (area_validate.cpp, CGAL).
 #include <optional>
 #include <string>
 #include <vector>

@@ -16,13 +16,6 @@ double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.
 
 double angleGap(double a, double b) { return std::abs(std::remainder(a - b, 2.0 * M_PI)); }
 
-double distanceToSegment(const Point& p, const Point& a, const Point& b) {
-  const Point ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
-
 Point rotate(const Point& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   return Point(c * v.x() - s * v.y(), s * v.x() + c * v.y());
@@ -50,6 +43,13 @@ Ring rectangle(const Point& a, const Point& b, double spacing) {
 std::string legName(size_t i) { return "leg " + std::to_string(i); }
 
 }  // namespace
+
+double distanceToSegment(const Point& p, const Point& a, const Point& b) {
+  const Point ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
 
 bool insideRing(const Ring& ring, const Point& p, double margin) {
   bool inside = false;

@@ -28,6 +28,12 @@ double Route::length() const {
   return l;
 }
 
+double tangentWithin(double turn, double margin) {
+  const double h = 0.5 * std::abs(turn);
+  if (h < 1e-9 || margin <= 0.0) return 0.0;
+  return margin * std::tan(h) / (1.0 / std::cos(h) - 1.0);
+}
+
 namespace {
 
 double headingOf(const Point& d) { return std::atan2(d.y(), d.x()); }

@@ -433,3 +433,24 @@ TEST(ConvexPartition, BadRingsGiveClearErrors) {
   expectThrow({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, "not simple");
   expectThrow({{0, 0}, {NAN, 0}, {0, 1}}, "not finite");
 }
+
+TEST(TangentWithin, ArcStaysWithinTheMarginOfItsVertex) {
+  for (double turn : {0.2, 1.0, M_PI / 2, 2.5, -1.0}) {
+    const double margin = 3.0;
+    const double t = g::tangentWithin(turn, margin);
+    const double h = 0.5 * std::abs(turn);
+    const double r = t / std::tan(h);  // radius of the arc with that tangent length
+    EXPECT_NEAR(r * (1.0 / std::cos(h) - 1.0), margin, 1e-9) << turn;  // vertex to arc midpoint
+  }
+  EXPECT_NEAR(g::tangentWithin(M_PI / 2, 1.0), 1.0 + std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(g::tangentWithin(0.0, 3.0), 0.0);  // straight on: no arc
+  EXPECT_EQ(g::tangentWithin(1.0, 0.0), 0.0);  // no margin: a stop
+}
+
+TEST(DistanceToSegment, NearestPointOnTheSegmentOrAnEnd) {
+  const g::Point a(0, 0), b(10, 0);
+  EXPECT_NEAR(g::distanceToSegment({5, 3}, a, b), 3.0, 1e-12);
+  EXPECT_NEAR(g::distanceToSegment({-3, 4}, a, b), 5.0, 1e-12);  // beyond a
+  EXPECT_NEAR(g::distanceToSegment({13, 4}, a, b), 5.0, 1e-12);  // beyond b
+  EXPECT_NEAR(g::distanceToSegment({3, 4}, a, a), 5.0, 1e-12);   // a segment without length
+}

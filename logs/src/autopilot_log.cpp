@@ -1,55 +1,27 @@
+// Autopilot logs in: the common assembly of what the DataFlash and ULog readers extract
+// (dataflash_log.cpp, ulog_log.cpp) into one FlightLog, airborne windows, time windows, and
+// reading any log by its format.
 #include "wattswath/logs/autopilot_log.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <iterator>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 
-#include "wattswath/logs/dataflash.hpp"
+#include "autopilot_log_internal.hpp"
 #include "wattswath/logs/log_io.hpp"
-#include "wattswath/logs/ulog.hpp"
-#include "binary_read.hpp"
-#include "mav_type.hpp"
 
 namespace wattswath::logs {
-namespace {
+namespace detail {
 
-constexpr double kPi = 3.14159265358979323846;
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string num(double x, int precision = 6) {
+std::string num(double x, int precision) {
   std::ostringstream os;
   os.precision(precision);
   os << x;
   return os.str();
 }
-
-// One battery series.
-struct Battery {
-  std::string label;
-  int instance = 0;
-  std::vector<double> t, v, i;
-};
-
-// What a format-specific extractor hands to the common assembly.
-struct Raw {
-  std::string format, firmware, vehicle;
-  Battery battery;
-  std::vector<std::string> battery_others;  // other instances found, not used
-  std::string position_source;
-  std::vector<double> pt, yaw;
-  std::vector<Eigen::Vector3d> pos, vel, acc;
-  bool has_acc = false;
-  std::vector<LandedChange> landed;
-  std::string landed_source;
-  std::vector<LogEvent> events;
-  std::map<std::string, std::string> meta;
-  std::vector<std::string> warnings;
-};
 
 double median(std::vector<double> x) {
   if (x.empty()) return kNaN;
@@ -58,15 +30,14 @@ double median(std::vector<double> x) {
   return *mid;
 }
 
+namespace {
+
 double rateHz(const std::vector<double>& t) {
   std::vector<double> dt;
   for (std::size_t k = 1; k < t.size(); ++k) dt.push_back(t[k] - t[k - 1]);
   const double m = median(dt);
   return m > 0 ? 1.0 / m : kNaN;
 }
-
-// Compass heading [deg, clockwise from north] to ENU yaw [rad, counter-clockwise from east].
-double headingDegToEnuYaw(double deg) { return std::remainder(kPi / 2 - deg * kPi / 180.0, 2 * kPi); }
 
 // Keeps only the rows whose time strictly increases; returns how many were dropped.
 template <typename... Cols>
@@ -108,6 +79,8 @@ std::vector<Eigen::Vector3d> accelerationFrom(const std::vector<double>& t, cons
   for (const auto& s : tmp.samples) a.push_back(s.acceleration);
   return a;
 }
+
+}  // namespace
 
 FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt) {
   const std::string where = source + ": ";
@@ -199,370 +172,9 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
   return log;
 }
 
-// ---------------------------------------------------------------- DataFlash
+}  // namespace detail
 
-std::string copterModeName(int mode) {
-  static const std::map<int, std::string> names = {
-      {0, "STABILIZE"}, {1, "ACRO"},     {2, "ALT_HOLD"},  {3, "AUTO"},       {4, "GUIDED"},   {5, "LOITER"},
-      {6, "RTL"},       {7, "CIRCLE"},   {9, "LAND"},      {11, "DRIFT"},     {13, "SPORT"},   {14, "FLIP"},
-      {15, "AUTOTUNE"}, {16, "POSHOLD"}, {17, "BRAKE"},    {18, "THROW"},     {19, "AVOID_ADSB"},
-      {20, "GUIDED_NOGPS"}, {21, "SMART_RTL"}, {22, "FLOWHOLD"}, {23, "FOLLOW"}, {24, "ZIGZAG"},
-      {25, "SYSTEMID"}, {26, "AUTOROTATE"}, {27, "AUTO_RTL"}};
-  auto it = names.find(mode);
-  return it == names.end() ? "mode" : it->second;
-}
-
-// AP_Logger LogEvent ids (the same numbering in Copter 3.x and the shared 4.x enum).
-std::string logEventName(int id) {
-  static const std::map<int, std::string> names = {
-      {10, "ARMED"}, {11, "DISARMED"}, {15, "AUTO_ARMED"}, {17, "LAND_COMPLETE_MAYBE"}, {18, "LAND_COMPLETE"},
-      {25, "SET_HOME"}, {28, "NOT_LANDED"}};
-  auto it = names.find(id);
-  return it == names.end() ? "" : it->second;
-}
-
-void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& raw) {
-  std::vector<Battery> found;
-  for (const std::string name : {"BAT", "BAT2", "CURR", "CURR2"}) {
-    if (!L.has(name, "Volt") || !L.has(name, "Curr") || !L.hasTime(name)) continue;
-    const auto t = L.times(name);
-    auto v = L.column(name, "Volt"), i = L.column(name, "Curr");
-    std::string unit_note;
-    const char vc = L.columnType(name, "Volt");
-    if (vc == 'h' || vc == 'H' || vc == 'i' || vc == 'I') {  // ArduCopter <= 3.3: centivolts, centiamps
-      for (double& x : v) x /= 100.0;
-      for (double& x : i) x /= 100.0;
-      unit_note = "; Volt/Curr integer centi-units divided by 100 (ArduPilot <= 3.3)";
-    }
-    std::vector<double> inst(t.size(), (name.back() == '2') ? 1.0 : 0.0);
-    for (const char* col : {"Inst", "I", "Instance"})
-      if (L.has(name, col)) { inst = L.column(name, col); break; }
-    std::map<int, Battery> by;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      Battery& bb = by[static_cast<int>(inst[k])];
-      bb.t.push_back(t[k]);
-      bb.v.push_back(v[k]);
-      bb.i.push_back(i[k]);
-    }
-    for (auto& [n, bb] : by) {
-      bb.instance = n;
-      bb.label = name + " instance " + std::to_string(n) + " (" + std::to_string(bb.t.size()) + " samples" + unit_note + ")";
-      found.push_back(bb);
-    }
-  }
-  raw.meta["battery_candidates"] = "BAT, BAT2, CURR, CURR2 with Volt and Curr";
-  bool chosen = false;
-  for (auto& bb : found) {
-    const bool ok = opt.battery_instance >= 0 ? bb.instance == opt.battery_instance : median(bb.v) > 1.0;
-    if (ok && !chosen) {
-      raw.battery = bb;
-      chosen = true;
-    } else {
-      raw.battery_others.push_back(bb.label + (median(bb.v) > 1.0 ? "" : ", no voltage"));
-    }
-  }
-  if (!chosen && !found.empty())
-    throw std::runtime_error(L.source() + ": no battery instance " +
-                             (opt.battery_instance >= 0 ? std::to_string(opt.battery_instance) + " " : "with a voltage above 1 V ") +
-                             "(found: " + [&] { std::string s; for (auto& bb : found) s += bb.label + "; "; return s; }() + ")");
-}
-
-void dataflashPosition(const dataflash::Log& L, const LogReadOptions& opt, Raw& raw) {
-  const std::vector<std::string> candidates = {"XKF1", "NKF1", "EKF1", "NKF6"};
-  raw.meta["position_candidates"] = "XKF1, NKF1, EKF1 (PN, PE, PD, VN, VE, VD)";
-  std::string name;
-  for (const auto& c : candidates) {
-    if (!opt.position_source.empty() && c != opt.position_source) continue;
-    if (L.has(c, "PN") && L.has(c, "PE") && L.has(c, "PD") && L.has(c, "VN") && L.hasTime(c)) { name = c; break; }
-  }
-  if (name.empty()) {
-    if (!opt.position_source.empty())
-      throw std::runtime_error(L.source() + ": position source " + opt.position_source +
-                               " not found or not supported (supported: XKF1, NKF1, NKF6, EKF1)");
-    return;
-  }
-  const auto t = L.times(name);
-  const auto pn = L.column(name, "PN"), pe = L.column(name, "PE"), pd = L.column(name, "PD");
-  const auto vn = L.column(name, "VN"), ve = L.column(name, "VE"), vd = L.column(name, "VD");
-  const std::vector<double> yaw = L.has(name, "Yaw") ? L.column(name, "Yaw") : std::vector<double>(t.size(), kNaN);
-  std::vector<double> core(t.size(), 0.0);
-  if (L.has(name, "C")) core = L.column(name, "C");
-  const double use_core = core.empty() ? 0.0 : *std::min_element(core.begin(), core.end());
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    if (core[k] != use_core) continue;
-    raw.pt.push_back(t[k]);
-    raw.pos.emplace_back(pe[k], pn[k], -pd[k]);
-    raw.vel.emplace_back(ve[k], vn[k], -vd[k]);
-    raw.yaw.push_back(headingDegToEnuYaw(yaw[k]));
-  }
-  raw.acc.assign(raw.pt.size(), Eigen::Vector3d::Zero());
-  raw.position_source = name + (L.has(name, "C") ? " core " + num(use_core) : "") +
-                        " (PN, PE, PD, VN, VE, VD; NED from the EKF origin; acceleration: quadratic least-squares derivative of VN, VE, VD)";
-}
-
-void dataflashEvents(const dataflash::Log& L, Raw& raw, bool copter) {
-  if (L.count("EV")) {
-    if (L.hasTime("EV") && L.has("EV", "Id")) {
-      const auto t = L.times("EV");
-      const auto id = L.column("EV", "Id");
-      for (std::size_t k = 0; k < t.size(); ++k) {
-        const int e = static_cast<int>(id[k]);
-        const std::string nm = logEventName(e);
-        raw.events.push_back({t[k], "event", "EV " + std::to_string(e) + (nm.empty() ? "" : " " + nm)});
-        if (e == 11 || e == 17 || e == 18) raw.landed.push_back({t[k], true, "EV " + std::to_string(e) + " " + nm});
-        if (e == 28) raw.landed.push_back({t[k], false, "EV 28 NOT_LANDED"});
-      }
-      if (!raw.landed.empty()) raw.landed_source = "EV landed/not-landed/disarmed events";
-    } else {
-      raw.meta["events_note"] = "EV messages carry no timestamp in this firmware; airborne windows come from the current";
-    }
-  }
-  if (L.count("MODE") && L.hasTime("MODE")) {
-    const auto t = L.times("MODE");
-    const std::string col = L.has("MODE", "ModeNum") ? "ModeNum" : "Mode";
-    const auto mode = L.column("MODE", col);
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      const int md = static_cast<int>(mode[k]);
-      raw.events.push_back({t[k], "mode", copter ? copterModeName(md) + " (" + std::to_string(md) + ")" : "mode " + std::to_string(md)});
-    }
-  }
-  if (L.count("CMD") && L.hasTime("CMD") && L.has("CMD", "CId")) {
-    const auto t = L.times("CMD");
-    const auto cid = L.column("CMD", "CId");
-    const auto cnum = L.has("CMD", "CNum") ? L.column("CMD", "CNum") : std::vector<double>(t.size(), kNaN);
-    const auto lat = L.has("CMD", "Lat") ? L.column("CMD", "Lat") : std::vector<double>(t.size(), kNaN);
-    const auto lng = L.has("CMD", "Lng") ? L.column("CMD", "Lng") : std::vector<double>(t.size(), kNaN);
-    const auto alt = L.has("CMD", "Alt") ? L.column("CMD", "Alt") : std::vector<double>(t.size(), kNaN);
-    for (std::size_t k = 0; k < t.size(); ++k)
-      raw.events.push_back({t[k], "mission_item",
-                            "item " + num(cnum[k]) + ": MAV_CMD " + num(cid[k]) + " at " + num(lat[k], 9) + ", " +
-                                num(lng[k], 9) + ", " + num(alt[k]) + " m"});
-    raw.meta["mission_items"] = std::to_string(t.size());
-  }
-  if (L.count("MSG") && L.hasTime("MSG") && L.has("MSG", "Message")) {
-    const auto t = L.times("MSG");
-    const auto msg = L.textColumn("MSG", "Message");
-    for (std::size_t k = 0; k < t.size(); ++k) raw.events.push_back({t[k], "message", msg[k]});
-  }
-  std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
-}
-
-}  // namespace
-
-FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& opt) {
-  const auto L = dataflash::Log::parse(std::move(bytes), source, opt.lenient);
-  Raw raw;
-  raw.format = "dataflash";
-  raw.warnings = L.warnings();
-  // Firmware and frame: MSG/VER text, else parameters.
-  std::vector<std::string> texts;
-  if (L.has("MSG", "Message")) texts = L.textColumn("MSG", "Message");
-  for (const auto& s : texts) {
-    if (raw.firmware.empty() && (s.rfind("Ardu", 0) == 0 || s.rfind("APM:", 0) == 0)) raw.firmware = s;
-    if (raw.vehicle.empty() && s.rfind("Frame: ", 0) == 0) raw.vehicle = s.substr(7);
-  }
-  if (L.has("VER", "FWS")) {
-    const auto fws = L.textColumn("VER", "FWS");
-    if (!fws.empty() && !fws.front().empty()) raw.firmware = fws.front();
-  }
-  std::map<std::string, double> params;
-  if (L.has("PARM", "Name") && L.has("PARM", "Value")) {
-    const auto names = L.textColumn("PARM", "Name");
-    const auto values = L.column("PARM", "Value");
-    for (std::size_t k = 0; k < names.size(); ++k) params[names[k]] = values[k];
-  }
-  const bool copter = raw.firmware.find("Copter") != std::string::npos ||
-                      (raw.firmware.empty() && (params.count("FRAME_CLASS") || params.count("FRAME")) &&
-                       !params.count("SERVO_AUTO_TRIM"));
-  if (raw.firmware.empty()) {
-    raw.firmware = std::string("ArduPilot") + (copter ? " Copter" : "") + ", version not logged (" +
-                   (L.has("CURR", "TimeUS") || L.has("BAT", "TimeUS") ? "TimeUS timestamps: 3.4 or later" : "TimeMS timestamps: 3.3 or earlier") + ")";
-  }
-  std::string frame;
-  if (params.count("FRAME_CLASS")) frame += "FRAME_CLASS=" + num(params["FRAME_CLASS"]);
-  if (params.count("FRAME_TYPE")) frame += (frame.empty() ? "" : ", ") + std::string("FRAME_TYPE=") + num(params["FRAME_TYPE"]);
-  if (params.count("FRAME")) frame += (frame.empty() ? "" : ", ") + std::string("FRAME=") + num(params["FRAME"]);
-  if (raw.vehicle.empty()) raw.vehicle = copter ? "multicopter" : "unknown";
-  if (!frame.empty()) raw.vehicle += " (" + frame + ")";
-  if (params.count("BATT_CAPACITY")) raw.meta["battery_capacity_mah"] = num(params["BATT_CAPACITY"]);
-  if (L.has("ORGN", "Lat") && L.has("ORGN", "Lng")) {
-    const auto lat = L.column("ORGN", "Lat"), lng = L.column("ORGN", "Lng");
-    raw.meta["ekf_origin"] = num(lat.front(), 10) + ", " + num(lng.front(), 10);
-  }
-  dataflashBattery(L, opt, raw);
-  dataflashPosition(L, opt, raw);
-  dataflashEvents(L, raw, copter);
-  raw.meta["messages"] = std::to_string(L.messageCount());
-  return assemble(std::move(raw), source, opt);
-}
-
-FlightLog readDataFlashLog(const std::string& path, const LogReadOptions& options) {
-  return readDataFlashBytes(binary::readFileBytes(path), path, options);
-}
-
-// ---------------------------------------------------------------- ULog
-
-namespace {
-
-std::string px4Version(const std::string& release) {
-  if (release.empty()) return "";
-  unsigned long v = 0;
-  try { v = std::stoul(release); } catch (const std::exception&) { return ""; }
-  const unsigned type = v & 0xFF;
-  std::string kind = type == 0xFF ? "release" : type >= 192 ? "release candidate" : type >= 128 ? "beta" : type >= 64 ? "alpha" : "development";
-  return "v" + std::to_string((v >> 24) & 0xFF) + "." + std::to_string((v >> 16) & 0xFF) + "." +
-         std::to_string((v >> 8) & 0xFF) + " (" + kind + ")";
-}
-
-std::string navStateName(int s) {
-  static const std::map<int, std::string> names = {{0, "MANUAL"}, {1, "ALTCTL"}, {2, "POSCTL"},
-      {3, "AUTO_MISSION"}, {4, "AUTO_LOITER"}, {5, "AUTO_RTL"}, {10, "ACRO"}, {12, "DESCEND"},
-      {13, "TERMINATION"}, {14, "OFFBOARD"}, {15, "STAB"}, {17, "AUTO_TAKEOFF"}, {18, "AUTO_LAND"},
-      {19, "AUTO_FOLLOW_TARGET"}, {20, "AUTO_PRECLAND"}, {21, "ORBIT"}, {22, "AUTO_VTOL_TAKEOFF"}};
-  auto it = names.find(s);
-  return it == names.end() ? "nav_state" : it->second;
-}
-
-// Appends an event each time `field` of `topic` changes value.
-void changes(const ulog::Log& L, const std::string& topic, const std::string& field, const std::string& kind,
-             const std::function<std::string(int)>& text, Raw& raw) {
-  if (L.instances(topic).empty() || !L.hasField(topic, field)) return;
-  const auto t = L.times(topic, 0);
-  const auto v = L.column(topic, 0, field);
-  for (std::size_t k = 0; k < t.size(); ++k)
-    if (k == 0 || v[k] != v[k - 1]) raw.events.push_back({t[k], kind, text(static_cast<int>(v[k]))});
-}
-
-}  // namespace
-
-FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& opt) {
-  const auto L = ulog::Log::parse(std::move(bytes), source, opt.lenient);
-  Raw raw;
-  raw.format = "ulog";
-  raw.warnings = L.warnings();
-  const auto& info = L.info();
-  auto infoOr = [&](const std::string& k) { auto it = info.find(k); return it == info.end() ? std::string() : it->second; };
-  raw.firmware = "PX4 " + px4Version(infoOr("ver_sw_release"));
-  if (!infoOr("ver_sw_branch").empty()) raw.firmware += ", branch " + infoOr("ver_sw_branch");
-  if (!infoOr("ver_sw").empty()) raw.firmware += ", git " + infoOr("ver_sw").substr(0, 12);
-  raw.meta["ulog_version"] = std::to_string(L.version());
-  raw.meta["ulog_start_s"] = num(static_cast<double>(L.startTimeUs()) * 1e-6, 10);
-  if (L.appendedData()) raw.meta["appended_data"] = "yes";
-  if (L.dropouts().first) raw.meta["dropouts"] = std::to_string(L.dropouts().first) + " totalling " + num(L.dropouts().second) + " s";
-
-  // Vehicle: system type from vehicle_status, board from ver_hw.
-  raw.vehicle.clear();
-  if (!L.instances("vehicle_status").empty() && L.hasField("vehicle_status", "system_type")) {
-    const auto st = L.column("vehicle_status", 0, "system_type");
-    if (!st.empty()) raw.vehicle = mavTypeName(static_cast<int>(st.back()));
-  }
-  if (raw.vehicle.empty()) raw.vehicle = "unknown";
-  if (!infoOr("ver_hw").empty()) raw.vehicle += ", board " + infoOr("ver_hw");
-  if (!infoOr("sys_name").empty()) raw.vehicle += ", " + infoOr("sys_name");
-
-  // Battery.
-  raw.meta["battery_candidates"] = "battery_status (voltage_v, current_a)";
-  bool chosen = false;
-  for (int inst : L.instances("battery_status")) {
-    Battery bb;
-    bb.instance = inst;
-    const auto t = L.times("battery_status", inst);
-    const auto v = L.column("battery_status", inst, "voltage_v");
-    const auto i = L.column("battery_status", inst, "current_a");
-    const bool has_conn = L.hasField("battery_status", "connected");
-    const auto conn = has_conn ? L.column("battery_status", inst, "connected") : std::vector<double>(t.size(), 1.0);
-    std::size_t skipped = 0, unmeasured = 0;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      if (conn[k] == 0.0 || !(v[k] > 0.0)) { ++skipped; continue; }
-      bb.t.push_back(t[k]);
-      bb.v.push_back(v[k]);
-      const bool no_current = i[k] == -1.0;
-      unmeasured += no_current;
-      bb.i.push_back(no_current ? kNaN : i[k]);
-    }
-    bb.label = "battery_status[" + std::to_string(inst) + "] (" + std::to_string(bb.t.size()) + " samples";
-    if (skipped) bb.label += "; " + std::to_string(skipped) + " not connected or without voltage, not used";
-    if (unmeasured) bb.label += "; " + std::to_string(unmeasured) + " with current_a = -1 (not measured) read as NaN";
-    bb.label += ")";
-    const bool ok = opt.battery_instance >= 0 ? inst == opt.battery_instance : (!bb.v.empty() && median(bb.v) > 1.0);
-    if (ok && !chosen) {
-      raw.battery = bb;
-      chosen = true;
-    } else {
-      raw.battery_others.push_back(bb.label);
-    }
-  }
-  if (!chosen && !raw.battery_others.empty())
-    throw std::runtime_error(source + ": no usable battery_status instance (found: " + raw.battery_others.front() + ")");
-
-  // Position: vehicle_local_position instance 0.
-  raw.meta["position_candidates"] = "vehicle_local_position (x, y, z, vx, vy, vz)";
-  const std::string lp = "vehicle_local_position";
-  if (!opt.position_source.empty() && opt.position_source != lp)
-    throw std::runtime_error(source + ": position source " + opt.position_source + " not supported for ULog (supported: " + lp + ")");
-  if (!L.instances(lp).empty()) {
-    const auto t = L.times(lp, 0);
-    auto col = [&](const std::string& f) { return L.hasField(lp, f) ? L.column(lp, 0, f) : std::vector<double>(t.size(), kNaN); };
-    const auto x = col("x"), y = col("y"), z = col("z"), vx = col("vx"), vy = col("vy"), vz = col("vz");
-    const auto ax = col("ax"), ay = col("ay"), az = col("az");
-    const auto heading = L.hasField(lp, "heading") ? col("heading") : col("yaw");
-    const auto xyv = L.hasField(lp, "xy_valid") ? col("xy_valid") : std::vector<double>(t.size(), 1.0);
-    const auto zv = L.hasField(lp, "z_valid") ? col("z_valid") : std::vector<double>(t.size(), 1.0);
-    raw.has_acc = L.hasField(lp, "ax") && L.hasField(lp, "ay") && L.hasField(lp, "az");
-    std::size_t invalid = 0;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      if (xyv[k] == 0.0 || zv[k] == 0.0) { ++invalid; continue; }
-      raw.pt.push_back(t[k]);
-      raw.pos.emplace_back(y[k], x[k], -z[k]);
-      raw.vel.emplace_back(vy[k], vx[k], -vz[k]);
-      raw.acc.emplace_back(ay[k], ax[k], -az[k]);
-      raw.yaw.push_back(std::remainder(kPi / 2 - heading[k], 2 * kPi));
-    }
-    raw.position_source = lp + "[0] (x, y, z, vx, vy, vz" + std::string(raw.has_acc ? ", ax, ay, az" : "") +
-                          "; NED from the EKF reference)";
-    if (invalid) {
-      raw.warnings.push_back(std::to_string(invalid) + " of " + std::to_string(t.size()) + " " + lp +
-                             " samples with xy_valid or z_valid false not used");
-      if (raw.pt.size() < 2)
-        throw std::runtime_error(source + ": " + lp + " has xy_valid or z_valid false in " + std::to_string(invalid) +
-                                 " of " + std::to_string(t.size()) + " samples: no usable local position");
-    }
-    if (L.hasField(lp, "ref_lat") && L.hasField(lp, "ref_lon")) {
-      const auto la = col("ref_lat"), lo = col("ref_lon"), al = col("ref_alt");
-      if (!la.empty()) raw.meta["ekf_origin"] = num(la.back(), 10) + ", " + num(lo.back(), 10) + ", " + num(al.back(), 6) + " m";
-    }
-  }
-
-  // Landed state, modes, arming, mission progress, logged strings.
-  const std::string ld = "vehicle_land_detected";
-  if (!L.instances(ld).empty() && L.hasField(ld, "landed")) {
-    const auto t = L.times(ld, 0);
-    const auto landed = L.column(ld, 0, "landed");
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      if (k > 0 && landed[k] == landed[k - 1]) continue;
-      const bool on = landed[k] != 0.0;
-      raw.landed.push_back({t[k], on, std::string("vehicle_land_detected.landed = ") + (on ? "true" : "false")});
-      raw.events.push_back({t[k], "landed", on ? "landed" : "airborne"});
-    }
-    raw.landed_source = "vehicle_land_detected.landed";
-  }
-  changes(L, "vehicle_status", "nav_state", "mode", [](int s) { return navStateName(s) + " (" + std::to_string(s) + ")"; }, raw);
-  changes(L, "vehicle_status", "arming_state", "event", [](int s) { return s == 2 ? std::string("armed") : "arming_state " + std::to_string(s); }, raw);
-  changes(L, "mission_result", "seq_reached", "mission_item", [](int s) { return "mission item " + std::to_string(s) + " reached"; }, raw);
-  if (!L.instances("mission").empty() && L.hasField("mission", "count")) {
-    const auto c = L.column("mission", 0, "count");
-    if (!c.empty()) raw.meta["mission_items"] = num(c.back());
-  }
-  for (const auto& s : L.strings()) raw.events.push_back({s.t, "message", s.text});
-  std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
-  return assemble(std::move(raw), source, opt);
-}
-
-FlightLog readUlogLog(const std::string& path, const LogReadOptions& options) {
-  return readUlogBytes(binary::readFileBytes(path), path, options);
-}
-
-// ---------------------------------------------------------------- common
+using namespace detail;
 
 std::vector<TimeWindow> detectAirborne(const std::vector<double>& t, const std::vector<double>& current,
                                        const std::vector<LandedChange>& changes, const AirborneSettings& s) {

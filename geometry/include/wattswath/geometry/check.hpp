@@ -43,4 +43,7 @@ std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const
 /// Whether `p` [m] lies strictly inside `ring` by more than `margin` [m] (even-odd rule).
 bool insideRing(const Ring& ring, const Point& p, double margin = 0.0);
 
+/// Distance from `p` to the segment from `a` to `b` [m] (to `a` when the segment has no length).
+double distanceToSegment(const Point& p, const Point& a, const Point& b);
+
 }  // namespace wattswath::geometry

@@ -22,6 +22,10 @@ struct Route {
   double length() const;
 };
 
+/// Largest tangent length [m] of a circular arc at a corner turning by `turn` [rad] whose arc stays
+/// within `margin` [m] of the vertex (0 for a straight corner or no margin).
+double tangentWithin(double turn, double margin);
+
 /// How a corner between two straight segments is flown.
 enum class CornerStyle {
   Sharp,   ///< stop at the vertex and turn in place

@@ -1,0 +1,54 @@
+#pragma once
+// Internal to logs/src: what the DataFlash and ULog readers (dataflash_log.cpp, ulog_log.cpp) hand
+// to the common assembly into a FlightLog (autopilot_log.cpp), and the helpers they share.
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wattswath/logs/autopilot_log.hpp"
+
+namespace wattswath::logs::detail {
+
+constexpr double kPi = 3.14159265358979323846;
+inline const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// `x` written with `precision` significant digits.
+std::string num(double x, int precision = 6);
+
+/// One battery series: times [s], voltage [V] and current [A].
+struct Battery {
+  std::string label;          ///< where it came from, for messages and metadata
+  int instance = 0;           ///< battery instance of the log
+  std::vector<double> t, v, i;  ///< [s], [V], [A]
+};
+
+/// What a format-specific extractor hands to the common assembly.
+struct Raw {
+  std::string format, firmware, vehicle;    ///< "dataflash" or "ulog", firmware and vehicle descriptions
+  Battery battery;                          ///< the battery series used
+  std::vector<std::string> battery_others;  ///< other instances found, not used
+  std::string position_source;              ///< where the positions came from
+  std::vector<double> pt, yaw;              ///< [s] position times, [rad] ENU yaw
+  std::vector<Eigen::Vector3d> pos, vel, acc;  ///< [m], [m/s], [m/s^2] ENU at the position times
+  bool has_acc = false;                     ///< acc was logged (else derived from vel)
+  std::vector<LandedChange> landed;         ///< landed-state changes
+  std::string landed_source;                ///< where they came from
+  std::vector<LogEvent> events;             ///< events for the timeline
+  std::map<std::string, std::string> meta;  ///< metadata so far
+  std::vector<std::string> warnings;        ///< warnings so far
+};
+
+/// Median of `x` (NaN when empty).
+double median(std::vector<double> x);
+
+
+/// The FlightLog of `raw`: battery sample times, position, velocity, acceleration and yaw
+/// interpolated to them, airborne windows, metadata; the time window of `opt` applied. Throws
+/// std::runtime_error naming `source` when there are too few samples or they do not overlap.
+FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt);
+
+}  // namespace wattswath::logs::detail

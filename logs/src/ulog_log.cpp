@@ -1,0 +1,179 @@
+// PX4 ULog logs in: battery, local position and events extracted from the parsed log (ulog.cpp)
+// and assembled into a FlightLog (autopilot_log.cpp).
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "autopilot_log_internal.hpp"
+#include "binary_read.hpp"
+#include "mav_type.hpp"
+#include "wattswath/logs/autopilot_log.hpp"
+#include "wattswath/logs/ulog.hpp"
+
+namespace wattswath::logs {
+
+using namespace detail;
+
+namespace {
+
+std::string px4Version(const std::string& release) {
+  if (release.empty()) return "";
+  unsigned long v = 0;
+  try { v = std::stoul(release); } catch (const std::exception&) { return ""; }
+  const unsigned type = v & 0xFF;
+  std::string kind = type == 0xFF ? "release" : type >= 192 ? "release candidate" : type >= 128 ? "beta" : type >= 64 ? "alpha" : "development";
+  return "v" + std::to_string((v >> 24) & 0xFF) + "." + std::to_string((v >> 16) & 0xFF) + "." +
+         std::to_string((v >> 8) & 0xFF) + " (" + kind + ")";
+}
+
+std::string navStateName(int s) {
+  static const std::map<int, std::string> names = {{0, "MANUAL"}, {1, "ALTCTL"}, {2, "POSCTL"},
+      {3, "AUTO_MISSION"}, {4, "AUTO_LOITER"}, {5, "AUTO_RTL"}, {10, "ACRO"}, {12, "DESCEND"},
+      {13, "TERMINATION"}, {14, "OFFBOARD"}, {15, "STAB"}, {17, "AUTO_TAKEOFF"}, {18, "AUTO_LAND"},
+      {19, "AUTO_FOLLOW_TARGET"}, {20, "AUTO_PRECLAND"}, {21, "ORBIT"}, {22, "AUTO_VTOL_TAKEOFF"}};
+  auto it = names.find(s);
+  return it == names.end() ? "nav_state" : it->second;
+}
+
+// Appends an event each time `field` of `topic` changes value.
+void changes(const ulog::Log& L, const std::string& topic, const std::string& field, const std::string& kind,
+             const std::function<std::string(int)>& text, Raw& raw) {
+  if (L.instances(topic).empty() || !L.hasField(topic, field)) return;
+  const auto t = L.times(topic, 0);
+  const auto v = L.column(topic, 0, field);
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (k == 0 || v[k] != v[k - 1]) raw.events.push_back({t[k], kind, text(static_cast<int>(v[k]))});
+}
+
+}  // namespace
+
+FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& opt) {
+  const auto L = ulog::Log::parse(std::move(bytes), source, opt.lenient);
+  Raw raw;
+  raw.format = "ulog";
+  raw.warnings = L.warnings();
+  const auto& info = L.info();
+  auto infoOr = [&](const std::string& k) { auto it = info.find(k); return it == info.end() ? std::string() : it->second; };
+  raw.firmware = "PX4 " + px4Version(infoOr("ver_sw_release"));
+  if (!infoOr("ver_sw_branch").empty()) raw.firmware += ", branch " + infoOr("ver_sw_branch");
+  if (!infoOr("ver_sw").empty()) raw.firmware += ", git " + infoOr("ver_sw").substr(0, 12);
+  raw.meta["ulog_version"] = std::to_string(L.version());
+  raw.meta["ulog_start_s"] = num(static_cast<double>(L.startTimeUs()) * 1e-6, 10);
+  if (L.appendedData()) raw.meta["appended_data"] = "yes";
+  if (L.dropouts().first) raw.meta["dropouts"] = std::to_string(L.dropouts().first) + " totalling " + num(L.dropouts().second) + " s";
+
+  // Vehicle: system type from vehicle_status, board from ver_hw.
+  raw.vehicle.clear();
+  if (!L.instances("vehicle_status").empty() && L.hasField("vehicle_status", "system_type")) {
+    const auto st = L.column("vehicle_status", 0, "system_type");
+    if (!st.empty()) raw.vehicle = mavTypeName(static_cast<int>(st.back()));
+  }
+  if (raw.vehicle.empty()) raw.vehicle = "unknown";
+  if (!infoOr("ver_hw").empty()) raw.vehicle += ", board " + infoOr("ver_hw");
+  if (!infoOr("sys_name").empty()) raw.vehicle += ", " + infoOr("sys_name");
+
+  // Battery.
+  raw.meta["battery_candidates"] = "battery_status (voltage_v, current_a)";
+  bool chosen = false;
+  for (int inst : L.instances("battery_status")) {
+    Battery bb;
+    bb.instance = inst;
+    const auto t = L.times("battery_status", inst);
+    const auto v = L.column("battery_status", inst, "voltage_v");
+    const auto i = L.column("battery_status", inst, "current_a");
+    const bool has_conn = L.hasField("battery_status", "connected");
+    const auto conn = has_conn ? L.column("battery_status", inst, "connected") : std::vector<double>(t.size(), 1.0);
+    std::size_t skipped = 0, unmeasured = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (conn[k] == 0.0 || !(v[k] > 0.0)) { ++skipped; continue; }
+      bb.t.push_back(t[k]);
+      bb.v.push_back(v[k]);
+      const bool no_current = i[k] == -1.0;
+      unmeasured += no_current;
+      bb.i.push_back(no_current ? kNaN : i[k]);
+    }
+    bb.label = "battery_status[" + std::to_string(inst) + "] (" + std::to_string(bb.t.size()) + " samples";
+    if (skipped) bb.label += "; " + std::to_string(skipped) + " not connected or without voltage, not used";
+    if (unmeasured) bb.label += "; " + std::to_string(unmeasured) + " with current_a = -1 (not measured) read as NaN";
+    bb.label += ")";
+    const bool ok = opt.battery_instance >= 0 ? inst == opt.battery_instance : (!bb.v.empty() && median(bb.v) > 1.0);
+    if (ok && !chosen) {
+      raw.battery = bb;
+      chosen = true;
+    } else {
+      raw.battery_others.push_back(bb.label);
+    }
+  }
+  if (!chosen && !raw.battery_others.empty())
+    throw std::runtime_error(source + ": no usable battery_status instance (found: " + raw.battery_others.front() + ")");
+
+  // Position: vehicle_local_position instance 0.
+  raw.meta["position_candidates"] = "vehicle_local_position (x, y, z, vx, vy, vz)";
+  const std::string lp = "vehicle_local_position";
+  if (!opt.position_source.empty() && opt.position_source != lp)
+    throw std::runtime_error(source + ": position source " + opt.position_source + " not supported for ULog (supported: " + lp + ")");
+  if (!L.instances(lp).empty()) {
+    const auto t = L.times(lp, 0);
+    auto col = [&](const std::string& f) { return L.hasField(lp, f) ? L.column(lp, 0, f) : std::vector<double>(t.size(), kNaN); };
+    const auto x = col("x"), y = col("y"), z = col("z"), vx = col("vx"), vy = col("vy"), vz = col("vz");
+    const auto ax = col("ax"), ay = col("ay"), az = col("az");
+    const auto heading = L.hasField(lp, "heading") ? col("heading") : col("yaw");
+    const auto xyv = L.hasField(lp, "xy_valid") ? col("xy_valid") : std::vector<double>(t.size(), 1.0);
+    const auto zv = L.hasField(lp, "z_valid") ? col("z_valid") : std::vector<double>(t.size(), 1.0);
+    raw.has_acc = L.hasField(lp, "ax") && L.hasField(lp, "ay") && L.hasField(lp, "az");
+    std::size_t invalid = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (xyv[k] == 0.0 || zv[k] == 0.0) { ++invalid; continue; }
+      raw.pt.push_back(t[k]);
+      raw.pos.emplace_back(y[k], x[k], -z[k]);
+      raw.vel.emplace_back(vy[k], vx[k], -vz[k]);
+      raw.acc.emplace_back(ay[k], ax[k], -az[k]);
+      raw.yaw.push_back(std::remainder(kPi / 2 - heading[k], 2 * kPi));
+    }
+    raw.position_source = lp + "[0] (x, y, z, vx, vy, vz" + std::string(raw.has_acc ? ", ax, ay, az" : "") +
+                          "; NED from the EKF reference)";
+    if (invalid) {
+      raw.warnings.push_back(std::to_string(invalid) + " of " + std::to_string(t.size()) + " " + lp +
+                             " samples with xy_valid or z_valid false not used");
+      if (raw.pt.size() < 2)
+        throw std::runtime_error(source + ": " + lp + " has xy_valid or z_valid false in " + std::to_string(invalid) +
+                                 " of " + std::to_string(t.size()) + " samples: no usable local position");
+    }
+    if (L.hasField(lp, "ref_lat") && L.hasField(lp, "ref_lon")) {
+      const auto la = col("ref_lat"), lo = col("ref_lon"), al = col("ref_alt");
+      if (!la.empty()) raw.meta["ekf_origin"] = num(la.back(), 10) + ", " + num(lo.back(), 10) + ", " + num(al.back(), 6) + " m";
+    }
+  }
+
+  // Landed state, modes, arming, mission progress, logged strings.
+  const std::string ld = "vehicle_land_detected";
+  if (!L.instances(ld).empty() && L.hasField(ld, "landed")) {
+    const auto t = L.times(ld, 0);
+    const auto landed = L.column(ld, 0, "landed");
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (k > 0 && landed[k] == landed[k - 1]) continue;
+      const bool on = landed[k] != 0.0;
+      raw.landed.push_back({t[k], on, std::string("vehicle_land_detected.landed = ") + (on ? "true" : "false")});
+      raw.events.push_back({t[k], "landed", on ? "landed" : "airborne"});
+    }
+    raw.landed_source = "vehicle_land_detected.landed";
+  }
+  changes(L, "vehicle_status", "nav_state", "mode", [](int s) { return navStateName(s) + " (" + std::to_string(s) + ")"; }, raw);
+  changes(L, "vehicle_status", "arming_state", "event", [](int s) { return s == 2 ? std::string("armed") : "arming_state " + std::to_string(s); }, raw);
+  changes(L, "mission_result", "seq_reached", "mission_item", [](int s) { return "mission item " + std::to_string(s) + " reached"; }, raw);
+  if (!L.instances("mission").empty() && L.hasField("mission", "count")) {
+    const auto c = L.column("mission", 0, "count");
+    if (!c.empty()) raw.meta["mission_items"] = num(c.back());
+  }
+  for (const auto& s : L.strings()) raw.events.push_back({s.t, "message", s.text});
+  std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
+  return assemble(std::move(raw), source, opt);
+}
+
+FlightLog readUlogLog(const std::string& path, const LogReadOptions& options) {
+  return readUlogBytes(binary::readFileBytes(path), path, options);
+}
+
+}  // namespace wattswath::logs

@@ -1,0 +1,132 @@
+// The one-angle search: boustrophedon routes over the whole area at each sweep angle of a coarse
+// grid, refined around the best; the few best angles flown in full and checked for coverage.
+#include "angle_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "assemble.hpp"
+#include "verification.hpp"
+
+namespace wattswath::planner::detail {
+namespace {
+
+constexpr size_t kFinishBest = 8;  // best-ranked angles flown in full before choosing
+
+// Evaluates `angles` on `threads` workers, each with its own scorer.
+std::vector<AngleResult> evaluateAngles(const Context& ctx, const std::vector<double>& angles,
+                                        const energy::EnergyModel& model, const SpeedSettings& ss,
+                                        const StopTable& stop, Objective obj, int threads, int exact_max_cells) {
+  std::vector<AngleResult> out(angles.size());
+  const int nt = std::max(1, std::min<int>(threads, static_cast<int>(angles.size())));
+  onWorkers(nt, [&](int t) {
+    // The scan ranks angles of boustrophedon routes, whose corners are far apart: arcs at chain
+    // speeds change little there, and scoring without them is several times faster.
+    SpeedSettings scan = ss;
+    scan.arc_chains = false;
+    RouteScorer scorer(model, scan);
+    for (size_t i = t; i < angles.size(); i += nt)
+      out[i] = evaluateAngle(ctx, angles[i], scorer, stop, obj, exact_max_cells);
+  });
+  return out;
+}
+
+}  // namespace
+
+AngleResult evaluateAngle(const Context& ctx, double angle, RouteScorer& scorer, const StopTable& stop, Objective obj,
+                          int exact_max_cells, bool also_length_order) {
+  AngleResult res;
+  res.angle = angle;
+  double first_y = 0.0;
+  const auto cells = sweepCells(ctx, angle, &first_y);
+  if (cells.empty()) return res;
+  std::vector<Route> cand;
+  GtspInstance g;
+  int cluster = 0;
+  for (size_t ci = 0; ci < cells.size(); ++ci) {
+    bool any = false;
+    for (int top = 0; top < 2; ++top) {
+      for (bool right : {false, true}) {
+        const Route r = cellRoute(ctx, cells[ci], angle, first_y, top == 1, right);
+        if (r.points.size() < 2) continue;  // a sliver without length
+        const double cost = obj == Objective::Length ? r.length() : scorer.energy(r);
+        if (!std::isfinite(cost)) continue;
+        cand.push_back(r);
+        g.cluster.push_back(cluster);
+        g.cost.push_back(cost);
+        any = true;
+      }
+    }
+    cluster += any;
+  }
+  if (cand.empty()) return res;
+  res.cells = cluster;
+  return assemble(ctx, std::move(cand), std::move(g), res, scorer, stop, obj, exact_max_cells, also_length_order);
+}
+
+std::vector<AngleResult> searchAngles(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
+                                      const StopTable& stop, Objective obj, const PlannerSettings& ps, int* count,
+                                      std::vector<AngleScore>* scan) {
+  std::vector<double> coarse;
+  for (double a = 0.0; a < 180.0 - 1e-9; a += ps.coarse_step_deg) coarse.push_back(a * kDeg);
+  auto res = evaluateAngles(ctx, coarse, model, ss, stop, obj, ps.threads, ps.exact_max_cells);
+  *count += static_cast<int>(res.size());
+  std::sort(res.begin(), res.end(), [](const auto& a, const auto& b) { return a.score < b.score; });
+  std::vector<double> fine;
+  for (size_t k = 0; k < std::min<size_t>(2, res.size()); ++k) {
+    if (!std::isfinite(res[k].score)) continue;
+    for (double da = -ps.coarse_step_deg + ps.fine_step_deg; da < ps.coarse_step_deg - 1e-9; da += ps.fine_step_deg)
+      if (std::abs(da) > 1e-9) fine.push_back(res[k].angle + da * kDeg);
+  }
+  auto more = evaluateAngles(ctx, fine, model, ss, stop, obj, ps.threads, ps.exact_max_cells);
+  *count += static_cast<int>(more.size());
+  if (scan) {
+    for (const auto* list : {&res, &more})
+      for (const auto& r : *list) scan->push_back({normDeg(r.angle), r.score});
+    std::sort(scan->begin(), scan->end(), [](const auto& a, const auto& b) { return a.sweep_angle_deg < b.sweep_angle_deg; });
+  }
+  for (auto& r : more) res.push_back(std::move(r));
+  std::stable_sort(res.begin(), res.end(), [](const auto& a, const auto& b) { return a.score < b.score; });
+  return res;
+}
+
+PlanCandidate bestAnglePlan(const Context& ctx, const std::vector<AngleResult>& ranked, const energy::EnergyModel& model,
+                            const SpeedSettings& ss, RouteScorer& scorer, const StopTable& stop,
+                            const PlannerSettings& ps, const std::vector<geometry::PolygonWithHoles>& free) {
+  // The search ranks angles by the order search's estimate; the few best are flown in full (with
+  // the coverage check, which may take arcs back) and the cheapest that keeps coverage is kept.
+  // Re-assembled with the shortest order as a second choice (see assemble()), on ps.threads workers.
+  size_t finals = 0;
+  while (finals < std::min(kFinishBest, ranked.size()) && std::isfinite(ranked[finals].score)) ++finals;
+  std::vector<PlanCandidate> finished(finals);
+  std::vector<AngleResult> flown_from(finals);
+  const int nt = std::max(1, std::min<int>(ps.threads, static_cast<int>(finals)));
+  onWorkers(nt, [&](int t) {
+    RouteScorer local(model, ss);
+    for (size_t k = t; k < finals; k += nt) {
+      const AngleResult both =
+          evaluateAngle(ctx, ranked[k].angle, local, stop, Objective::Energy, ps.exact_max_cells, true);
+      flown_from[k] = both.score < ranked[k].score ? both : ranked[k];
+      finished[k] = flyUnverified(local, flown_from[k], "boustrophedon");
+    }
+  });
+  // The exact coverage check (CGAL Booleans) costs as much as flying a route, so the finalists are
+  // checked lazily, cheapest first: once one keeps coverage, a finalist whose widest-arc energy is
+  // already higher cannot win (narrower arcs only take its energy up, not down).
+  std::vector<size_t> by_energy(finals);
+  for (size_t k = 0; k < finals; ++k) by_energy[k] = k;
+  std::sort(by_energy.begin(), by_energy.end(),
+            [&](size_t a, size_t b) { return finished[a].flown.energy < finished[b].flown.energy; });
+  PlanCandidate plan;
+  for (size_t k : by_energy) {
+    auto& c = finished[k];
+    if (!c.valid) continue;
+    if (plan.valid && plan.coverage_pct >= kMinCoveragePct && c.flown.energy >= plan.flown.energy) break;
+    verify(free, ctx.problem->footprint, scorer, flown_from[k], c);
+    if (better(c, plan)) plan = std::move(c);
+  }
+  return plan;
+}
+
+}  // namespace wattswath::planner::detail
