@@ -22,63 +22,19 @@
 
 #include <gtest/gtest.h>
 
+#include "bad_corpus.hpp"
 #include "test_util.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using wattswath::test::Case;
 using wattswath::test::fingerprint;
+using wattswath::test::loadCases;
 using wattswath::test::Outcome;
 using wattswath::test::readAll;
 using wattswath::test::runCli;
 using wattswath::test::sourcePath;
-
-/// One row of EXPECTED.tsv: the input, the command that reads it, what stderr must contain.
-struct Case {
-  std::string file;                     ///< file name under tests/data/bad/
-  std::string command;                  ///< wattswath arguments; {} is replaced by the file's path
-  std::vector<std::string> substrings;  ///< each must appear in stderr
-  int line = 0;                         ///< line of EXPECTED.tsv (for messages)
-};
-
-std::vector<std::string> split(const std::string& s, const std::string& sep) {
-  std::vector<std::string> out;
-  size_t pos = 0;
-  while (true) {
-    const size_t at = s.find(sep, pos);
-    out.push_back(s.substr(pos, at == std::string::npos ? std::string::npos : at - pos));
-    if (at == std::string::npos) break;
-    pos = at + sep.size();
-  }
-  return out;
-}
-
-std::string trimmed(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
-
-std::vector<Case> loadCases() {
-  std::vector<Case> out;
-  std::ifstream in(sourcePath("tests/data/bad/EXPECTED.tsv"));
-  std::string line;
-  int ln = 0;
-  while (std::getline(in, line)) {
-    ++ln;
-    if (trimmed(line).empty() || line[0] == '#') continue;
-    const auto cols = split(line, "\t");
-    Case c;
-    c.line = ln;
-    c.file = cols.size() > 0 ? trimmed(cols[0]) : "";
-    c.command = cols.size() > 1 ? trimmed(cols[1]) : "";
-    if (cols.size() > 2)
-      for (const auto& s : split(cols[2], "|"))
-        if (!trimmed(s).empty()) c.substrings.push_back(trimmed(s));
-    out.push_back(c);
-  }
-  return out;
-}
 
 std::vector<std::string> argsOf(const std::string& command, const std::string& file) {
   std::vector<std::string> args;
@@ -92,8 +48,6 @@ std::vector<std::string> argsOf(const std::string& command, const std::string& f
   return args;
 }
 
-/// Prints a case as its file and command (instead of gtest's byte dump).
-void PrintTo(const Case& c, std::ostream* os) { *os << c.file << " (EXPECTED.tsv:" << c.line << ")"; }
 
 class BadInput : public ::testing::TestWithParam<Case> {};
 
@@ -130,10 +84,11 @@ TEST(BadInputCorpus, EveryFileHasAnExpectation) {
   std::set<std::string> listed;
   for (const auto& c : loadCases()) listed.insert(c.file);
   ASSERT_GT(listed.size(), 40u);
+  for (const auto& c : loadCases("LIBRARY_EXPECTED.tsv")) listed.insert(c.file);
   for (const auto& e : fs::directory_iterator(sourcePath("tests/data/bad"))) {
     const std::string n = e.path().filename().string();
-    if (n == "EXPECTED.tsv" || n == "README.md") continue;
-    EXPECT_TRUE(listed.count(n)) << "tests/data/bad/" << n << " has no row in EXPECTED.tsv";
+    if (n == "EXPECTED.tsv" || n == "LIBRARY_EXPECTED.tsv" || n == "README.md") continue;
+    EXPECT_TRUE(listed.count(n)) << "tests/data/bad/" << n << " has no row in EXPECTED.tsv or LIBRARY_EXPECTED.tsv";
   }
 }
 

@@ -212,9 +212,9 @@ std::vector<std::string> checkQgcPlan(const std::string& json_text) {
       const int f = mi["firmwareType"];
       if (f != 0 && f != 3 && f != 12) problems.push_back("mission: firmwareType " + std::to_string(f) + " unknown");
     }
-    need(mi, "mission", "vehicleType", vt::number_integer);
-    need(mi, "mission", "cruiseSpeed", vt::number_float);
-    need(mi, "mission", "hoverSpeed", vt::number_float);
+    // Optional in QGC's loader (MissionController::_loadJsonMissionFileV2), numbers when present.
+    for (const char* k : {"vehicleType", "cruiseSpeed", "hoverSpeed"})
+      if (mi.contains(k)) need(mi, "mission", k, std::string(k) == "vehicleType" ? vt::number_integer : vt::number_float);
     if (need(mi, "mission", "plannedHomePosition", vt::array) && mi["plannedHomePosition"].size() != 3)
       problems.push_back("mission: plannedHomePosition must be [lat, lon, alt]");
     if (need(mi, "mission", "items", vt::array)) {

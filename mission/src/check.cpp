@@ -1,0 +1,241 @@
+// Checks of a mission read from a file (commands, frames, fields, distance from home, DO_JUMP) and
+// the unrolling of its DO_JUMP loops in ArduPilot's order (AP_Mission::get_next_cmd).
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include "files_internal.hpp"
+#include "wattswath/geometry/frame.hpp"
+
+namespace wattswath::mission {
+namespace detail {
+
+void fail(const std::string& where, const std::string& what) { throw MissionError(where + ": " + what); }
+
+std::string numberText(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string withoutBom(const std::string& text) {
+  return text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text;
+}
+
+void checkHomePoint(const geometry::GeoPoint& p, const std::string& where) {
+  if (!(std::isfinite(p.lat_deg) && p.lat_deg >= -90.0 && p.lat_deg <= 90.0))
+    fail(where, "home latitude = " + numberText(p.lat_deg) + ", expected a latitude in [-90, 90] deg");
+  if (!(std::isfinite(p.lon_deg) && p.lon_deg >= -180.0 && p.lon_deg <= 180.0))
+    fail(where, "home longitude = " + numberText(p.lon_deg) + ", expected a longitude in [-180, 180] deg");
+  if (!std::isfinite(p.alt_m)) fail(where, "home altitude = " + numberText(p.alt_m) + ", expected a finite altitude [m AMSL]");
+}
+
+}  // namespace detail
+
+namespace {
+using detail::fail;
+using detail::numberText;
+
+constexpr int kMaxJumpRepeat = 1000;  // DO_JUMP repeat counts accepted, [0, kMaxJumpRepeat]
+
+/// "WHERE: NAV_WAYPOINT FIELD = VALUE, expected EXPECTED".
+[[noreturn]] void badField(const MissionItem& it, const std::string& field, double v, const std::string& expected) {
+  fail(it.where, commandName(it.command) + " " + field + " = " + numberText(v) + ", expected " + expected);
+}
+
+void atLeastZero(const MissionItem& it, double v, const std::string& field, const std::string& what) {
+  if (!(std::isfinite(v) && v >= 0.0)) badField(it, field, v, what);
+}
+
+void checkFrame(const MissionItem& it) {
+  const int f = it.frame;
+  const bool global = f == 0 || f == 3 || f == 10 || f == 5 || f == 6 || f == 11;
+  if (isPositional(it.command) && !global) {
+    fail(it.where, commandName(it.command) + " frame = " + std::to_string(f) +
+                       ", expected a global frame for a position: 0 (absolute), 3 (relative to home), 10 (terrain) "
+                       "or their _INT variants 5, 6, 11");
+  }
+  if (!global && f != 2) {
+    fail(it.where, commandName(it.command) + " frame = " + std::to_string(f) +
+                       ", expected a mission frame: 0, 3, 10 (or 5, 6, 11), or 2 for a command without a position");
+  }
+}
+
+void checkPosition(const MissionItem& it) {
+  if (!isPositional(it.command)) return;
+  // Take-off and land may leave lat/lon empty (NaN in a .plan) or 0, 0: "where the vehicle is".
+  const bool inPlace = it.command == static_cast<int>(Command::NavTakeoff) || it.command == static_cast<int>(Command::NavLand);
+  const bool unset = std::isnan(it.lat_deg) && std::isnan(it.lon_deg);
+  if (!(inPlace && unset)) {
+    if (!(std::isfinite(it.lat_deg) && it.lat_deg >= -90.0 && it.lat_deg <= 90.0))
+      badField(it, "latitude", it.lat_deg, "a latitude in [-90, 90] deg");
+    if (!(std::isfinite(it.lon_deg) && it.lon_deg >= -180.0 && it.lon_deg <= 180.0))
+      badField(it, "longitude", it.lon_deg, "a longitude in [-180, 180] deg");
+  }
+  if (it.command != static_cast<int>(Command::NavLand) && !std::isfinite(it.alt_m))
+    badField(it, "altitude", it.alt_m, "a finite altitude [m]");
+}
+
+void checkSpeed(const MissionItem& it) {
+  const double type = it.param[0], v = it.param[1];
+  if (!(type == 0.0 || type == 1.0 || type == 2.0 || type == 3.0))
+    badField(it, "param1 (speed type)", type, "0 (airspeed), 1 (ground speed), 2 (climb) or 3 (descent)");
+  if (v == -1.0) return;  // no change
+  if (!(std::isfinite(v) && v > 0.0)) badField(it, "param2 (speed)", v, "a speed > 0 m/s, or -1 for no change");
+}
+
+void checkJump(const MissionItem& it) {
+  const double target = it.param[0], repeat = it.param[1];
+  if (!(std::isfinite(target) && target >= 1.0 && target == std::floor(target) && target <= 65535.0))
+    badField(it, "param1 (target item)", target, "an item number >= 1");
+  if (repeat == -1.0)
+    badField(it, "param2 (repeat count)", repeat, "a repeat count in [0, 1000] (-1 repeats forever: the mission never ends)");
+  if (!(std::isfinite(repeat) && repeat >= 0.0 && repeat <= kMaxJumpRepeat && repeat == std::floor(repeat)))
+    badField(it, "param2 (repeat count)", repeat, "a whole repeat count in [0, 1000]");
+}
+
+void checkParams(const MissionItem& it) {
+  switch (static_cast<Command>(it.command)) {
+    case Command::NavWaypoint:
+    case Command::NavSplineWaypoint:
+      return atLeastZero(it, it.param[0], "param1 (hold time)", "a hold time >= 0 s");
+    case Command::NavLoiterTime:
+      return atLeastZero(it, it.param[0], "param1 (loiter time)", "a time >= 0 s");
+    case Command::NavDelay:
+      return atLeastZero(it, it.param[0], "param1 (delay)", "a delay >= 0 s (time-of-day delays, param1 = -1, are not supported)");
+    case Command::ConditionDelay:
+      return atLeastZero(it, it.param[0], "param1 (delay)", "a delay >= 0 s");
+    case Command::ConditionYaw:
+      if (!std::isfinite(it.param[0])) badField(it, "param1 (angle)", it.param[0], "a heading [deg]");
+      return;
+    case Command::DoChangeSpeed:
+      return checkSpeed(it);
+    case Command::DoSetCamTriggDist:
+      return atLeastZero(it, it.param[0], "param1 (distance)", "a trigger distance >= 0 m");
+    case Command::DoJump:
+      return checkJump(it);
+    default:
+      return;
+  }
+}
+
+/// Drops (lenient) or rejects the items whose command is not supported.
+void checkCommands(Mission& m, const ReadOptions& o) {
+  std::vector<MissionItem> kept;
+  for (auto& it : m.items) {
+    if (isSupportedCommand(it.command)) {
+      kept.push_back(std::move(it));
+      continue;
+    }
+    const std::string what = "command = " + std::to_string(it.command) + " (" + commandName(it.command) +
+                             "), expected a supported command (docs/missions.md)";
+    if (!o.lenient) fail(it.where, what + "; use --lenient to skip it");
+    m.warnings.push_back(it.where + ": " + what + "; skipped (--lenient)");
+  }
+  m.items = std::move(kept);
+}
+
+void checkHome(Mission& m) {
+  if (m.home_known) return detail::checkHomePoint(m.home, m.source);
+  for (const auto& it : m.items) {
+    if (!hasPosition(it)) continue;
+    m.home = {it.lat_deg, it.lon_deg, 0.0};
+    m.warnings.push_back(m.source + ": no home position; the first position (" + it.where +
+                         ") is used as home, at altitude 0 m");
+    return;
+  }
+}
+
+void checkDistances(const Mission& m, const ReadOptions& o) {
+  bool any = false;
+  for (const auto& it : m.items) any = any || hasPosition(it);
+  if (!any) return;
+  const geometry::LocalFrame frame(m.home);
+  for (const auto& it : m.items) {
+    if (!hasPosition(it)) continue;
+    const double d = frame.toLocal(it.lat_deg, it.lon_deg).norm();
+    if (d > o.max_distance_m) {
+      fail(it.where, commandName(it.command) + " at (" + numberText(it.lat_deg) + ", " + numberText(it.lon_deg) +
+                         ") is " + numberText(std::round(d) / 1000.0) + " km from home (" + numberText(m.home.lat_deg) +
+                         ", " + numberText(m.home.lon_deg) + "), expected at most " +
+                         numberText(o.max_distance_m / 1000.0) + " km (ReadOptions::max_distance_m)");
+    }
+  }
+}
+
+void validateOptions(const ReadOptions& o) {
+  if (!(o.max_distance_m > 0.0 && o.max_distance_m <= 2e7))
+    throw std::invalid_argument("ReadOptions::max_distance_m = " + numberText(o.max_distance_m) + ", expected (0, 2e7] m");
+  if (!(o.max_unrolled_items >= 1 && o.max_unrolled_items <= 100000000))
+    throw std::invalid_argument("ReadOptions::max_unrolled_items = " + std::to_string(o.max_unrolled_items) +
+                                ", expected [1, 1e8]");
+}
+
+/// Index in m.items where a jump to item `target` lands: the first item numbered `target` or later
+/// (later when lenient reading dropped the target itself).
+std::size_t jumpIndex(const Mission& m, const MissionItem& jump) {
+  const double target = jump.param[0];
+  for (std::size_t k = 0; k < m.items.size(); ++k)
+    if (m.items[k].seq >= target) return k;
+  badField(jump, "param1 (target item)", target,
+           "an item of the mission (the last is " + std::to_string(m.items.empty() ? 0 : m.items.back().seq) + ")");
+}
+
+[[noreturn]] void tooLong(const Mission& m, std::size_t last_jump, std::size_t limit) {
+  const std::string most = ", expected at most " + std::to_string(limit) + " (ReadOptions::max_unrolled_items)";
+  if (last_jump >= m.items.size()) fail(m.source, "the mission has more than " + std::to_string(limit) + " items" + most);
+  const MissionItem& j = m.items[last_jump];
+  fail(j.where, "DO_JUMP to item " + numberText(j.param[0]) + " repeated " + numberText(j.param[1]) +
+                    " times: the loops unroll to more than " + std::to_string(limit) + " items" + most +
+                    "; lower the repeat counts");
+}
+
+}  // namespace
+
+void checkMission(Mission& m, const ReadOptions& o) {
+  validateOptions(o);
+  checkCommands(m, o);
+  for (const auto& it : m.items) {
+    checkFrame(it);
+    checkPosition(it);
+    checkParams(it);
+  }
+  checkHome(m);
+  checkDistances(m, o);
+  unrollJumps(m, o);
+}
+
+std::vector<MissionItem> unrollJumps(const Mission& m, const ReadOptions& o) {
+  validateOptions(o);
+  const std::size_t n = m.items.size();
+  std::vector<std::size_t> target(n, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (m.items[k].command != static_cast<int>(Command::DoJump)) continue;
+    checkJump(m.items[k]);
+    target[k] = jumpIndex(m, m.items[k]);
+  }
+  std::vector<int> runs(n, 0);
+  std::vector<MissionItem> out;
+  std::size_t last_jump = n;  // the DO_JUMP taken last, named when the loops grow too long
+  for (std::size_t k = 0; k < n;) {
+    const MissionItem& it = m.items[k];
+    if (it.command != static_cast<int>(Command::DoJump)) {
+      out.push_back(it);
+      ++k;
+    } else if (runs[k] < static_cast<int>(it.param[1])) {
+      ++runs[k];
+      last_jump = k;
+      k = target[k];
+    } else {
+      ++k;
+    }
+    if (out.size() > o.max_unrolled_items) tooLong(m, last_jump, o.max_unrolled_items);
+  }
+  return out;
+}
+
+}  // namespace wattswath::mission

@@ -1,0 +1,229 @@
+// Mission files in: QGroundControl .plan and QGC WPL 110 .waypoints as QGC, Mission Planner and
+// pymavlink write them, the shared real and SITL missions, and the malformed-mission corpus.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "bad_corpus.hpp"
+#include "test_util.hpp"
+#include "wattswath/mission/files.hpp"
+
+using namespace wattswath::mission;
+using wattswath::test::readAll;
+using wattswath::test::sourcePath;
+
+namespace {
+
+/// The error message `read` throws (MissionError), or "" when it does not throw.
+template <typename F>
+std::string errorOf(F read) {
+  try {
+    read();
+  } catch (const MissionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string kHome = "0\t1\t0\t16\t0\t0\t0\t0\t43.7160040\t10.4613040\t7.15\t1\n";
+const std::string kTakeoff = "1\t0\t3\t22\t0\t0\t0\t0\t43.7160040\t10.4613040\t10\t1\n";
+
+}  // namespace
+
+TEST(MissionFiles, QgcSurveyPlanReadsItsStoredItems) {
+  const Mission m = readMission(sourcePath("tests/data/good/mission_survey.plan"));
+  EXPECT_EQ(m.format, "plan");
+  EXPECT_TRUE(m.home_known);
+  EXPECT_DOUBLE_EQ(m.home.lat_deg, 43.716004);
+  EXPECT_DOUBLE_EQ(m.home.alt_m, 7.2);
+  EXPECT_EQ(m.firmware_type, 3);
+  EXPECT_EQ(m.vehicle_type, 2);
+  EXPECT_DOUBLE_EQ(m.plan_cruise_speed_mps, 15.0);  // an integer in the file
+  EXPECT_DOUBLE_EQ(m.plan_hover_speed_mps, 5.5);
+  // take-off, speed, the survey's 10 stored items (8 waypoints, trigger on and off), return
+  ASSERT_EQ(m.items.size(), 13u);
+  EXPECT_EQ(m.items[0].command, 22);
+  EXPECT_TRUE(std::isnan(m.items[0].param[3]));  // null in the file
+  EXPECT_EQ(m.items[1].command, 178);
+  EXPECT_EQ(m.items[3].command, 206);
+  EXPECT_DOUBLE_EQ(m.items[3].param[0], 25.0);
+  EXPECT_EQ(m.items[12].command, 20);
+  for (size_t i = 0; i < m.items.size(); ++i) EXPECT_EQ(m.items[i].seq, static_cast<int>(i) + 1);
+  EXPECT_NE(m.items[5].where.find("mission.items[2].TransectStyleComplexItem.Items[3]"), std::string::npos) << m.items[5].where;
+  EXPECT_TRUE(m.warnings.empty());
+}
+
+TEST(MissionFiles, CorridorScanAndOldCoordinateItemsRead) {
+  const std::string plan = R"({"fileType": "Plan", "version": 1, "groundStation": "QGroundControl",
+    "mission": {"version": 2, "firmwareType": 12, "plannedHomePosition": [47.3977, 8.5456, 488],
+      "items": [
+        {"type": "SimpleItem", "command": 22, "frame": 3, "autoContinue": true, "doJumpId": 1,
+         "params": [15, 0, 0, null], "coordinate": [47.3977, 8.5456, 30]},
+        {"type": "ComplexItem", "complexItemType": "CorridorScan", "version": 2, "TransectStyleComplexItem": {"Items": [
+          {"type": "SimpleItem", "command": 16, "frame": 3, "autoContinue": true, "doJumpId": 2, "params": [0, 0, 0, null, 47.398, 8.546, 30]},
+          {"type": "SimpleItem", "command": 16, "frame": 3, "autoContinue": true, "doJumpId": 3, "params": [0, 0, 0, null, 47.399, 8.546, 30]}]}},
+        {"type": "SimpleItem", "command": 21, "frame": 3, "autoContinue": true, "doJumpId": 4, "params": [0, 0, 0, null, null, null, 0]}]},
+    "geoFence": {"version": 2, "circles": [], "polygons": []}, "rallyPoints": {"version": 2, "points": []}})";
+  const Mission m = parseQgcPlan(plan, "corridor.plan");
+  ASSERT_EQ(m.items.size(), 4u);
+  EXPECT_DOUBLE_EQ(m.items[0].alt_m, 30.0);  // params[4] + coordinate, converted as QGC does
+  EXPECT_EQ(m.firmware_type, 12);
+  EXPECT_DOUBLE_EQ(m.plan_cruise_speed_mps, 0.0);  // absent
+  EXPECT_EQ(m.items[2].seq, 3);
+  EXPECT_FALSE(hasPosition(m.items[3]));  // land in place: lat/lon null
+}
+
+TEST(MissionFiles, PlanDoJumpTargetIsTheDoJumpIdAndBecomesTheSeq) {
+  auto j = readAll(sourcePath("tests/data/good/mission_survey.plan"));
+  // Insert a DO_JUMP to doJumpId 2 (the speed change, item 2) before the return.
+  const std::string rtl = "\"command\": 20,";
+  const auto at = j.rfind("{", j.find(rtl));
+  j.insert(at, R"({"autoContinue": true, "command": 177, "doJumpId": 99, "frame": 2,
+                   "params": [2, 1, 0, 0, 0, 0, 0], "type": "SimpleItem"}, )");
+  const Mission m = parseQgcPlan(j, "jump.plan");
+  ASSERT_EQ(m.items[12].command, 177);
+  EXPECT_DOUBLE_EQ(m.items[12].param[0], 2.0);
+  EXPECT_EQ(unrollJumps(m).size(), 12u + 11u + 1u);  // 1..12, 2..12 once more, return (DO_JUMP left out)
+}
+
+TEST(MissionFiles, DecimalCommasInTabSeparatedLinesReadAsPoints) {
+  const std::string path = sourcePath("tests/data/good/mission_decimal_commas.waypoints");
+  const Mission m = readMission(path);  // Mission Planner in a comma locale: BOM, CR LF, tabs
+  std::string dots = readAll(path);
+  for (char& c : dots) c = c == ',' ? '.' : c;
+  const Mission d = parseQgcWpl(dots, "dots.waypoints");
+  EXPECT_EQ(m, d);
+  EXPECT_DOUBLE_EQ(m.home.alt_m, 7.15);
+  EXPECT_DOUBLE_EQ(m.items[1].param[1], 5.18);
+  EXPECT_DOUBLE_EQ(m.items[4].alt_m, 12.5);
+  // Space-separated: "43,7" could be two columns, so commas are refused there.
+  const std::string spaced = "QGC WPL 110\n0 1 0 16 0 0 0 0 43.716 10.461 7 1\n1 0 3 16 0 0 0 0 43,7161 10.4614 10 1\n";
+  EXPECT_NE(errorOf([&] { parseQgcWpl(spaced, "s.waypoints"); }).find("s.waypoints:3: latitude = \"43,7161\""), std::string::npos);
+  const std::string two = "QGC WPL 110\n" + kHome + "1\t0\t3\t16\t0\t0\t0\t0\t43,71,61\t10.4614\t10\t1\n";
+  EXPECT_NE(errorOf([&] { parseQgcWpl(two, "t.waypoints"); }).find("t.waypoints:3: latitude = \"43,71,61\", expected a number"),
+            std::string::npos);
+}
+
+TEST(MissionFiles, WaypointsAcceptSpacesCommentsBlankLinesAndCrLf) {
+  const std::string text = "QGC WPL 110\r\n# written by hand\r\n\r\n0 1 0 16 0 0 0 0 43.716004 10.461304 7.15 1\r\n"
+                           "1  0  3  22  0 0 0 0  43.716004  10.461304  10  1\r\n2\t0\t3\t16\t0\t0\t0\t0\t43.7161\t10.4614\t10\t1\r\n";
+  const Mission m = parseQgcWpl(text, "h.waypoints");
+  ASSERT_EQ(m.items.size(), 2u);
+  EXPECT_EQ(m.items[1].where, "h.waypoints:6");
+  EXPECT_TRUE(m.warnings.empty());
+}
+
+TEST(MissionFiles, HomeRowVariants) {
+  // Home row in frame 3: its altitude is not AMSL.
+  Mission m = parseQgcWpl("QGC WPL 110\n0\t1\t3\t16\t0\t0\t0\t0\t43.716\t10.461\t5\t1\n" + kTakeoff, "f3.waypoints");
+  EXPECT_TRUE(m.home_known);
+  EXPECT_DOUBLE_EQ(m.home.alt_m, 0.0);
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("f3.waypoints:2: home row frame = 3"), std::string::npos) << m.warnings[0];
+  // Home (0, 0): the first position is used.
+  m = parseQgcWpl("QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t0\t0\t0\t1\n" + kTakeoff, "zero.waypoints");
+  EXPECT_FALSE(m.home_known);
+  EXPECT_DOUBLE_EQ(m.home.lat_deg, 43.716004);
+  // No home row (Mission Planner: a first row numbered 1): every row is an item.
+  m = parseQgcWpl("QGC WPL 110\n" + kTakeoff + "2\t0\t3\t16\t0\t0\t0\t0\t43.7161\t10.4614\t10\t1\n", "nohome.waypoints");
+  EXPECT_FALSE(m.home_known);
+  ASSERT_EQ(m.items.size(), 2u);
+  EXPECT_EQ(m.items[1].seq, 2);
+}
+
+TEST(MissionFiles, HeaderAndFormatErrorsNameTheFile) {
+  EXPECT_NE(errorOf([] { parseQgcWpl("QGC WPL 120\n", "v.waypoints"); }).find("v.waypoints:1: QGC WPL version 120 is not supported"),
+            std::string::npos);
+  EXPECT_NE(errorOf([] { parseQgcWpl("", "e.waypoints"); }).find("e.waypoints: empty file"), std::string::npos);
+  EXPECT_NE(errorOf([] { parseQgcWpl("QGC WPL 110\n" + kHome, "h.waypoints"); }).find("no mission items"), std::string::npos);
+  const auto dir = std::filesystem::temp_directory_path() / "wattswath_test_mission_files";
+  std::filesystem::create_directories(dir);
+  const std::string wrong = (dir / "looks_like_wpl.plan").string();
+  std::ofstream(wrong) << "QGC WPL 110\n" << kHome << kTakeoff;
+  EXPECT_NE(errorOf([&] { readMission(wrong); }).find("the extension says .plan (JSON) but the content looks like QGC WPL 110"),
+            std::string::npos);
+  const std::string unknown = (dir / "mission.csv").string();
+  std::ofstream(unknown) << "a,b\n";
+  EXPECT_NE(errorOf([&] { readMission(unknown); }).find("unknown mission format"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readMission((dir / "missing.plan").string()); }).find("cannot open the file"), std::string::npos);
+}
+
+TEST(MissionFiles, UnknownCommandIsAnErrorOrWithLenientAWarningAndDropped) {
+  const std::string path = sourcePath("tests/data/bad/mission_unknown_command.waypoints");
+  EXPECT_NE(errorOf([&] { readMission(path); }).find("use --lenient to skip it"), std::string::npos);
+  ReadOptions o;
+  o.lenient = true;
+  const Mission m = readMission(path, o);
+  ASSERT_EQ(m.items.size(), 3u);  // take-off, waypoint, (VTOL take-off dropped), return
+  EXPECT_EQ(m.items[2].seq, 4);   // the autopilot's numbering is kept
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("mission_unknown_command.waypoints:5: command = 84 (NAV_VTOL_TAKEOFF)"), std::string::npos);
+  EXPECT_NE(m.warnings[0].find("skipped (--lenient)"), std::string::npos);
+}
+
+TEST(MissionFiles, FarWaypointLimitIsAnOption) {
+  const std::string path = sourcePath("tests/data/bad/mission_far_waypoint.waypoints");
+  ReadOptions o;
+  o.max_distance_m = 600e3;
+  EXPECT_EQ(readMission(path, o).items.size(), 4u);
+  o.max_distance_m = 5.0;
+  const std::string e = errorOf([&] { readMission(path, o); });
+  EXPECT_NE(e.find("mission_far_waypoint.waypoints:4: NAV_WAYPOINT at (43.7161, 10.4614) is 0.013 km from home"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected at most 0.005 km"), std::string::npos) << e;
+  o.max_distance_m = -1.0;
+  EXPECT_THROW(readMission(path, o), std::invalid_argument);
+}
+
+// Each malformed mission of tests/data/bad/ (LIBRARY_EXPECTED.tsv) is refused with an error naming
+// the file, the line or item, the field, the value and what was expected.
+TEST(MissionFiles, MalformedCorpusGivesClearErrors) {
+  int n = 0;
+  for (const auto& c : wattswath::test::loadCases("LIBRARY_EXPECTED.tsv")) {
+    if (c.command != "mission") continue;
+    ++n;
+    const std::string rel = "tests/data/bad/" + c.file;
+    const std::string e = errorOf([&] { readMission(sourcePath(rel)); });
+    ASSERT_FALSE(e.empty()) << c.file << " was accepted";
+    for (const auto& s : c.substrings) EXPECT_NE(e.find(s), std::string::npos) << c.file << ": lacks '" << s << "' in\n" << e;
+  }
+  EXPECT_GE(n, 20);
+}
+
+#ifdef WATTSWATH_TEST_SHARED_DATA
+// The missions of the real IRIS+ flights (rebuilt from their logs) and of the SITL flights read
+// without warnings; the SITL ones item for item as their items.csv lists them.
+TEST(MissionFilesShared, IrisAndSitlMissionsRead) {
+  namespace fs = std::filesystem;
+  int files = 0;
+  for (const char* dir : {"iris-flights", "sitl"}) {
+    for (const auto& e : fs::directory_iterator(wattswath::test::sharedData(dir))) {
+      const std::string name = e.path().filename().string();
+      if (e.path().extension() != ".waypoints" || name.rfind("plan__", 0) == 0) continue;
+      ++files;
+      const Mission m = readMission(e.path().string());
+      EXPECT_TRUE(m.home_known) << name;
+      EXPECT_TRUE(m.warnings.empty()) << name << ": " << m.warnings.front();
+      ASSERT_GE(m.items.size(), 5u) << name;
+      EXPECT_EQ(m.items.front().command, static_cast<int>(Command::NavTakeoff)) << name;
+      EXPECT_EQ(m.items.back().command, static_cast<int>(Command::NavReturnToLaunch)) << name;
+      EXPECT_EQ(unrollJumps(m).size(), m.items.size()) << name;
+      const std::string csv = e.path().string().substr(0, e.path().string().size() - 10) + ".items.csv";
+      if (!fs::exists(csv)) continue;
+      std::istringstream in(readAll(csv));
+      std::string row;
+      std::getline(in, row);
+      while (std::getline(in, row)) {
+        const int item = std::atoi(row.c_str());
+        if (item < 1) continue;  // "landed"
+        ASSERT_LE(item, static_cast<int>(m.items.size())) << name;
+        EXPECT_EQ(m.items[item - 1].seq, item);
+        EXPECT_EQ(commandName(m.items[item - 1].command), row.substr(row.find(',') + 1, row.find(',', row.find(',') + 1) - row.find(',') - 1))
+            << name << " item " << item;
+      }
+    }
+  }
+  EXPECT_EQ(files, 6);
+}
+#endif
