@@ -26,13 +26,14 @@ declare -A seeds=(
   [fuzz_area]="data/areas/* tests/data/bad/*.geojson tests/data/bad/*.kml tests/data/bad/*.wkt tests/data/bad/*.waypoints"
   [fuzz_dataflash]="tests/data/bad/*.bin"
   [fuzz_ulog]="tests/data/bad/*.ulg"
+  [fuzz_mission]="tests/data/good/*.plan tests/data/good/*.waypoints tests/data/bad/mission_*"
 )
 # target -> inputs per run for FUZZ_RUNS=ci: about 20 s each on the 2-core build machine
 # (docs/robustness.md, "CI cost"); the rates differ by a factor 10 between readers.
-declare -A ci_runs=([fuzz_vehicle_json]=10000 [fuzz_csv_log]=300000 [fuzz_waypoint_path]=600000 [fuzz_area]=80000 [fuzz_dataflash]=6000 [fuzz_ulog]=8000)
+declare -A ci_runs=([fuzz_vehicle_json]=10000 [fuzz_csv_log]=300000 [fuzz_waypoint_path]=600000 [fuzz_area]=80000 [fuzz_dataflash]=6000 [fuzz_ulog]=8000 [fuzz_mission]=60000)
 # target -> extension of the real logs in ../shared/data/autopilot-logs
 declare -A real_logs=([fuzz_dataflash]=bin [fuzz_ulog]=ulg)
-all_targets=(fuzz_vehicle_json fuzz_csv_log fuzz_waypoint_path fuzz_area fuzz_dataflash fuzz_ulog)
+all_targets=(fuzz_vehicle_json fuzz_csv_log fuzz_waypoint_path fuzz_area fuzz_dataflash fuzz_ulog fuzz_mission)
 shared="../shared/data/autopilot-logs"
 read -r -a targets <<< "${FUZZ_TARGETS:-${all_targets[*]}}"
 

@@ -136,6 +136,10 @@ void checkCommands(Mission& m, const ReadOptions& o) {
     if (!o.lenient) fail(it.where, what + "; use --lenient to skip it");
     m.warnings.push_back(it.where + ": " + what + "; skipped (--lenient)");
   }
+  if (m.items.empty()) fail(m.source, "no mission items, expected at least one");
+  if (kept.empty())
+    fail(m.source, "all " + std::to_string(m.items.size()) + " items have unsupported commands (skipped with --lenient), "
+                   "expected at least one supported item");
   m.items = std::move(kept);
 }
 

@@ -167,7 +167,9 @@ void readHome(const json& mj, const std::string& where, Mission& m) {
             realOf(h[2], where, "plannedHomePosition[2]", false)};
   detail::checkHomePoint(m.home, where + ".plannedHomePosition");
   m.home_known = !(m.home.lat_deg == 0.0 && m.home.lon_deg == 0.0);
-  if (!m.home_known) m.warnings.push_back(where + ".plannedHomePosition: no position (0, 0)");
+  if (m.home_known) return;
+  m.home = {};  // no home: taken from the first position (checkMission), as in a .waypoints file
+  m.warnings.push_back(where + ".plannedHomePosition: no position (0, 0)");
 }
 
 void readMissionHeader(const json& mj, const std::string& where, Mission& m) {

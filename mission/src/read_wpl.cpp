@@ -65,7 +65,7 @@ double realField(const std::string& field, bool commas_ok, const std::string& wh
   double v = 0.0;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   if (r.ec == std::errc::result_out_of_range || std::isinf(v))
-    fail(where, std::string(column) + " = \"" + field + "\", expected a finite number");
+    fail(where, std::string(column) + " = \"" + field + "\", expected a finite number in the range of a double");
   if (r.ec != std::errc() || r.ptr != s.data() + s.size())
     fail(where, std::string(column) + " = \"" + field + "\", expected a number");
   return v;

@@ -163,6 +163,16 @@ TEST(MissionFiles, UnknownCommandIsAnErrorOrWithLenientAWarningAndDropped) {
   EXPECT_NE(m.warnings[0].find("skipped (--lenient)"), std::string::npos);
 }
 
+// Found by fuzz_mission: a lenient read that skipped every item returned an empty mission.
+TEST(MissionFiles, LenientReadOfOnlyUnsupportedItemsIsAnError) {
+  ReadOptions o;
+  o.lenient = true;
+  const std::string text = "QGC WPL 110\n" + kHome + "1\t0\t3\t23\t0\t0\t0\t0\t42\t89\t1\t1\n";
+  EXPECT_NE(errorOf([&] { parseQgcWpl(text, "only23.waypoints", o); })
+                .find("only23.waypoints: all 1 items have unsupported commands (skipped with --lenient), expected at least one"),
+            std::string::npos);
+}
+
 TEST(MissionFiles, FarWaypointLimitIsAnOption) {
   const std::string path = sourcePath("tests/data/bad/mission_far_waypoint.waypoints");
   ReadOptions o;
