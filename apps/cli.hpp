@@ -77,5 +77,7 @@ void registerVehicleCommands(CLI::App& app);   ///< vehicle params (cmd_vehicle.
 /// std::invalid_argument quoting the text otherwise.
 std::vector<double> parseSpeedList(const std::string& text);
 void registerCoverageCommand(CLI::App& app);   ///< coverage (cmd_coverage.cpp)
+void registerPredictCommand(CLI::App& app);    ///< predict (cmd_predict.cpp)
+void registerCalibrateCommand(CLI::App& app);  ///< calibrate (cmd_calibrate.cpp)
 
 }  // namespace wattswath::apps

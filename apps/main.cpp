@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   wattswath::apps::registerPlanCommand(app);
   wattswath::apps::registerEnduranceCommands(app);
   wattswath::apps::registerCoverageCommand(app);
+  wattswath::apps::registerPredictCommand(app);
+  wattswath::apps::registerCalibrateCommand(app);
   wattswath::apps::registerVehicleCommands(app);
   try {
     app.parse(argc, argv);

@@ -191,7 +191,7 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
       target = top;
     } else if (flownThrough(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : target;
-      const bool fast = st.kind != NavStep::Kind::LoiterTime && st.hold_s <= 0.0;
+      const bool fast = st.kind != NavStep::Kind::LoiterTime && st.hold_s <= 0.0 && !s.stop_at_waypoints;
       f.leg(target, to, speed, fast, FlightPhase::Mission, ki);
       rec.reached(ki);
       f.hold(to, st.hold_s, speed, FlightPhase::Mission, ki);

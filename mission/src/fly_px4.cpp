@@ -138,7 +138,7 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       const Eigen::Vector3d to = st.has_position ? st.target : f.p;
       const double rad = st.accept_radius_m > 0.0 ? st.accept_radius_m : P.acc_rad;
       double v_exit = 0.0;
-      const bool stop = st.hold_s > 0.0 || st.kind == NavStep::Kind::LoiterTime || k + 1 >= steps.size() ||
+      const bool stop = st.hold_s > 0.0 || s.stop_at_waypoints || st.kind == NavStep::Kind::LoiterTime || k + 1 >= steps.size() ||
                         !steps[k + 1].has_position || steps[k + 1].kind == NavStep::Kind::ReturnToLaunch;
       if (!stop) v_exit = std::min(cruise, cornerSpeed(f.p, to, steps[k + 1].target, P, rad));
       f.flyTo(to, cruise, v_exit, rad, FlightPhase::Mission, ki);

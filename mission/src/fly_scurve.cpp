@@ -176,13 +176,13 @@ LegSpec specOf(const NavStep& s, const Params& P, int k) {
 
 // The waypoints from step k on that the vehicle flies without stopping, up to the first stop.
 std::vector<LegSpec> chainFrom(const std::vector<NavStep>& steps, std::size_t k, const Eigen::Vector3d& here,
-                               const Params& P) {
+                               const Params& P, bool stop_all) {
   std::vector<LegSpec> legs;
   for (std::size_t j = k; j < steps.size() && flownThrough(steps[j]); ++j) {
     LegSpec spec = specOf(steps[j], P, static_cast<int>(j));
     if (!steps[j].has_position) spec.target = legs.empty() ? here : legs.back().target;
     const bool next_flown = j + 1 < steps.size() && flownThrough(steps[j + 1]) && steps[j + 1].has_position;
-    spec.fast = steps[j].kind != NavStep::Kind::LoiterTime && steps[j].hold_s <= 0.0 && next_flown;
+    spec.fast = steps[j].kind != NavStep::Kind::LoiterTime && steps[j].hold_s <= 0.0 && next_flown && !stop_all;
     legs.push_back(spec);
     if (!spec.fast) break;
   }
@@ -217,7 +217,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       here = flyChain(rec, {up}, here, P, FlightPhase::Takeoff, P.jerk_z);
       ++k;
     } else if (flownThrough(st)) {
-      const std::vector<LegSpec> legs = chainFrom(steps, k, here, P);
+      const std::vector<LegSpec> legs = chainFrom(steps, k, here, P, s.stop_at_waypoints);
       here = flyChain(rec, legs, here, P, phase, P.jerk);
       k += legs.size();
     } else if (st.kind == NavStep::Kind::Delay) {

@@ -82,6 +82,9 @@ struct FlightSettings {
   /// autopilot's documented spool time (ArduCopter MOT_SPOOL_TIME, PX4 COM_SPOOLUP_TIME)
   double takeoff_delay_s = -1.0;
   double landed_detect_s = 1.0;  ///< [s] from touch-down to "landed" (ArduCopter LAND_DETECTOR_TRIGGER_SEC)
+  /// Fly every waypoint as a stop (brake into it, start the next leg from rest) even without a hold
+  /// time: what some logged flights show where the firmware's rule is not known (calibration decides)
+  bool stop_at_waypoints = false;
 };
 
 /// Flies `steps` with the behaviour model of `autopilot`. Throws std::invalid_argument naming the

@@ -1,0 +1,120 @@
+// wattswath calibrate --vehicle V --log F --mission M [...] --out V2.json: fits the autopilot's
+// flight-behaviour parameters and the energy coefficients to logged flights of known missions
+// (calibration/mission_calibration.hpp) and writes the calibrated vehicle file.
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+#include "cli.hpp"
+#include "wattswath/calibration/mission_calibration.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/logs/autopilot_log.hpp"
+#include "wattswath/mission/files.hpp"
+
+namespace wattswath::apps {
+namespace {
+
+namespace cal = wattswath::calibration;
+namespace en = wattswath::energy;
+namespace ms = wattswath::mission;
+
+struct CalibrateOptions {
+  std::string vehicle, out, effects = "hover,kinetic,parasitic_drag,climb,translational_lift";
+  std::vector<std::string> logs, missions;
+  int evaluations = 150;
+  bool json = false, force = false, lenient = false, keep_energy = false;
+  logs::LogReadOptions read;
+};
+
+nlohmann::json comparisonJson(const cal::FlightComparison& c) {
+  auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+  return {{"flight", c.name},
+          {"time_error_pct", c.time_error_pct},
+          {"energy_error_pct", c.energy_error_pct},
+          {"leg_time_mape_pct", num(c.leg_time_mape_pct)},
+          {"legs_matched", c.legs_matched},
+          {"measured", {{"time_s", c.measured.total_s}, {"energy_j", c.measured.energy_j}, {"takeoff_s", num(c.measured.takeoff_s)},
+                        {"mission_s", num(c.measured.mission_s)}, {"return_s", num(c.measured.return_s)}}},
+          {"predicted", {{"time_s", c.predicted.total_s}, {"energy_j", c.predicted.energy_j}, {"takeoff_s", num(c.predicted.takeoff_s)},
+                         {"mission_s", num(c.predicted.mission_s)}, {"return_s", num(c.predicted.return_s)}}},
+          {"log_offset_m", {c.offset.x(), c.offset.y()}}};
+}
+
+void printComparisons(const char* title, const std::vector<cal::FlightComparison>& cs) {
+  std::cout << title << "\n" << std::fixed << std::setprecision(1);
+  for (const auto& c : cs) {
+    std::cout << "  " << c.name << ": time " << c.predicted.total_s << " s vs " << c.measured.total_s << " s measured ("
+              << std::showpos << c.time_error_pct << std::noshowpos << " %), energy " << c.predicted.energy_j / 3600.0 << " Wh vs "
+              << c.measured.energy_j / 3600.0 << " Wh (" << std::showpos << c.energy_error_pct << std::noshowpos
+              << " %), leg time MAPE " << c.leg_time_mape_pct << " % over " << c.legs_matched << " legs\n";
+  }
+}
+
+}  // namespace
+
+void registerCalibrateCommand(CLI::App& app) {
+  auto o = std::make_shared<CalibrateOptions>();
+  auto* cmd = app.add_subcommand("calibrate",
+                                 "Fit the autopilot's flight-behaviour parameters and the energy coefficients to logged "
+                                 "flights of known missions; write the calibrated vehicle file");
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--log", o->logs, "Flight log (.csv, .bin, .ulg) of a mission; repeat, paired with --mission in order")->required();
+  cmd->add_option("--mission", o->missions, "The mission (.plan or .waypoints) the log flew; one per --log")->required();
+  cmd->add_option("--out", o->out, "Calibrated vehicle file to write")->required();
+  cmd->add_option("--effects", o->effects, "Effects of the energy model to fit")->capture_default_str();
+  cmd->add_option("--evaluations", o->evaluations, "Simulated flights per parameter fit")->check(CLI::Range(10, 5000))->capture_default_str();
+  cmd->add_flag("--keep-energy", o->keep_energy, "Calibrate the flight behaviour only; keep the energy coefficients");
+  cmd->add_flag("--lenient-mission", o->lenient, "Skip unsupported mission commands with a warning");
+  addLogReadOptions(cmd, o->read);
+  addForceFlag(cmd, o->force);
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o] {
+    if (o->logs.size() != o->missions.size()) {
+      throw std::runtime_error("calibrate: " + std::to_string(o->logs.size()) + " --log but " + std::to_string(o->missions.size()) +
+                               " --mission; give one mission per log, in the same order");
+    }
+    std::vector<std::string> inputs = o->logs;
+    inputs.insert(inputs.end(), o->missions.begin(), o->missions.end());
+    inputs.push_back(o->vehicle);
+    checkWritable(o->out, o->force, inputs);
+    en::Vehicle v = en::loadVehicle(o->vehicle);
+    const en::EnergyModel model = en::buildModel(v, en::splitEffectList(o->effects));
+    const ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, o->vehicle);
+    std::vector<cal::MissionFlight> flights;
+    ms::ReadOptions ro;
+    ro.lenient = o->lenient;
+    for (std::size_t i = 0; i < o->logs.size(); ++i) {
+      progress("calibrate: reading " + o->logs[i] + " and " + o->missions[i]);
+      flights.push_back({o->logs[i], ms::readMission(o->missions[i], ro), logs::readFlightLog(o->logs[i], o->read)});
+    }
+    cal::CalibrationSettings cs;
+    cs.max_evaluations = o->evaluations;
+    cs.fit_energy = !o->keep_energy;
+    progress("calibrate: fitting " + std::string(ms::toString(ap.family)) + " parameters on " + std::to_string(flights.size()) +
+             " flight(s), up to " + std::to_string(o->evaluations) + " simulated flights");
+    const cal::CalibrationResult r = cal::calibrateMissions(flights, v, model, ap, cs);
+    v.autopilot_json = ms::autopilotToJson(r.autopilot);
+    v.extensions["calibration"] = cal::calibrationToJson(r);
+    writeTextFileAtomic(o->out, en::vehicleToJson(v));
+    progress("calibrate: wrote " + o->out);
+    if (o->json) {
+      nlohmann::json j;
+      j["out"] = o->out;
+      j["autopilot"] = nlohmann::json::parse(v.autopilot_json);
+      j["takeoff_delay_s"] = r.takeoff_delay_s;
+      j["fitted"] = r.fitted;
+      j["notes"] = r.notes;
+      for (const auto& c : r.before) j["before"].push_back(comparisonJson(c));
+      for (const auto& c : r.after) j["after"].push_back(comparisonJson(c));
+      printJson(j);
+      return;
+    }
+    printComparisons("before (firmware defaults / given parameters, vehicle physics):", r.before);
+    printComparisons("after calibration:", r.after);
+    std::cout << "fitted:\n";
+    for (const auto& f : r.fitted) std::cout << "  " << f << "\n";
+    for (const auto& n : r.notes) std::cout << "note: " << n << "\n";
+  });
+}
+
+}  // namespace wattswath::apps

@@ -1,0 +1,143 @@
+// wattswath predict MISSION --vehicle V: energy, time and battery of a mission file flown by the
+// vehicle's autopilot (mission/predict.hpp).
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "cli.hpp"
+#include "wattswath/calibration/mission_calibration.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/mission/files.hpp"
+#include "wattswath/mission/predict.hpp"
+
+namespace wattswath::apps {
+namespace {
+
+namespace en = wattswath::energy;
+namespace ms = wattswath::mission;
+
+struct PredictOptions {
+  std::string mission, vehicle, effects, samples_out;
+  double reserve_pct = 25.0;
+  bool json = false, lenient = false, force = false;
+};
+
+nlohmann::json totalsJson(const ms::Totals& t) {
+  return {{"energy_j", t.energy_j}, {"energy_wh", t.energy_j / 3600.0}, {"time_s", t.time_s}, {"distance_m", t.distance_m}};
+}
+
+std::string minutesSeconds(double s) {
+  std::ostringstream os;
+  const long whole = std::lround(s);
+  os << whole / 60 << ":" << std::setw(2) << std::setfill('0') << whole % 60;
+  return os.str();
+}
+
+nlohmann::json toJson(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap, const PredictOptions& o) {
+  nlohmann::json j;
+  j["mission"] = o.mission;
+  j["autopilot"] = {{"firmware", ap.firmware}, {"version", ap.version}, {"model", ms::toString(ap.family)},
+                    {"parameters_from_vehicle_file", ap.from_file}};
+  j["energy_j"] = p.total.energy_j;
+  j["energy_wh"] = p.total.energy_j / 3600.0;
+  j["time_s"] = p.total.time_s;
+  j["distance_m"] = p.total.distance_m;
+  for (int k = 0; k < ms::kFlightPhaseCount; ++k) j["phases"][ms::toString(static_cast<ms::FlightPhase>(k))] = totalsJson(p.phases[k]);
+  j["items"] = nlohmann::json::array();
+  for (const auto& it : p.items) {
+    nlohmann::json ji = totalsJson(it.totals);
+    ji["seq"] = it.seq;
+    ji["command"] = it.command;
+    ji["reached_s"] = std::isfinite(it.reached_s) ? nlohmann::json(it.reached_s) : nlohmann::json();
+    ji["completed_s"] = std::isfinite(it.completed_s) ? nlohmann::json(it.completed_s) : nlohmann::json();
+    j["items"].push_back(ji);
+  }
+  for (const auto& name : p.breakdown.effects) j["breakdown"][name] = p.breakdown.byEffect(name);
+  if (p.battery.known) {
+    j["battery"] = {{"known", true},
+                    {"usable_left_at_landing", p.battery.usable_left_end},
+                    {"reserve_fraction", p.battery.reserve_fraction},
+                    {"fits", p.battery.fits},
+                    {"depleted", p.battery.depleted},
+                    {"verdict", p.battery.verdict}};
+    if (p.battery.depleted) j["battery"]["depleted_at_s"] = p.battery.depleted_at_s;
+  } else {
+    j["battery"] = {{"known", false}, {"verdict", "The vehicle file has no battery: no state of charge can be given."}};
+  }
+  j["warnings"] = p.warnings;
+  return j;
+}
+
+void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap) {
+  std::cout << std::fixed << std::setprecision(1);
+  std::cout << "flown by " << ap.firmware << " " << ap.version << " (" << ms::toString(ap.family) << " model"
+            << (ap.from_file ? "" : ", firmware defaults: the vehicle file has no autopilot object") << ")\n";
+  std::cout << "total    " << minutesSeconds(p.total.time_s) << " min:s  " << p.total.energy_j / 3600.0 << " Wh  ("
+            << p.total.energy_j << " J)  " << p.total.distance_m << " m\n";
+  for (int k = 0; k < ms::kFlightPhaseCount; ++k) {
+    const auto& t = p.phases[k];
+    std::cout << "  " << std::left << std::setw(8) << ms::toString(static_cast<ms::FlightPhase>(k)) << std::right << " "
+              << minutesSeconds(t.time_s) << "  " << t.energy_j / 3600.0 << " Wh  " << t.distance_m << " m\n";
+  }
+  std::cout << "battery: " << (p.battery.known ? p.battery.verdict : "unknown (no battery in the vehicle file)") << "\n";
+  for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
+}
+
+std::string samplesCsv(const ms::MissionPrediction& p) {
+  std::ostringstream os;
+  os.precision(10);
+  os << "t_s,x_m,y_m,z_m,speed_mps,phase,seq\n";
+  for (const auto& s : p.flight.samples) {
+    const int seq = s.step >= 0 && s.step < static_cast<int>(p.items.size()) ? p.items[s.step].seq : -1;
+    os << s.t << "," << s.position.x() << "," << s.position.y() << "," << s.position.z() << "," << s.velocity.norm() << ","
+       << ms::toString(s.phase) << "," << seq << "\n";
+  }
+  return os.str();
+}
+
+}  // namespace
+
+void registerPredictCommand(CLI::App& app) {
+  auto o = std::make_shared<PredictOptions>();
+  auto* cmd = app.add_subcommand(
+      "predict",
+      "Energy, time and battery of a mission file (.plan or .waypoints) as the vehicle's autopilot flies it: "
+      "take-off to landing, by phase and by item");
+  cmd->add_option("MISSION", o->mission, "QGroundControl .plan or QGC WPL 110 .waypoints file")->required();
+  addVehicleOption(cmd, o->vehicle);
+  cmd->add_option("--effects", o->effects,
+                  "Comma-separated effects of the energy model (default: the vehicle file's calibration when it has one, "
+                  "else hover,kinetic,parasitic_drag from its physics)");
+  cmd->add_option("--reserve", o->reserve_pct, "Usable charge to keep on landing [%]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
+  cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
+  addForceFlag(cmd, o->force);
+  addJsonFlag(cmd, o->json);
+  cmd->callback([o] {
+    if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, {o->mission, o->vehicle});
+    const en::Vehicle v = en::loadVehicle(o->vehicle);
+    const auto calibrated = wattswath::calibration::calibratedModel(v);
+    const bool use_calibration = calibrated && o->effects.empty();
+    const en::EnergyModel model =
+        use_calibration ? calibrated->model
+                        : en::buildModel(v, en::splitEffectList(o->effects.empty() ? "hover,kinetic,parasitic_drag" : o->effects));
+    const ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, o->vehicle);
+    ms::ReadOptions ro;
+    ro.lenient = o->lenient;
+    const ms::Mission m = ms::readMission(o->mission, ro);
+    ms::PredictSettings ps;
+    ps.reserve_fraction = o->reserve_pct / 100.0;
+    if (use_calibration && calibrated->takeoff_delay_s >= 0.0) ps.flight.takeoff_delay_s = calibrated->takeoff_delay_s;
+    if (use_calibration) ps.flight.stop_at_waypoints = calibrated->stop_at_waypoints;
+    const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, ps);
+    if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
+    if (o->json) {
+      printJson(toJson(p, ap, *o));
+    } else {
+      printText(p, ap);
+    }
+  });
+}
+
+}  // namespace wattswath::apps

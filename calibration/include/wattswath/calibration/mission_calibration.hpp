@@ -1,0 +1,114 @@
+#pragma once
+/// @file mission_calibration.hpp
+/// Logged flights of known missions against their prediction (mission/predict.hpp): time and
+/// energy of the whole flight, of the take-off, the mission and the return, and the time of every
+/// leg between waypoints, measured the same way on the log and on the predicted trajectory (the
+/// time of closest approach to each waypoint in turn). Calibration fits the autopilot's
+/// flight-behaviour parameters to those times (Nelder-Mead on the simulated flights) and the energy
+/// model's coefficients to the logged power on the logged kinematics (fitModel), and reports the
+/// errors before and after.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wattswath/calibration/diagnose.hpp"
+#include "wattswath/logs/flight_log.hpp"
+#include "wattswath/mission/predict.hpp"
+
+namespace wattswath::calibration {
+
+/// A logged flight of a known mission. The log's frame is metres from where the vehicle armed;
+/// the mission's home may differ by metres (alignTrack() finds the offset).
+struct MissionFlight {
+  std::string name;                ///< label (the log's file name)
+  mission::Mission mission;        ///< what the autopilot was told
+  logs::FlightLog log;             ///< what it flew, from the take-off command to touch-down
+};
+
+/// Times [s] of a flight's parts, measured on a trajectory.
+struct FlightTimes {
+  double total_s = 0.0;             ///< first to last sample
+  double takeoff_s = 0.0;           ///< until the climb reaches 90 % of the first waypoint's height
+  double mission_s = 0.0;           ///< first to last waypoint passage
+  double return_s = 0.0;            ///< last waypoint passage to the end
+  std::vector<double> passage_s;    ///< closest approach to each waypoint (NaN: not within the match distance)
+  std::vector<double> leg_s;        ///< between consecutive matched passages (NaN when either is unmatched)
+  double energy_j = 0.0;            ///< [J] electrical energy of the whole flight
+  double mission_energy_j = 0.0;    ///< [J] energy between the first and last passage
+};
+
+/// Measured versus predicted for one flight.
+struct FlightComparison {
+  std::string name;                  ///< the flight
+  FlightTimes measured;              ///< from the log
+  FlightTimes predicted;             ///< from the predicted trajectory
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();  ///< [m] log frame minus mission frame (east, north)
+  double time_error_pct = 0.0;       ///< [%] total time, (predicted - measured) / measured
+  double energy_error_pct = 0.0;     ///< [%] total energy
+  double leg_time_mape_pct = 0.0;    ///< [%] mean absolute percentage error of the matched leg times
+  int legs_matched = 0;              ///< legs with both passages matched
+};
+
+/// The translation [m] that best lays the logged track onto the mission's waypoints (least mean
+/// distance of each waypoint to the track, coarse grid then refinement within +-`search_m`).
+Eigen::Vector2d alignTrack(const std::vector<Eigen::Vector3d>& track, const std::vector<Eigen::Vector3d>& waypoints,
+                           double search_m = 30.0);
+
+/// Times of a trajectory (`t` [s], `pos` [m], `power` [W], NaN allowed when unknown) against
+/// `waypoints` [m], passages matched within `match_m` [m].
+FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos,
+                        const std::vector<double>& power, const std::vector<Eigen::Vector3d>& waypoints,
+                        double match_m = 8.0);
+
+/// The waypoints of a sequenced mission that the vehicle flies to (ENU [m]), in order.
+std::vector<Eigen::Vector3d> flownWaypoints(const std::vector<mission::NavStep>& steps);
+
+/// Compares `f` with its prediction by `model` flown by `autopilot` (with `settings`).
+FlightComparison compareFlight(const MissionFlight& f, const energy::Vehicle& v, const energy::EnergyModel& model,
+                               const mission::AutopilotConfig& autopilot, const mission::PredictSettings& settings = {});
+
+/// Settings of a calibration.
+struct CalibrationSettings {
+  int max_evaluations = 150;     ///< [-] simulated flights per parameter fit (Nelder-Mead); 10..5000
+  double sim_dt = 0.02;          ///< [s] simulation step while fitting; 0.005..0.05
+  FitSettings fit;               ///< energy coefficient fit
+  bool fit_energy = true;        ///< false: keep the model's coefficients
+};
+
+/// A calibrated autopilot and energy model, with the errors before and after.
+struct CalibrationResult {
+  mission::AutopilotConfig autopilot;     ///< with the fitted parameters written in
+  double takeoff_delay_s = 0.0;           ///< [s] fitted delay from the take-off command to lift-off
+  bool stop_at_waypoints = false;         ///< true when stopping at every waypoint fits the logs better
+  energy::EnergyModel model;              ///< with fitted coefficients
+  std::vector<std::string> fitted;        ///< "NAME: before -> after unit" per parameter
+  std::vector<FlightComparison> before;   ///< per flight, uncalibrated
+  std::vector<FlightComparison> after;    ///< per flight, calibrated
+  std::vector<std::string> notes;         ///< what could not be determined, and why
+};
+
+/// Calibrates on `flights`. Throws std::invalid_argument when there is no flight or a log has no
+/// measured power.
+CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, const energy::Vehicle& v,
+                                    const energy::EnergyModel& model, const mission::AutopilotConfig& autopilot,
+                                    const CalibrationSettings& s = {});
+
+/// The calibration as JSON text for the vehicle file's extensions.calibration (effects, fitted
+/// coefficients, take-off delay, what was fitted, notes, the flights it came from).
+std::string calibrationToJson(const CalibrationResult& r);
+
+/// An energy model and take-off delay read back from a vehicle file's extensions.calibration.
+struct CalibratedModel {
+  energy::EnergyModel model;     ///< the calibrated effects and coefficients
+  double takeoff_delay_s = -1.0; ///< [s] fitted take-off delay (< 0: none)
+  bool stop_at_waypoints = false; ///< the calibrated corner behaviour (FlightSettings::stop_at_waypoints)
+};
+
+/// The calibration stored in `v` (extensions.calibration), or nothing when it has none. Throws
+/// std::invalid_argument naming the field when it is malformed.
+std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v);
+
+}  // namespace wattswath::calibration

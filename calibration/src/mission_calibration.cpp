@@ -1,0 +1,427 @@
+#include "wattswath/calibration/mission_calibration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "wattswath/calibration/replay.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
+
+namespace wattswath::calibration {
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Mean horizontal distance of the waypoints to the nearest track point, the track shifted by -d.
+double alignmentCost(const std::vector<Eigen::Vector3d>& track, const std::vector<Eigen::Vector3d>& wps,
+                     const Eigen::Vector2d& d) {
+  double sum = 0.0;
+  for (const auto& w : wps) {
+    double best = 1e300;
+    for (const auto& p : track) best = std::min(best, (p.head<2>() - d - w.head<2>()).squaredNorm());
+    sum += std::sqrt(best);
+  }
+  return wps.empty() ? 0.0 : sum / static_cast<double>(wps.size());
+}
+
+// Power [W] of a log sample: the logged power, else voltage x current, else NaN.
+double samplePower(const logs::LogSample& s) {
+  if (std::isfinite(s.power)) return s.power;
+  if (std::isfinite(s.voltage) && std::isfinite(s.current)) return s.voltage * s.current;
+  return kNaN;
+}
+
+// One parameter a calibration fits: its name, range and the unit it is written in.
+struct FreeParameter {
+  std::string name;
+  double lo, hi;
+  const char* unit;
+};
+
+std::vector<FreeParameter> freeParameters(mission::AutopilotFamily f) {
+  using F = mission::AutopilotFamily;
+  switch (f) {
+    case F::ArduCopterLeash:
+      return {{"WPNAV_ACCEL", 50, 500, "cm/s/s"}, {"WPNAV_SPEED_UP", 50, 500, "cm/s"}, {"WPNAV_SPEED_DN", 30, 400, "cm/s"}};
+    case F::ArduCopterSCurve:
+      return {{"WPNAV_ACCEL", 50, 500, "cm/s/s"}, {"WPNAV_JERK", 0.3, 20, "m/s/s/s"},
+              {"WPNAV_SPEED_UP", 50, 500, "cm/s"}, {"WPNAV_SPEED_DN", 30, 400, "cm/s"}};
+    case F::PX4:
+      return {{"MPC_ACC_HOR", 0.5, 10, "m/s/s"}, {"MPC_JERK_AUTO", 0.5, 40, "m/s/s/s"},
+              {"MPC_TKO_SPEED", 0.3, 5, "m/s"}, {"MPC_Z_V_AUTO_DN", 0.5, 4, "m/s"}};
+  }
+  return {};
+}
+
+// Nelder-Mead on [0, 1]^n (points clamped into the box); returns the best point.
+template <class F>
+std::vector<double> nelderMead(F cost, std::vector<double> x0, int max_evals) {
+  const std::size_t n = x0.size();
+  auto clampBox = [](std::vector<double> x) {
+    for (double& v : x) v = std::clamp(v, 0.0, 1.0);
+    return x;
+  };
+  std::vector<std::vector<double>> pts{clampBox(x0)};
+  for (std::size_t i = 0; i < n; ++i) {
+    auto p = x0;
+    p[i] += p[i] < 0.8 ? 0.15 : -0.15;
+    pts.push_back(clampBox(p));
+  }
+  std::vector<double> val;
+  int evals = 0;
+  auto eval = [&](const std::vector<double>& p) {
+    ++evals;
+    return cost(p);
+  };
+  for (const auto& p : pts) val.push_back(eval(p));
+  while (evals < max_evals) {
+    std::vector<std::size_t> ord(pts.size());
+    for (std::size_t i = 0; i < ord.size(); ++i) ord[i] = i;
+    std::sort(ord.begin(), ord.end(), [&](std::size_t a, std::size_t b) { return val[a] < val[b]; });
+    const std::size_t best = ord.front(), worst = ord.back(), second = ord[ord.size() - 2];
+    if (val[worst] - val[best] < 1e-9) break;
+    std::vector<double> c(n, 0.0);
+    for (std::size_t i : ord)
+      if (i != worst)
+        for (std::size_t k = 0; k < n; ++k) c[k] += pts[i][k] / static_cast<double>(n);
+    auto along = [&](double a) {
+      std::vector<double> p(n);
+      for (std::size_t k = 0; k < n; ++k) p[k] = c[k] + a * (pts[worst][k] - c[k]);
+      return clampBox(p);
+    };
+    const auto r = along(-1.0);
+    const double fr = eval(r);
+    if (fr < val[best]) {
+      const auto e = along(-2.0);
+      const double fe = eval(e);
+      if (fe < fr) pts[worst] = e, val[worst] = fe;
+      else pts[worst] = r, val[worst] = fr;
+    } else if (fr < val[second]) {
+      pts[worst] = r, val[worst] = fr;
+    } else {
+      const auto k = along(0.5);
+      const double fk = eval(k);
+      if (fk < val[worst]) {
+        pts[worst] = k, val[worst] = fk;
+      } else {
+        for (std::size_t i : ord)
+          if (i != best) {
+            for (std::size_t d = 0; d < n; ++d) pts[i][d] = 0.5 * (pts[i][d] + pts[best][d]);
+            val[i] = eval(pts[i]);
+          }
+      }
+    }
+  }
+  return pts[std::min_element(val.begin(), val.end()) - val.begin()];
+}
+
+// The measured side of a flight, computed once.
+struct Prepared {
+  const MissionFlight* flight;
+  std::vector<mission::NavStep> steps;
+  std::vector<Eigen::Vector3d> waypoints;
+  Eigen::Vector2d offset;
+  FlightTimes measured;
+};
+
+Prepared prepare(const MissionFlight& f) {
+  Prepared p;
+  p.flight = &f;
+  p.steps = mission::sequenceMission(f.mission);
+  p.waypoints = flownWaypoints(p.steps);
+  std::vector<Eigen::Vector3d> track;
+  std::vector<double> t, power;
+  for (const auto& s : f.log.samples) {
+    track.push_back(s.position);
+    t.push_back(s.t - f.log.samples.front().t);
+    power.push_back(samplePower(s));
+  }
+  p.offset = alignTrack(track, p.waypoints);
+  for (auto& q : track) q.head<2>() -= p.offset;
+  p.measured = flightTimes(t, track, power, p.waypoints);
+  if (!(p.measured.energy_j > 0.0)) {
+    throw std::invalid_argument(f.name + ": the log has no usable power (voltage x current): it cannot be compared");
+  }
+  return p;
+}
+
+// The predicted side: times (and energy when `model` is given) of the predicted trajectory.
+FlightTimes predictedTimes(const mission::FlownMission& flown, const std::vector<double>& piece_energy,
+                           const std::vector<Eigen::Vector3d>& waypoints) {
+  std::vector<double> t, power;
+  std::vector<Eigen::Vector3d> pos;
+  for (std::size_t i = 0; i < flown.samples.size(); ++i) {
+    t.push_back(flown.samples[i].t);
+    pos.push_back(flown.samples[i].position);
+    const double dt = i > 0 ? flown.samples[i].t - flown.samples[i - 1].t : 0.0;
+    power.push_back(i > 0 && i - 1 < piece_energy.size() && dt > 0.0 ? piece_energy[i - 1] / dt : (i == 0 ? 0.0 : kNaN));
+  }
+  return flightTimes(t, pos, power, waypoints);
+}
+
+double relErr(double pred, double meas) { return meas != 0.0 ? (pred - meas) / meas : 0.0; }
+
+FlightComparison compare(const Prepared& p, const FlightTimes& pred) {
+  FlightComparison c;
+  c.name = p.flight->name;
+  c.measured = p.measured;
+  c.predicted = pred;
+  c.offset = p.offset;
+  c.time_error_pct = 100.0 * relErr(pred.total_s, p.measured.total_s);
+  c.energy_error_pct = 100.0 * relErr(pred.energy_j, p.measured.energy_j);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < std::min(pred.leg_s.size(), p.measured.leg_s.size()); ++k) {
+    if (std::isfinite(pred.leg_s[k]) && std::isfinite(p.measured.leg_s[k]) && p.measured.leg_s[k] > 0.0) {
+      sum += std::abs(relErr(pred.leg_s[k], p.measured.leg_s[k]));
+      ++c.legs_matched;
+    }
+  }
+  c.leg_time_mape_pct = c.legs_matched > 0 ? 100.0 * sum / c.legs_matched : kNaN;
+  return c;
+}
+
+// Squared relative time errors of a prediction: total, take-off, return and the legs (as a group).
+double timeCost(const FlightTimes& m, const FlightTimes& p) {
+  auto sq = [](double x) { return std::isfinite(x) ? x * x : 1.0; };
+  double legs = 0.0;
+  int n = 0;
+  for (std::size_t k = 0; k < std::min(m.leg_s.size(), p.leg_s.size()); ++k) {
+    if (std::isfinite(m.leg_s[k]) && m.leg_s[k] > 0.0) {
+      legs += std::isfinite(p.leg_s[k]) ? sq(relErr(p.leg_s[k], m.leg_s[k])) : 1.0;
+      ++n;
+    }
+  }
+  return sq(relErr(p.total_s, m.total_s)) + sq(relErr(p.takeoff_s, m.takeoff_s)) + sq(relErr(p.return_s, m.return_s)) +
+         (n > 0 ? legs / n : 0.0);
+}
+
+}  // namespace
+
+Eigen::Vector2d alignTrack(const std::vector<Eigen::Vector3d>& track, const std::vector<Eigen::Vector3d>& waypoints,
+                           double search_m) {
+  std::vector<Eigen::Vector3d> thin;
+  const std::size_t step = std::max<std::size_t>(1, track.size() / 1500);
+  for (std::size_t i = 0; i < track.size(); i += step) thin.push_back(track[i]);
+  Eigen::Vector2d best = Eigen::Vector2d::Zero();
+  double best_cost = alignmentCost(thin, waypoints, best);
+  for (double grid : {2.0, 0.5, 0.1}) {
+    const double span = grid == 2.0 ? search_m : grid * 4.0;
+    const Eigen::Vector2d centre = best;
+    for (double dx = -span; dx <= span + 1e-9; dx += grid)
+      for (double dy = -span; dy <= span + 1e-9; dy += grid) {
+        const Eigen::Vector2d d = centre + Eigen::Vector2d(dx, dy);
+        const double c = alignmentCost(thin, waypoints, d);
+        if (c < best_cost) best_cost = c, best = d;
+      }
+  }
+  return best;
+}
+
+FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos,
+                        const std::vector<double>& power, const std::vector<Eigen::Vector3d>& waypoints, double match_m) {
+  FlightTimes ft;
+  if (t.size() < 2) return ft;
+  ft.total_s = t.back() - t.front();
+  const double top = waypoints.empty() ? pos.back().z() : 0.9 * waypoints.front().z();
+  ft.takeoff_s = kNaN;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (pos[i].z() >= top) {
+      ft.takeoff_s = t[i] - t.front();
+      break;
+    }
+  std::size_t from = 0;
+  for (const auto& w : waypoints) {
+    double best = 1e300;
+    std::size_t at = from;
+    for (std::size_t i = from; i < t.size(); ++i) {
+      const double d = (pos[i].head<2>() - w.head<2>()).norm();
+      if (d < best) best = d, at = i;
+      if (best < match_m && d > best + 10.0) break;
+    }
+    if (best <= match_m) {
+      ft.passage_s.push_back(t[at] - t.front());
+      from = at;
+    } else {
+      ft.passage_s.push_back(kNaN);
+    }
+  }
+  double first = kNaN, last = kNaN;
+  for (std::size_t k = 0; k < ft.passage_s.size(); ++k) {
+    if (std::isfinite(ft.passage_s[k])) {
+      if (!std::isfinite(first)) first = ft.passage_s[k];
+      last = ft.passage_s[k];
+    }
+    if (k > 0) ft.leg_s.push_back(ft.passage_s[k] - ft.passage_s[k - 1]);
+  }
+  ft.mission_s = std::isfinite(first) ? last - first : kNaN;
+  ft.return_s = std::isfinite(last) ? ft.total_s - last : kNaN;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (!std::isfinite(power[i]) || !std::isfinite(power[i - 1])) continue;
+    const double e = 0.5 * (power[i] + power[i - 1]) * (t[i] - t[i - 1]);
+    ft.energy_j += e;
+    const double tm = t[i] - t.front();
+    if (std::isfinite(first) && tm > first && tm <= last) ft.mission_energy_j += e;
+  }
+  return ft;
+}
+
+std::vector<Eigen::Vector3d> flownWaypoints(const std::vector<mission::NavStep>& steps) {
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& s : steps)
+    if ((s.kind == mission::NavStep::Kind::Waypoint || s.kind == mission::NavStep::Kind::SplineWaypoint ||
+         s.kind == mission::NavStep::Kind::LoiterTime) && s.has_position)
+      out.push_back(s.target);
+  return out;
+}
+
+FlightComparison compareFlight(const MissionFlight& f, const energy::Vehicle& v, const energy::EnergyModel& model,
+                               const mission::AutopilotConfig& autopilot, const mission::PredictSettings& settings) {
+  const Prepared p = prepare(f);
+  const mission::MissionPrediction pred = mission::predictMission(f.mission, v, model, autopilot, settings);
+  return compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints));
+}
+
+CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, const energy::Vehicle& v,
+                                    const energy::EnergyModel& model, const mission::AutopilotConfig& autopilot,
+                                    const CalibrationSettings& s) {
+  if (flights.empty()) throw std::invalid_argument("calibration needs at least one logged flight of a known mission");
+  if (!(s.sim_dt >= 0.005 && s.sim_dt <= 0.05)) throw std::invalid_argument("CalibrationSettings.sim_dt out of 0.005..0.05");
+  std::vector<Prepared> prepared;
+  for (const auto& f : flights) prepared.push_back(prepare(f));
+  CalibrationResult r;
+  r.autopilot = autopilot;
+  r.model = model;
+  mission::PredictSettings ps;
+  for (const auto& p : prepared) {
+    const auto pred = mission::predictMission(p.flight->mission, v, model, autopilot, ps);
+    r.before.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
+  }
+  // Flight behaviour: the free parameters and the take-off delay, normalised to [0, 1].
+  const std::vector<FreeParameter> free = freeParameters(autopilot.family);
+  const double kMaxDelay = 10.0;
+  auto apply = [&](const std::vector<double>& x, mission::AutopilotConfig& ap, double& delay) {
+    for (std::size_t i = 0; i < free.size(); ++i) ap.parameters[free[i].name] = free[i].lo + x[i] * (free[i].hi - free[i].lo);
+    delay = x.back() * kMaxDelay;
+  };
+  std::vector<double> x0;
+  for (const auto& fp : free) x0.push_back(std::clamp((autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo), 0.0, 1.0));
+  x0.push_back(0.05);
+  auto cost = [&](const std::vector<double>& x, bool stop_all) {
+    mission::AutopilotConfig ap = autopilot;
+    mission::FlightSettings fs;
+    fs.dt = s.sim_dt;
+    fs.stop_at_waypoints = stop_all;
+    apply(x, ap, fs.takeoff_delay_s);
+    double c = 0.0;
+    for (const auto& p : prepared) {
+      try {
+        const auto flown = mission::flyMission(p.steps, ap, fs);
+        c += timeCost(p.measured, predictedTimes(flown, {}, p.waypoints));
+      } catch (const std::exception&) {
+        c += 100.0;
+      }
+    }
+    return c;
+  };
+  // Corner behaviour: the autopilot's own rule, or a stop at every waypoint; the better fit wins.
+  const std::vector<double> x_rule = nelderMead([&](const std::vector<double>& p) { return cost(p, false); }, x0, s.max_evaluations);
+  const std::vector<double> x_stop = nelderMead([&](const std::vector<double>& p) { return cost(p, true); }, x0, s.max_evaluations);
+  const double c_rule = cost(x_rule, false), c_stop = cost(x_stop, true);
+  r.stop_at_waypoints = c_stop < c_rule;
+  const std::vector<double>& x = r.stop_at_waypoints ? x_stop : x_rule;
+  {
+    std::ostringstream os;
+    os << "corner behaviour: " << (r.stop_at_waypoints ? "a stop at every waypoint" : "the autopilot's own rule (no stop without a hold)")
+       << " (time misfit " << (r.stop_at_waypoints ? c_stop : c_rule) << " against " << (r.stop_at_waypoints ? c_rule : c_stop)
+       << " for the other)";
+    r.fitted.push_back(os.str());
+  }
+  apply(x, r.autopilot, r.takeoff_delay_s);
+  for (const auto& fp : free) {
+    std::ostringstream os;
+    os << fp.name << ": " << autopilot.get(fp.name) << " -> " << r.autopilot.get(fp.name) << " " << fp.unit;
+    const double at = (r.autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo);
+    if (at < 0.01 || at > 0.99) {
+      os << " (at the bound of its range: not determined by these flights)";
+      r.notes.push_back(fp.name + " ended at the bound of its range [" + std::to_string(fp.lo) + ", " + std::to_string(fp.hi) +
+                        "]: the flights do not determine it");
+    }
+    r.fitted.push_back(os.str());
+  }
+  r.fitted.push_back("take-off delay: " + std::to_string(r.takeoff_delay_s) + " s from the take-off command to lift-off");
+  // Energy: the model's coefficients fitted to the logged power on the logged kinematics.
+  if (s.fit_energy) {
+    std::vector<PreparedLog> logs;
+    for (const auto& f : flights) logs.push_back(prepareLog(f.log));
+    std::vector<SampleSet> sets;
+    for (const auto& l : logs) sets.push_back({&l, {}});
+    const FitResult fit = fitModel(model, sets, s.fit);
+    r.model = fit.model;
+    for (const auto& c : fit.coefficients) {
+      std::ostringstream os;
+      os << c.effect << "." << c.name << ": " << c.value << " " << c.unit;
+      if (c.at_bound) os << " (at its bound)";
+      r.fitted.push_back(os.str());
+      if (c.at_bound) r.notes.push_back(c.effect + "." + c.name + " stopped at its bound: not determined by these logs");
+      if (!c.determined) r.notes.push_back(c.effect + "." + c.name + " is not constrained by these logs: its value is arbitrary");
+    }
+  }
+  mission::PredictSettings after;
+  after.flight.takeoff_delay_s = r.takeoff_delay_s;
+  after.flight.stop_at_waypoints = r.stop_at_waypoints;
+  for (const auto& p : prepared) {
+    const auto pred = mission::predictMission(p.flight->mission, v, r.model, r.autopilot, after);
+    r.after.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
+  }
+  return r;
+}
+
+std::string calibrationToJson(const CalibrationResult& r) {
+  nlohmann::json j;
+  j["takeoff_delay_s"] = r.takeoff_delay_s;
+  j["stop_at_waypoints"] = r.stop_at_waypoints;
+  j["effects"] = r.model.effectNames();
+  for (const auto& e : r.model.effects())
+    for (const auto& c : e->coefficients()) j["coefficients"][e->name()][c.name] = c.value;
+  j["fitted"] = r.fitted;
+  j["notes"] = r.notes;
+  for (const auto& f : r.after) j["flights"].push_back(f.name);
+  return j.dump();
+}
+
+std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v) {
+  auto it = v.extensions.find("calibration");
+  if (it == v.extensions.end()) return std::nullopt;
+  const std::string where = v.name + ": extensions.calibration";
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(it->second);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(where + " is not valid JSON: " + e.what());
+  }
+  if (!j.is_object() || !j.contains("effects") || !j["effects"].is_array()) {
+    throw std::invalid_argument(where + " must be an object with an \"effects\" list (as `wattswath calibrate` writes it)");
+  }
+  CalibratedModel cm;
+  std::vector<std::string> names;
+  for (const auto& e : j["effects"]) names.push_back(e.get<std::string>());
+  cm.model = energy::buildModel(v, names);
+  for (const auto& e : cm.model.effects()) {
+    std::vector<double> values;
+    for (const auto& c : e->coefficients()) {
+      const auto& jc = j["coefficients"];
+      const bool has = jc.contains(e->name()) && jc[e->name()].contains(c.name) && jc[e->name()][c.name].is_number();
+      values.push_back(has ? jc[e->name()][c.name].get<double>() : c.value);
+    }
+    e->setCoefficientValues(values);
+  }
+  cm.takeoff_delay_s = j.value("takeoff_delay_s", -1.0);
+  cm.stop_at_waypoints = j.value("stop_at_waypoints", false);
+  return cm;
+}
+
+}  // namespace wattswath::calibration
