@@ -147,7 +147,7 @@ struct Flyer {
       advanceCarrot(g, veh, P, rec.dt());
       chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, rec.dt());
       rec.tick(veh.p, veh.v, phase, step);
-      const bool carrot_there = g.desired >= g.length;
+      const bool carrot_there = g.length <= 1e-9 || g.desired >= g.length;  // a degenerate leg has no carrot to move
       if (carrot_there && (fast || (veh.p - to).norm() <= P.radius)) return;
     }
   }

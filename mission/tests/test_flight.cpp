@@ -176,6 +176,16 @@ TEST(ArduCopterLeash, StopWaypointIsReachedWithinTheRadiusAndHoldsStill) {
     if (s.t > e.reached_s && s.t < e.completed_s) EXPECT_LT((s.position - Eigen::Vector3d(100, 0, 10)).norm(), 2.5);
 }
 
+TEST(ArduCopterLeash, ReturnFromAboveRtlAltFliesHomeAndLands) {
+  // Above RTL_ALT (15 m) the RTL climb leg is (nearly) zero long; it used to wait for a carrot
+  // that never moves until the 6 h limit.
+  const AutopilotConfig ac3 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.3"})", "test");
+  const FlownMission f = flyMission(sequenceMission(localMission({{100, 100, 40}})), ac3);
+  EXPECT_LT(f.samples.back().t, 300.0);
+  EXPECT_LT(f.samples.back().position.head<2>().norm(), 2.5);
+  EXPECT_NEAR(f.samples.back().position.z(), 0.0, 1e-9);
+}
+
 TEST(Sequence, DoChangeSpeedGovernsTheNextLegAndBadSpeedsAreErrors) {
   Mission m = localMission({{100, 0, 10}}, 0.0, 4.0);
   const auto steps = sequenceMission(m);
