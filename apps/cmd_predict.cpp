@@ -129,7 +129,10 @@ void registerPredictCommand(CLI::App& app) {
     ms::PredictSettings ps;
     ps.reserve_fraction = o->reserve_pct / 100.0;
     if (use_calibration && calibrated->takeoff_delay_s >= 0.0) ps.flight.takeoff_delay_s = calibrated->takeoff_delay_s;
-    if (use_calibration) ps.flight.stop_at_waypoints = calibrated->stop_at_waypoints;
+    if (use_calibration) {
+      ps.flight.stop_at_waypoints = calibrated->stop_at_waypoints;
+      ps.flight.speed_change_late = calibrated->speed_change_late;
+    }
     const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, ps);
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
     if (o->json) {

@@ -46,7 +46,8 @@ std::vector<FreeParameter> freeParameters(mission::AutopilotFamily f) {
   using F = mission::AutopilotFamily;
   switch (f) {
     case F::ArduCopterLeash:
-      return {{"WPNAV_ACCEL", 50, 500, "cm/s/s"}, {"WPNAV_SPEED_UP", 50, 500, "cm/s"}, {"WPNAV_SPEED_DN", 30, 400, "cm/s"}};
+      return {{"WPNAV_ACCEL", 50, 500, "cm/s/s"}, {"WPNAV_SPEED_UP", 50, 500, "cm/s"}, {"WPNAV_SPEED_DN", 30, 400, "cm/s"},
+              {"POS_XY_P", 0.3, 3.0, "1/s"}, {"VEL_XY_P", 0.3, 6.0, "1/s"}};
     case F::ArduCopterSCurve:
       return {{"WPNAV_ACCEL", 50, 500, "cm/s/s"}, {"WPNAV_JERK", 0.3, 20, "m/s/s/s"},
               {"WPNAV_SPEED_UP", 50, 500, "cm/s"}, {"WPNAV_SPEED_DN", 30, 400, "cm/s"}};
@@ -233,6 +234,13 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
       ft.takeoff_s = t[i] - t.front();
       break;
     }
+  std::vector<double> cum_e(t.size(), 0.0), cum_s(t.size(), 0.0);
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    const bool ok = std::isfinite(power[i]) && std::isfinite(power[i - 1]);
+    cum_e[i] = cum_e[i - 1] + (ok ? 0.5 * (power[i] + power[i - 1]) * (t[i] - t[i - 1]) : 0.0);
+    cum_s[i] = cum_s[i - 1] + (pos[i] - pos[i - 1]).norm();
+  }
+  std::vector<long> at_index;
   std::size_t from = 0;
   for (const auto& w : waypoints) {
     double best = 1e300;
@@ -244,9 +252,11 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
     }
     if (best <= match_m) {
       ft.passage_s.push_back(t[at] - t.front());
+      at_index.push_back(static_cast<long>(at));
       from = at;
     } else {
       ft.passage_s.push_back(kNaN);
+      at_index.push_back(-1);
     }
   }
   double first = kNaN, last = kNaN;
@@ -255,7 +265,12 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
       if (!std::isfinite(first)) first = ft.passage_s[k];
       last = ft.passage_s[k];
     }
-    if (k > 0) ft.leg_s.push_back(ft.passage_s[k] - ft.passage_s[k - 1]);
+    if (k > 0) {
+      ft.leg_s.push_back(ft.passage_s[k] - ft.passage_s[k - 1]);
+      const bool both = at_index[k] >= 0 && at_index[k - 1] >= 0;
+      ft.leg_energy_j.push_back(both ? cum_e[at_index[k]] - cum_e[at_index[k - 1]] : kNaN);
+      ft.leg_speed_mps.push_back(both && ft.leg_s.back() > 0.0 ? (cum_s[at_index[k]] - cum_s[at_index[k - 1]]) / ft.leg_s.back() : kNaN);
+    }
   }
   ft.mission_s = std::isfinite(first) ? last - first : kNaN;
   ft.return_s = std::isfinite(last) ? ft.total_s - last : kNaN;
@@ -310,11 +325,12 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   std::vector<double> x0;
   for (const auto& fp : free) x0.push_back(std::clamp((autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo), 0.0, 1.0));
   x0.push_back(0.05);
-  auto cost = [&](const std::vector<double>& x, bool stop_all) {
+  auto cost = [&](const std::vector<double>& x, int variant) {
     mission::AutopilotConfig ap = autopilot;
     mission::FlightSettings fs;
     fs.dt = s.sim_dt;
-    fs.stop_at_waypoints = stop_all;
+    fs.stop_at_waypoints = variant & 1;
+    fs.speed_change_late = variant & 2;
     apply(x, ap, fs.takeoff_delay_s);
     double c = 0.0;
     for (const auto& p : prepared) {
@@ -327,19 +343,23 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     }
     return c;
   };
-  // Corner behaviour: the autopilot's own rule, or a stop at every waypoint; the better fit wins.
-  const std::vector<double> x_rule = nelderMead([&](const std::vector<double>& p) { return cost(p, false); }, x0, s.max_evaluations);
-  const std::vector<double> x_stop = nelderMead([&](const std::vector<double>& p) { return cost(p, true); }, x0, s.max_evaluations);
-  const double c_rule = cost(x_rule, false), c_stop = cost(x_stop, true);
-  r.stop_at_waypoints = c_stop < c_rule;
-  const std::vector<double>& x = r.stop_at_waypoints ? x_stop : x_rule;
-  {
-    std::ostringstream os;
-    os << "corner behaviour: " << (r.stop_at_waypoints ? "a stop at every waypoint" : "the autopilot's own rule (no stop without a hold)")
-       << " (time misfit " << (r.stop_at_waypoints ? c_stop : c_rule) << " against " << (r.stop_at_waypoints ? c_rule : c_stop)
-       << " for the other)";
-    r.fitted.push_back(os.str());
+  // Corner and speed-change behaviour: the autopilot's own rules, a stop at every waypoint, speed
+  // changes a waypoint late, or both; the variant with the least time misfit wins.
+  const char* kVariants[4] = {"the autopilot's own rules", "a stop at every waypoint",
+                              "DO_CHANGE_SPEED one waypoint late", "a stop at every waypoint and DO_CHANGE_SPEED one waypoint late"};
+  std::vector<double> x;
+  double best = 1e300;
+  int chosen = 0;
+  std::ostringstream misfits;
+  for (int variant = 0; variant < 4; ++variant) {
+    const auto xv = nelderMead([&](const std::vector<double>& p) { return cost(p, variant); }, x0, s.max_evaluations);
+    const double c = cost(xv, variant);
+    misfits << (variant ? "; " : "") << kVariants[variant] << " " << c;
+    if (c < best) best = c, x = xv, chosen = variant;
   }
+  r.stop_at_waypoints = chosen & 1;
+  r.speed_change_late = chosen & 2;
+  r.fitted.push_back(std::string("behaviour: ") + kVariants[chosen] + " (time misfit: " + misfits.str() + ")");
   apply(x, r.autopilot, r.takeoff_delay_s);
   for (const auto& fp : free) {
     std::ostringstream os;
@@ -373,6 +393,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   mission::PredictSettings after;
   after.flight.takeoff_delay_s = r.takeoff_delay_s;
   after.flight.stop_at_waypoints = r.stop_at_waypoints;
+  after.flight.speed_change_late = r.speed_change_late;
   for (const auto& p : prepared) {
     const auto pred = mission::predictMission(p.flight->mission, v, r.model, r.autopilot, after);
     r.after.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
@@ -384,6 +405,7 @@ std::string calibrationToJson(const CalibrationResult& r) {
   nlohmann::json j;
   j["takeoff_delay_s"] = r.takeoff_delay_s;
   j["stop_at_waypoints"] = r.stop_at_waypoints;
+  j["speed_change_late"] = r.speed_change_late;
   j["effects"] = r.model.effectNames();
   for (const auto& e : r.model.effects())
     for (const auto& c : e->coefficients()) j["coefficients"][e->name()][c.name] = c.value;
@@ -421,6 +443,7 @@ std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v) {
   }
   cm.takeoff_delay_s = j.value("takeoff_delay_s", -1.0);
   cm.stop_at_waypoints = j.value("stop_at_waypoints", false);
+  cm.speed_change_late = j.value("speed_change_late", false);
   return cm;
 }
 

@@ -50,6 +50,20 @@ energy::Phase energyPhase(const FlightSample& a, const FlightSample& b, double l
 FlownMission flyMission(const std::vector<NavStep>& steps, const AutopilotConfig& autopilot, const FlightSettings& s) {
   validate(s);
   if (steps.empty()) throw std::invalid_argument("flyMission: no navigation steps");
+  if (s.speed_change_late) {
+    std::vector<NavStep> late = steps;
+    for (std::size_t k = late.size(); k-- > 1;) {
+      late[k].speed_xy = steps[k - 1].speed_xy;
+      late[k].speed_up = steps[k - 1].speed_up;
+      late[k].speed_down = steps[k - 1].speed_down;
+    }
+    FlightSettings now = s;
+    now.speed_change_late = false;
+    FlownMission f = flyMission(late, autopilot, now);
+    f.steps = steps;
+    f.notes.push_back("DO_CHANGE_SPEED applied one waypoint late (calibrated corner/speed timing)");
+    return f;
+  }
   switch (autopilot.family) {
     case AutopilotFamily::ArduCopterSCurve: return flyArduCopterSCurve(steps, autopilot, s);
     case AutopilotFamily::ArduCopterLeash: return flyArduCopterLeash(steps, autopilot, s);

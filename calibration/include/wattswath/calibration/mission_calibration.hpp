@@ -36,6 +36,8 @@ struct FlightTimes {
   double return_s = 0.0;            ///< last waypoint passage to the end
   std::vector<double> passage_s;    ///< closest approach to each waypoint (NaN: not within the match distance)
   std::vector<double> leg_s;        ///< between consecutive matched passages (NaN when either is unmatched)
+  std::vector<double> leg_energy_j; ///< [J] energy between consecutive passages (NaN when either is unmatched)
+  std::vector<double> leg_speed_mps;  ///< [m/s] mean speed along the path between consecutive passages
   double energy_j = 0.0;            ///< [J] electrical energy of the whole flight
   double mission_energy_j = 0.0;    ///< [J] energy between the first and last passage
 };
@@ -83,6 +85,7 @@ struct CalibrationResult {
   mission::AutopilotConfig autopilot;     ///< with the fitted parameters written in
   double takeoff_delay_s = 0.0;           ///< [s] fitted delay from the take-off command to lift-off
   bool stop_at_waypoints = false;         ///< true when stopping at every waypoint fits the logs better
+  bool speed_change_late = false;         ///< true when speed changes a waypoint late fit the logs better
   energy::EnergyModel model;              ///< with fitted coefficients
   std::vector<std::string> fitted;        ///< "NAME: before -> after unit" per parameter
   std::vector<FlightComparison> before;   ///< per flight, uncalibrated
@@ -105,6 +108,7 @@ struct CalibratedModel {
   energy::EnergyModel model;     ///< the calibrated effects and coefficients
   double takeoff_delay_s = -1.0; ///< [s] fitted take-off delay (< 0: none)
   bool stop_at_waypoints = false; ///< the calibrated corner behaviour (FlightSettings::stop_at_waypoints)
+  bool speed_change_late = false; ///< the calibrated speed-change timing (FlightSettings::speed_change_late)
 };
 
 /// The calibration stored in `v` (extensions.calibration), or nothing when it has none. Throws

@@ -85,6 +85,9 @@ struct FlightSettings {
   /// Fly every waypoint as a stop (brake into it, start the next leg from rest) even without a hold
   /// time: what some logged flights show where the firmware's rule is not known (calibration decides)
   bool stop_at_waypoints = false;
+  /// Apply each DO_CHANGE_SPEED one waypoint later than AP_Mission's order says (to the leg after
+  /// the one it precedes): what the IRIS+ ArduCopter 3.x logs show (calibration decides)
+  bool speed_change_late = false;
 };
 
 /// Flies `steps` with the behaviour model of `autopilot`. Throws std::invalid_argument naming the
