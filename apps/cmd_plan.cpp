@@ -18,6 +18,7 @@
 #include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/mission/planned_mission.hpp"
 #include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/mission_from_plan.hpp"
 
 namespace wattswath::apps {
 namespace geo = wattswath::geometry;
@@ -180,44 +181,6 @@ nlohmann::json batteryJson(const std::optional<pl::BatteryUse>& b) {
           {"fits", b->fits},                     {"warning", b->warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(b->warning)}};
 }
 
-// Waypoints: the end of every line or arc, flown at that leg's cruise speed.
-ms::PlannedMission missionOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const geo::LocalFrame& frame,
-                             double home_alt_amsl) {
-  ms::PlannedMission m;
-  m.home = frame.toGeodetic(pr.home);
-  m.home_altitude_amsl_m = home_alt_amsl;
-  m.takeoff_altitude_m = pr.altitude;
-  const auto& f = r.plan.flown;
-  double vmax = 0.0;
-  for (size_t i = 0; i < f.path.legs.size(); ++i) {
-    const auto& leg = f.path.legs[i];
-    if (leg.kind == geo::PrimitiveKind::TurnInPlace) continue;
-    const double v = std::max(f.speeds.cruise[i], 0.1);
-    vmax = std::max(vmax, v);
-    m.waypoints.push_back({frame.toGeodetic(leg.end), pr.altitude, v});
-  }
-  m.cruise_speed_mps = vmax > 0 ? vmax : 5.0;
-  m.hover_speed_mps = m.cruise_speed_mps;
-  // Geofence: every hole of the area (holes are no-fly zones) and each extra no-fly zone that did
-  // not become a hole (one clipped by the boundary, or outside the area).
-  auto sameRing = [](const geo::Ring& a, const geo::Ring& b) {
-    if (a.size() != b.size()) return false;
-    for (const auto& p : a)
-      if (std::none_of(b.begin(), b.end(), [&](const geo::Point& q) { return (p - q).norm() < 1e-3; })) return false;
-    return true;
-  };
-  std::vector<geo::Ring> fence = pr.area.holes;
-  for (const auto& z : pr.no_fly)
-    if (std::none_of(pr.area.holes.begin(), pr.area.holes.end(), [&](const geo::Ring& h) { return sameRing(h, z); }))
-      fence.push_back(z);
-  for (const auto& z : fence) {
-    std::vector<ms::GeoPoint> ring;
-    for (const auto& p : z) ring.push_back(frame.toGeodetic(p));
-    m.no_fly.push_back(ring);
-  }
-  return m;
-}
-
 std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFrame& frame) {
   std::vector<ms::LegRecord> out;
   for (size_t i = 0; i < f.path.legs.size(); ++i) {
@@ -282,14 +245,16 @@ void runPlan(const PlanOpts& o) {
   const auto problems = pl::checkPlan(pr, r.plan.flown.path);
   if (!problems.empty()) throw std::runtime_error("plan failed its own check: " + problems.front());
 
-  const auto mission = missionOf(r, pr, frame, area.home_alt_m.value_or(frame.origin().alt_m));
+  const auto pm = pl::missionFromPlan(r.plan.flown, pr, frame, area.home_alt_m.value_or(frame.origin().alt_m));
+  std::vector<std::string> notes = r.notes;
+  notes.insert(notes.end(), pm.notes.begin(), pm.notes.end());
   geo::PathGeoJsonOptions go;
   go.leg_properties["speed_mps"] = r.plan.flown.speeds.cruise;
   go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
   go.leg_properties["time_s"] = r.plan.flown.leg_time;
   const fs::path dir(o.out);
-  writeTextFileAtomic((dir / "mission.plan").string(), ms::toQgcPlan(mission));
-  writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(mission));
+  writeTextFileAtomic((dir / "mission.plan").string(), ms::toQgcPlan(pm.mission));
+  writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
   writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
   if (!o.no_report || !o.report_svg.empty()) {
@@ -328,7 +293,7 @@ void runPlan(const PlanOpts& o) {
       {"battery", batteryJson(r.battery)},
       {"files", {(dir / "mission.plan").string(), (dir / "mission.waypoints").string(), (dir / "path.geojson").string(),
                  (dir / "legs.csv").string()}},
-      {"notes", r.notes}};
+      {"notes", notes}};
   if (o.json) {
     printJson(j);
     return;
@@ -358,7 +323,7 @@ void runPlan(const PlanOpts& o) {
     std::cout << "battery: mission " << r.battery->mission_energy_j / 1000.0 << " kJ of "
               << r.battery->usable_energy_j / 1000.0 << " kJ usable (margin " << r.battery->margin_pct << " %, "
               << r.battery->remaining_pct << " % of the usable charge left on landing)\n";
-  for (const auto& n : r.notes) std::cout << "note: " << n << "\n";
+  for (const auto& n : notes) std::cout << "note: " << n << "\n";
   std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
 }
 

@@ -21,7 +21,6 @@ constexpr int kCmdChangeSpeed = 178;    // MAV_CMD_DO_CHANGE_SPEED
 constexpr int kFrameGlobal = 0;         // MAV_FRAME_GLOBAL (home row of WPL files)
 constexpr int kFrameMission = 2;        // MAV_FRAME_MISSION (commands without a position)
 constexpr int kFrameRelativeAlt = 3;    // MAV_FRAME_GLOBAL_RELATIVE_ALT
-constexpr double kSpeedChangeMin = 0.05;  // [m/s] speed changes smaller than this are not written
 
 /// One mission item before formatting.
 struct Item {
@@ -45,7 +44,8 @@ void checkPositive(double v, const std::string& what) {
 }
 
 // The flight as MAVLink items: take-off, then per waypoint a speed change when its speed differs
-// from the current one, then the waypoint; finally return to launch.
+// from the one in force (the caller decides what counts as a change: planner::missionWaypoints),
+// then the waypoint; finally return to launch.
 std::vector<Item> items(const PlannedMission& m) {
   validate(m);
   std::vector<Item> out;
@@ -55,7 +55,7 @@ std::vector<Item> items(const PlannedMission& m) {
   out.push_back(takeoff);
   double current = -1.0;
   for (const auto& w : m.waypoints) {
-    if (std::abs(w.speed_mps - current) >= kSpeedChangeMin) {
+    if (w.speed_mps != current) {
       Item s;
       s.command = kCmdChangeSpeed;
       s.frame = kFrameMission;

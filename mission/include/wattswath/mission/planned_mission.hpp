@@ -43,7 +43,8 @@ struct PlannedMission {
 void validate(const PlannedMission& m);
 
 /// QGroundControl `.plan` JSON text (fileType "Plan", version 1; mission version 2 with SimpleItems:
-/// 22 take-off, 178 DO_CHANGE_SPEED per leg whose speed changes, 16 waypoints, 20 return to launch;
+/// 22 take-off, 178 DO_CHANGE_SPEED before each waypoint whose speed differs from the previous
+/// waypoint's (written as given: planner::missionWaypoints decides the speeds), 16 waypoints, 20 return to launch;
 /// geoFence version 2 with the no-fly zones as exclusion polygons; rallyPoints version 2).
 std::string toQgcPlan(const PlannedMission& m);
 

@@ -1,0 +1,172 @@
+// The mission of a plan: waypoints never closer than kMinWaypointSpacing, no speed command below
+// kMinCommandedSpeed (no 0.1 m/s placeholder), a command only where the speed changes by more than
+// kSpeedChangeTolerance, and every sweep-line end still visited within kMinWaypointSpacing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/survey_area.hpp"
+#include "wattswath/mission/planned_mission.hpp"
+#include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/mission_from_plan.hpp"
+#include "test_util.hpp"
+
+using namespace wattswath;
+using namespace wattswath::planner;
+using geometry::LegRole;
+using geometry::Point;
+using geometry::PrimitiveKind;
+
+namespace {
+
+geometry::PathLeg line(Point a, Point b, LegRole role = LegRole::Sweep) {
+  geometry::PathLeg l;
+  l.kind = PrimitiveKind::Line;
+  l.role = role;
+  l.start = a;
+  l.end = b;
+  return l;
+}
+
+geometry::PathLeg turnInPlace(Point at) {
+  auto t = line(at, at, LegRole::Turn);
+  t.kind = PrimitiveKind::TurnInPlace;
+  return t;
+}
+
+/// A flown path of `legs` with cruise speeds `cruise` [m/s] (junction speeds unused here).
+FlownPath flown(const std::vector<geometry::PathLeg>& legs, const std::vector<double>& cruise) {
+  FlownPath f;
+  f.path.legs = legs;
+  f.speeds.cruise = cruise;
+  f.speeds.junction.assign(legs.size() + 1, 0.0);
+  return f;
+}
+
+/// Checks the mission of `f` (planned for `pr`, converted with `frame`) for the rules of
+/// mission_from_plan.hpp, on the waypoints and on the items the writers produce.
+void expectHonestMission(const FlownPath& f, const SurveyProblem& pr, const geometry::LocalFrame& frame) {
+  const auto pm = missionFromPlan(f, pr, frame, 0.0);
+  const auto& wps = pm.mission.waypoints;
+  ASSERT_FALSE(wps.empty());
+  std::vector<Point> local;
+  for (const auto& w : wps) local.push_back(frame.toLocal(w.position.lat_deg, w.position.lon_deg));
+  for (size_t k = 0; k + 1 < local.size(); ++k)
+    EXPECT_GE((local[k + 1] - local[k]).norm(), kMinWaypointSpacing - 1e-6) << "waypoints " << k << ", " << k + 1;
+  for (size_t k = 0; k < wps.size(); ++k) {
+    EXPECT_GE(wps[k].speed_mps, kMinCommandedSpeed) << "waypoint " << k;
+    if (k > 0 && wps[k].speed_mps != wps[k - 1].speed_mps) {
+      EXPECT_GT(std::abs(wps[k].speed_mps - wps[k - 1].speed_mps), kSpeedChangeTolerance) << "waypoint " << k;
+    }
+  }
+  // Every sweep-line end within the spacing tolerance of a written waypoint (a start may be home).
+  auto near = [&](const Point& p) {
+    for (const auto& q : local)
+      if ((p - q).norm() <= kMinWaypointSpacing + 1e-6) return true;
+    return (p - pr.home).norm() <= kMinWaypointSpacing;
+  };
+  for (size_t i = 0; i < f.path.legs.size(); ++i) {
+    const auto& leg = f.path.legs[i];
+    if (leg.role != LegRole::Sweep) continue;
+    EXPECT_TRUE(near(leg.start)) << "start of sweep leg " << i;
+    EXPECT_TRUE(near(leg.end)) << "end of sweep leg " << i;
+  }
+  // The written items: no speed command below the floor (so none of 0.1 m/s), loadable by QGC.
+  const std::string text = mission::toQgcPlan(pm.mission);
+  EXPECT_TRUE(mission::checkQgcPlan(text).empty());
+  const auto plan = nlohmann::json::parse(text);
+  int commands = 0;
+  for (const auto& item : plan["mission"]["items"]) {
+    if (item["command"] != 178) continue;
+    ++commands;
+    EXPECT_GE(item["params"][1].get<double>(), kMinCommandedSpeed);
+  }
+  EXPECT_GE(commands, 1);
+}
+
+/// The problem `wattswath plan AREA --spacing S` (or --altitude 10 --fov 100 --overlap 0.1 when
+/// `spacing` is 0) sets up from a survey area file.
+SurveyProblem problemOf(const geometry::SurveyArea& area, double spacing) {
+  SurveyProblem pr;
+  pr.area = area.polygon();
+  pr.no_fly = area.no_fly;
+  pr.altitude = 10.0;
+  pr.footprint = spacing > 0 ? spacing : 2.0 * pr.altitude * std::tan(50.0 * M_PI / 180.0);
+  pr.spacing = spacing > 0 ? spacing : 0.9 * pr.footprint;
+  pr.home = area.home ? *area.home : pr.area.outer.front();
+  return pr;
+}
+
+}  // namespace
+
+TEST(MissionFromPlan, MergesShortLegsHoldsSmallChangesAndRaisesSlowSpeeds) {
+  const auto f = flown({line({0, 0}, {100, 0}),                          // 0: sweep at 8
+                        turnInPlace({100, 0}),                              // 1: no waypoint
+                        line({100, 0}, {100, 0.001}, LegRole::Transit),     // 2: 1 mm join, merged
+                        line({100, 0.001}, {100, 15}, LegRole::Transit),    // 3: 8.03, held at 8
+                        line({100, 15}, {95, 15}),                          // 4: 0.05 -> 1 m/s, noted
+                        line({95, 15}, {94.7, 15}),                         // 5: 0.3 m, merged
+                        line({94.7, 15}, {0, 15})},                         // 6: 6 m/s
+                       {8.0, 0.0, 2.7, 8.03, 0.05, 0.3, 6.0});
+  const auto m = missionWaypoints(f);
+  ASSERT_EQ(m.waypoints.size(), 4u);
+  const std::vector<int> legs = {0, 3, 4, 6};
+  const std::vector<double> speeds = {8.0, 8.0, kMinCommandedSpeed, 6.0};
+  for (size_t k = 0; k < legs.size(); ++k) {
+    EXPECT_EQ(m.waypoints[k].leg, legs[k]);
+    EXPECT_DOUBLE_EQ(m.waypoints[k].speed_mps, speeds[k]) << "waypoint " << k;
+    EXPECT_EQ(m.waypoints[k].position, f.path.legs[legs[k]].end);
+  }
+  EXPECT_DOUBLE_EQ(m.waypoints[1].planned_speed_mps, 8.03);
+  ASSERT_EQ(m.notes.size(), 1u);
+  EXPECT_NE(m.notes[0].find("leg 4;"), std::string::npos) << m.notes[0];
+  EXPECT_NE(m.notes[0].find("1.0 m/s"), std::string::npos) << m.notes[0];
+  // The writer puts a speed command only where the speed changes: 8, 1, 6.
+  SurveyProblem pr;
+  const geometry::LocalFrame frame({43.7, 10.4, 0.0});
+  const auto pm = missionFromPlan(f, pr, frame, 3.0);
+  EXPECT_DOUBLE_EQ(pm.mission.cruise_speed_mps, 8.03);
+  const auto plan = nlohmann::json::parse(mission::toQgcPlan(pm.mission));
+  int commands = 0;
+  for (const auto& item : plan["mission"]["items"])
+    commands += item["command"] == 178;
+  EXPECT_EQ(commands, 3);
+  expectHonestMission(f, pr, frame);
+}
+
+TEST(MissionFromPlan, ExampleAreaMissionHasNoPlaceholderSpeedsOrDegenerateWaypoints) {
+  // scripts/example.sh: the bundled IRIS+ area with its no-fly zone, 15 m spacing.
+  const auto area = geometry::readSurveyArea(test::sourcePath("data/areas/iris_area.geojson"));
+  ASSERT_TRUE(area.frame);
+  const auto pr = problemOf(area, 15.0);
+  const auto v = energy::loadVehicle(test::sourcePath("data/vehicles/iris.json"));
+  const auto r = planCoverage(pr, v, energy::marinsModel(v));
+  ASSERT_TRUE(r.plan.valid);
+  expectHonestMission(r.plan.flown, pr, *area.frame);
+}
+
+TEST(MissionFromPlan, ReferenceAreaMissionsKeepTheRules) {
+  // The E-Spiral areas whose missions had 0.1 m/s commands and waypoints 0 m apart, both searches.
+  const auto v = energy::loadVehicle(test::sourcePath("data/vehicles/iris.json"));
+  const auto model = energy::marinsModel(v);
+  for (const std::string name : {"rectangle", "area01", "polygon", "spiral_concave", "spiral_polygon"}) {
+    const auto file = test::sharedData("espiral/area__" + name + ".waypoints");
+    if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+    const auto area = geometry::readSurveyArea(file);
+    ASSERT_TRUE(area.frame);
+    const auto pr = problemOf(area, 0.0);
+    for (bool spirals : {true, false}) {
+      SCOPED_TRACE(name + (spirals ? "" : ", no spirals"));
+      PlannerSettings ps;
+      ps.spirals = spirals;
+      const auto r = planCoverage(pr, v, model, ps);
+      ASSERT_TRUE(r.plan.valid);
+      expectHonestMission(r.plan.flown, pr, *area.frame);
+    }
+  }
+}
