@@ -58,6 +58,7 @@ double leashLength(double speed, double accel, double kp) {
 // The vehicle and the carrot it chases.
 struct Vehicle {
   Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
+  Eigen::Vector2d v_cmd_prev = Eigen::Vector2d::Zero();  // the previous step's velocity command (feed-forward)
 };
 
 struct Leg {
@@ -126,7 +127,12 @@ void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Para
   Eigen::Vector2d v_cmd = Eigen::Vector2d::Zero();
   if (err.norm() > 1e-9) v_cmd = err / err.norm() * sqrtController(err.norm(), P.pos_xy_p, P.accel);
   if (v_cmd.norm() > speed) v_cmd *= speed / v_cmd.norm();
-  Eigen::Vector2d a_cmd = P.vel_xy_p * (v_cmd - veh.v.head<2>());
+  // Acceleration: the change of the velocity command (feed-forward, AC_PosControl::rate_to_accel_xy,
+  // bounded by the lean limit so a jump at a new leg is not followed at once) plus the velocity loop.
+  Eigen::Vector2d ff = (v_cmd - veh.v_cmd_prev) / dt;
+  if (ff.norm() > P.accel_max) ff *= P.accel_max / ff.norm();
+  veh.v_cmd_prev = v_cmd;
+  Eigen::Vector2d a_cmd = ff + P.vel_xy_p * (v_cmd - veh.v.head<2>());
   if (a_cmd.norm() > P.accel_max) a_cmd *= P.accel_max / a_cmd.norm();
   veh.a.head<2>() += (a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
   const double vz_cmd = std::clamp(sqrtController(carrot.z() - veh.p.z(), P.pos_z_p, P.accel_z), -P.speed_dn, P.speed_up);

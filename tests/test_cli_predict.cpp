@@ -1,0 +1,93 @@
+// wattswath predict / calibrate / replay --mission end to end: JSON contract, battery verdict,
+// lenient reading, a calibration written and read back, leg-by-leg comparison.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "test_util.hpp"
+
+using namespace wattswath::test;
+using nlohmann::json;
+
+namespace {
+
+std::string cli(const std::string& args) { return cliBinary() + " " + args; }
+
+json runJson(const std::string& args) {
+  const RunResult r = run(cli(args) + " 2>/dev/null");
+  EXPECT_EQ(r.status, 0) << args;
+  return json::parse(r.output);
+}
+
+std::string tempPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("wattswath_test_cli_predict_" + name)).string();
+}
+
+}  // namespace
+
+TEST(CliPredict, SurveyPlanGivesTheJsonContractAndABatteryVerdict) {
+  const json j = runJson("predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
+                         sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --json");
+  for (const char* key : {"energy_j", "time_s", "distance_m", "phases", "items", "battery"}) EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_GT(j["energy_j"].get<double>(), 0.0);
+  double phase_sum = 0.0;
+  for (const char* p : {"takeoff", "mission", "return", "landing"}) phase_sum += j["phases"][p]["energy_j"].get<double>();
+  EXPECT_NEAR(phase_sum, j["energy_j"].get<double>(), 1e-6 * j["energy_j"].get<double>());
+  double item_sum = 0.0;
+  for (const auto& it : j["items"]) item_sum += it["energy_j"].get<double>();
+  EXPECT_NEAR(item_sum, j["energy_j"].get<double>(), 1e-6 * j["energy_j"].get<double>());
+  EXPECT_TRUE(j["battery"]["known"].get<bool>());
+  EXPECT_FALSE(j["battery"]["verdict"].get<std::string>().empty());
+  EXPECT_EQ(j["autopilot"]["model"], "arducopter-leash");
+}
+
+TEST(CliPredict, VehicleWithoutBatterySaysSoInsteadOfANumber) {
+  const json j = runJson("predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
+                         sourcePath("data/vehicles/iris.json") + " --json");
+  EXPECT_FALSE(j["battery"]["known"].get<bool>());
+  EXPECT_FALSE(j["battery"].contains("usable_left_at_landing"));
+  EXPECT_EQ(j["autopilot"]["model"], "arducopter-scurve");  // no autopilot object: ArduCopter 4.x defaults
+}
+
+TEST(CliPredict, UnknownCommandIsAnErrorAndLenientSkipsItWithAWarning) {
+  const std::string bad = sourcePath("tests/data/bad/mission_unknown_command.waypoints");
+  const RunResult strict = run(cli("predict " + bad + " --vehicle " + sourcePath("data/vehicles/iris.json") + " 2>&1"));
+  EXPECT_NE(strict.status, 0);
+  EXPECT_NE(strict.output.find("use --lenient"), std::string::npos) << strict.output;
+  const json j = runJson("predict " + bad + " --lenient --vehicle " + sourcePath("data/vehicles/iris.json") + " --json");
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"].dump().find("NAV_VTOL_TAKEOFF"), std::string::npos) << j["warnings"].dump();
+}
+
+#ifdef WATTSWATH_TEST_SHARED_DATA
+TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
+  const std::string flight = "2017-10-18_1436_energy14";
+  const std::string log = sharedData("iris-flights/" + flight + ".csv");
+  const std::string mission = sharedData("iris-flights/mission__" + flight + ".waypoints");
+  const std::string out = tempPath("calibrated.json");
+  std::remove(out.c_str());
+  const json c = runJson("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
+                         " --mission " + mission + " --out " + out + " --evaluations 60 --json");
+  ASSERT_EQ(c["before"].size(), 1u);
+  ASSERT_EQ(c["after"].size(), 1u);
+  // Fitting on the flight itself cannot make its time misfit worse than the starting point by much.
+  EXPECT_LE(std::abs(c["after"][0]["time_error_pct"].get<double>()), std::abs(c["before"][0]["time_error_pct"].get<double>()) + 1.0);
+  ASSERT_TRUE(std::filesystem::exists(out));
+  // Refuses to overwrite without --force.
+  EXPECT_NE(run(cli("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
+                          " --mission " + mission + " --out " + out + " 2>&1")).status, 0);
+  const json p = runJson("predict " + mission + " --vehicle " + out + " --json");
+  EXPECT_TRUE(p["autopilot"]["parameters_from_vehicle_file"].get<bool>());
+  const json r = runJson("replay --vehicle " + out + " --log " + log + " --mission " + mission + " --json");
+  const auto& m = r["mission_prediction"][0];
+  EXPECT_EQ(m["model"], "the vehicle file's calibration");
+  EXPECT_GE(m["legs_matched"].get<int>(), 20);
+  EXPECT_NEAR(m["predicted_energy_j"].get<double>(), p["energy_j"].get<double>(), 0.02 * p["energy_j"].get<double>());
+  EXPECT_NEAR(m["kinematics_error_j"].get<double>() + m["physics_error_j"].get<double>(),
+              m["predicted_energy_j"].get<double>() - m["measured_energy_j"].get<double>(), 1e-6);
+  std::remove(out.c_str());
+}
+#endif
