@@ -26,6 +26,17 @@ struct CalibrateOptions {
   logs::LogReadOptions read;
 };
 
+// Leg by leg: measured and predicted time [s] and energy [J] (null where a passage was not matched).
+nlohmann::json legsJson(const cal::FlightComparison& c) {
+  auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+  nlohmann::json legs = nlohmann::json::array();
+  for (std::size_t k = 0; k < c.measured.leg_s.size() && k < c.predicted.leg_s.size(); ++k) {
+    legs.push_back({{"leg", k + 1}, {"measured_time_s", num(c.measured.leg_s[k])}, {"predicted_time_s", num(c.predicted.leg_s[k])},
+                    {"measured_energy_j", num(c.measured.leg_energy_j[k])}, {"predicted_energy_j", num(c.predicted.leg_energy_j[k])}});
+  }
+  return legs;
+}
+
 nlohmann::json comparisonJson(const cal::FlightComparison& c) {
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
   return {{"flight", c.name},
@@ -37,7 +48,8 @@ nlohmann::json comparisonJson(const cal::FlightComparison& c) {
                         {"mission_s", num(c.measured.mission_s)}, {"return_s", num(c.measured.return_s)}}},
           {"predicted", {{"time_s", c.predicted.total_s}, {"energy_j", c.predicted.energy_j}, {"takeoff_s", num(c.predicted.takeoff_s)},
                          {"mission_s", num(c.predicted.mission_s)}, {"return_s", num(c.predicted.return_s)}}},
-          {"log_offset_m", {c.offset.x(), c.offset.y()}}};
+          {"log_offset_m", {c.offset.x(), c.offset.y()}},
+          {"legs", legsJson(c)}};
 }
 
 void printComparisons(const char* title, const std::vector<cal::FlightComparison>& cs) {
