@@ -313,4 +313,14 @@ std::size_t Log::offsetOf(const std::string& name, std::size_t i) const {
   return i < r.size() ? r[i] - 3 : 0;
 }
 
+Log Log::parseAcceptingCutEnd(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient) {
+  Log log = parse(std::move(bytes), source, true);
+  const auto& w = log.warnings();
+  const bool only_cut_end = w.size() == 1 && log.endsInCutMessage();
+  if (!lenient && !w.empty() && !only_cut_end) {
+    throw std::runtime_error(w.front() + " (use --lenient to skip damaged records and read the rest)");
+  }
+  return log;
+}
+
 }  // namespace wattswath::logs::dataflash

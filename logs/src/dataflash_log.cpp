@@ -168,7 +168,7 @@ void dataflashEvents(const dataflash::Log& L, Raw& raw, bool copter) {
 }  // namespace
 
 FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& opt) {
-  const auto L = dataflash::Log::parse(std::move(bytes), source, opt.lenient);
+  const auto L = dataflash::Log::parseAcceptingCutEnd(std::move(bytes), source, opt.lenient);
   Raw raw;
   raw.format = "dataflash";
   raw.warnings = L.warnings();

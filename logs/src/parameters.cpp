@@ -154,18 +154,8 @@ std::string dataflashVehicle(const dataflash::Log& L, const std::map<std::string
   return frame;
 }
 
-// Parses leniently; unless `lenient`, any problem other than a cut final record (which ArduPilot's
-// logger leaves in every log it stops, long after the parameters) throws like a strict parse.
-dataflash::Log parseDataFlash(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient) {
-  auto L = dataflash::Log::parse(std::move(bytes), source, true);
-  const auto& w = L.warnings();
-  const bool only_cut_end = w.size() == 1 && L.endsInCutMessage();
-  if (!lenient && !w.empty() && !only_cut_end) throw std::runtime_error(w.front() + " (only a lenient read goes on past this)");
-  return L;
-}
-
 AutopilotParameters readDataFlash(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient) {
-  const auto L = parseDataFlash(std::move(bytes), source, lenient);
+  const auto L = dataflash::Log::parseAcceptingCutEnd(std::move(bytes), source, lenient);
   AutopilotParameters out;
   out.source = source;
   out.format = "dataflash";

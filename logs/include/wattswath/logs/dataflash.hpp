@@ -34,6 +34,10 @@ class Log {
   /// of the file) throws std::runtime_error naming the byte offset; with `lenient` true the
   /// reader skips to the next header and records each skip in warnings().
   static Log parse(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient);
+  /// As parse(), but a record cut off by the end of the file (ArduPilot's logger leaves one in every
+  /// log it stops; pymavlink reads such logs) is accepted without `lenient` and kept in warnings();
+  /// any other framing error throws, naming the byte offset and the `--lenient` option.
+  static Log parseAcceptingCutEnd(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient);
 
   /// The format of message `name`, or nullptr when the file defines none.
   const Format* format(const std::string& name) const;
