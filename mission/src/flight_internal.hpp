@@ -2,6 +2,7 @@
 // Private to mission/src: what the behaviour models share (recording the trajectory, limits in SI,
 // the landing descent, hovering in place).
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -92,6 +93,13 @@ inline double kinematicLimit(const Eigen::Vector3d& u, double xy, double up, dou
   if (uxy > 1e-9) lim = std::min(lim, xy / uxy);
   if (std::abs(uz) > 1e-9) lim = std::min(lim, (uz > 0 ? up : down) / std::abs(uz));
   return lim;
+}
+
+/// `x` with up to 4 significant digits, for notes ("2.5", "10", "5.236").
+inline std::string num(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
 }
 
 /// Throws std::invalid_argument naming the autopilot parameter unless lo <= value <= hi.

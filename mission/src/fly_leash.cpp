@@ -230,8 +230,8 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
     if (st.kind == NavStep::Kind::Takeoff) rec.reached(ki);
     rec.completed(ki);
   }
-  rec.note("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + std::to_string(P.accel) + " m/s/s, lean-limited acceleration " +
-           std::to_string(P.accel_max) + " m/s/s, attitude lag " + std::to_string(kAttitudeLag) +
+  rec.note("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + detail::num(P.accel) + " m/s/s, lean-limited acceleration " +
+           detail::num(P.accel_max) + " m/s/s, attitude lag " + detail::num(kAttitudeLag) +
            " s; RTL flies at the last DO_CHANGE_SPEED (3.x overwrites WPNAV_SPEED in memory)");
   return rec.take(steps);
 }

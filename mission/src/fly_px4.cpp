@@ -169,9 +169,9 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
     if (st.kind == NavStep::Kind::Takeoff) rec.reached(ki);
     rec.completed(ki);
   }
-  rec.note("PX4 " + ap.version + " model: MPC_XY_CRUISE " + std::to_string(P.cruise) + " m/s, MPC_ACC_HOR " +
-           std::to_string(P.acc) + " m/s/s, MPC_JERK_AUTO " + std::to_string(P.jerk) + " m/s/s/s, NAV_ACC_RAD " +
-           std::to_string(P.acc_rad) + " m; take-off at MPC_TKO_SPEED; RTL cone not modelled");
+  rec.note("PX4 " + ap.version + " model: MPC_XY_CRUISE " + detail::num(P.cruise) + " m/s, MPC_ACC_HOR " +
+           detail::num(P.acc) + " m/s/s, MPC_JERK_AUTO " + detail::num(P.jerk) + " m/s/s/s, NAV_ACC_RAD " +
+           detail::num(P.acc_rad) + " m; take-off at MPC_TKO_SPEED; RTL cone not modelled");
   return rec.take(steps);
 }
 

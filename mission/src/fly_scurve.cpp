@@ -255,10 +255,10 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       ++k;
     }
   }
-  rec.note("ArduCopter " + ap.version + " S-curve model: WPNAV_SPEED " + std::to_string(P.speed_xy) + " m/s, WPNAV_ACCEL " +
-           std::to_string(P.accel_xy) + " m/s/s, jerk " + std::to_string(P.jerk) + " m/s/s/s, snap " +
-           std::to_string(P.snap) + " m/s^4, WPNAV_RADIUS " + std::to_string(P.radius) + " m, RTL speed " +
-           std::to_string(P.rtl_speed) + " m/s (RTL_SPEED, else WPNAV_SPEED)");
+  rec.note("ArduCopter " + ap.version + " S-curve model: WPNAV_SPEED " + detail::num(P.speed_xy) + " m/s, WPNAV_ACCEL " +
+           detail::num(P.accel_xy) + " m/s/s, jerk " + detail::num(P.jerk) + " m/s/s/s, snap " +
+           detail::num(P.snap) + " m/s^4, WPNAV_RADIUS " + detail::num(P.radius) + " m, RTL speed " +
+           detail::num(P.rtl_speed) + " m/s (RTL_SPEED, else WPNAV_SPEED)");
   return rec.take(steps);
 }
 
