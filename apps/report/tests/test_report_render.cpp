@@ -177,6 +177,13 @@ TEST(ReportRender, PlanReport) { checkReport(wr::planReport(samplePlan()), "samp
 TEST(ReportRender, ValidationReport) { checkReport(wr::validationReport(sampleValidation()), "sample-validation", 6); }
 TEST(ReportRender, TurnReport) { checkReport(wr::turnReport(sampleTurns()), "sample-turns", 2); }
 TEST(ReportRender, SpeedReport) { checkReport(wr::speedReport(sampleSpeed()), "sample-speed", 2); }
+TEST(ReportRender, MissionReport) { checkReport(wr::missionReport(sampleMission()), "sample-mission", 4); }
+TEST(ReportRender, MissionReplayReport) {
+  wr::HtmlReport r("Replay: missions against their logs");
+  wr::addMissionReplay(r, sampleMissionReplay());
+  wr::addValidation(r, sampleValidation());
+  checkReport(r, "sample-replay-mission", 12);
+}
 TEST(ReportRender, VoptCommandReport) {
   checkCommandReport("vopt --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --distance 100", "cli-vopt", 2);
 }
