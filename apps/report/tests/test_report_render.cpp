@@ -205,3 +205,19 @@ TEST(ReportRender, DiagnoseCommandReportOfThreeFlights) {
   }
   checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "'" + logs, "cli-diagnose-3", 8);
 }
+TEST(ReportRender, PredictCommandReport) {
+  // Map, speed, altitude and battery of the IRIS+ mission flown by the ArduCopter 3.x model.
+  const std::string m = sharedData("iris-flights/mission__2017-10-18_1436_energy14.waypoints");
+  if (!fs::exists(m)) GTEST_SKIP() << "no " << m;
+  checkCommandReport("predict '" + m + "' --vehicle '" + sourcePath("data/vehicles/iris-plus-arducopter3.json") + "'",
+                     "cli-predict", 4);
+}
+TEST(ReportRender, ReplayMissionCommandReport) {
+  // The mission section (speed, leg energy, leg time) and the validation (power, 3 residuals, legs).
+  const std::string f = sharedData("iris-flights/2017-10-18_1436_energy14.csv");
+  const std::string m = sharedData("iris-flights/mission__2017-10-18_1436_energy14.waypoints");
+  if (!fs::exists(f) || !fs::exists(m)) GTEST_SKIP() << "no " << f << " or " << m;
+  checkCommandReport("replay --vehicle '" + sourcePath("data/vehicles/iris-plus-arducopter3.json") + "' --log '" + f +
+                         "' --mission '" + m + "'",
+                     "cli-replay-mission", 8);
+}
