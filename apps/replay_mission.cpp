@@ -113,7 +113,9 @@ MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given
   }
   const std::string model_text = use_cal ? "the vehicle file's calibration" : "--effects";
   MissionReplays out;
-  out.report.model = use_cal ? "the vehicle file's calibration" : "the --effects model";
+  std::string effects;
+  for (const auto& e : model.effectNames()) effects += (effects.empty() ? "" : ", ") + e;
+  out.report.model = effects + (use_cal ? " (the vehicle file's calibration)" : " (--effects)");
   out.report.autopilot = mission::toString(ap.family);
   for (std::size_t i = 0; i < log_paths.size(); ++i) {
     calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]),

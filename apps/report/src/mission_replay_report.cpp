@@ -38,7 +38,11 @@ std::string pct(double a, double b) {
   return (p > 0 ? "+" : "") + formatNumber(p, 1) + " %";
 }
 
-std::string kJWh(double j) { return kJ(j) + " kJ (" + formatNumber(j / 3600.0, 1) + " Wh)"; }
+/// Energy [J] as "74.7 kJ" (a tenth of a kJ: the measurement is not better than that).
+std::string kJ1(double j) { return formatNumber(j / 1000.0, 1) + " kJ"; }
+
+/// Energy [J] as "74.7 kJ (20.8 Wh)".
+std::string kJWh(double j) { return kJ1(j) + " (" + formatNumber(j / 3600.0, 1) + " Wh)"; }
 
 void speedFigure(HtmlReport& r, const MissionReplayFlight& f, const std::string& suffix) {
   LineChart c;
@@ -107,17 +111,17 @@ void flightSection(HtmlReport& r, const MissionReplayFlight& f, const std::strin
   r.heading((several ? "Flight " + suffix.substr(1) + ": " : std::string()) + f.name + " against " + f.mission, 3);
   const double kin = f.predicted_energy_j - f.replay_energy_j, phys = f.replay_energy_j - f.measured_energy_j;
   r.facts({{"measured", kJWh(f.measured_energy_j) + " in " + formatMinSec(f.measured_time_s) + " min:s"},
-           {"predicted", kJWh(f.predicted_energy_j) + " (" + pct(f.predicted_energy_j, f.measured_energy_j) + ") in " +
-                             formatMinSec(f.predicted_time_s) + " min:s (" +
-                             pct(f.predicted_time_s, f.measured_time_s) + ")"},
-           {"energy error split", "kinematics " + kJ(kin) + " kJ, physics " + kJ(phys) + " kJ"},
+           {"predicted", kJWh(f.predicted_energy_j) + " in " + formatMinSec(f.predicted_time_s) + " min:s: energy " +
+                             pct(f.predicted_energy_j, f.measured_energy_j) + ", time " +
+                             pct(f.predicted_time_s, f.measured_time_s)},
+           {"energy error split", "kinematics " + kJ1(kin) + ", physics " + kJ1(phys)},
            {"leg time error (MAPE)",
             std::isfinite(f.leg_time_mape_pct)
                 ? formatNumber(f.leg_time_mape_pct, 1) + " % over " + std::to_string(f.legs.size()) + " legs"
                 : std::string("no leg matched")}});
   r.paragraph("Kinematics: the predicted flight minus the same energy model on the logged kinematics (" +
-              kJ(f.replay_energy_j) +
-              " kJ), i.e. what the flight-behaviour model gets wrong. Physics: that replay minus "
+              kJ1(f.replay_energy_j) +
+              "), i.e. what the flight-behaviour model gets wrong. Physics: that replay minus "
               "the measurement, i.e. what the energy model gets wrong on the flight as flown.");
   if (!f.measured_t.empty() || !f.predicted_t.empty()) speedFigure(r, f, suffix);
   if (f.legs.empty()) {
@@ -128,8 +132,8 @@ void flightSection(HtmlReport& r, const MissionReplayFlight& f, const std::strin
             "Energy of each leg between consecutive waypoint passages, measured (logged power) and predicted. Totals: "
             "measured " +
                 kJWh(f.measured_energy_j) + ", predicted " + kJWh(f.predicted_energy_j) + " (" +
-                pct(f.predicted_energy_j, f.measured_energy_j) + "); kinematics " + kJ(kin) + " kJ, physics " +
-                kJ(phys) + " kJ."});
+                pct(f.predicted_energy_j, f.measured_energy_j) + "); kinematics " + kJ1(kin) + ", physics " + kJ1(phys) +
+                "."});
   r.figure(
       {"mission-leg-time" + suffix, renderSvg(legBars(f, "Time per leg", {"time", "s"}, 1.0, false)),
        "Time of each leg between consecutive waypoint passages (the log is sampled at its own rate, so each passage "

@@ -199,8 +199,8 @@ TEST(Reports, MissionReplayAddsSpeedLegEnergyAndLegTimePerFlight) {
   for (const char* text : {"Speed along the path: predicted and measured", "time since the take-off command [s]", "speed [m/s]",
                            "Energy per leg", "energy [kJ]", "Time per leg", "time [s]", "measured (log)",
                            "predicted from the mission", ">3-5</text>", "mission &lt;2&gt;.waypoints",
-                           "kinematics -5.149 kJ, physics -1.989 kJ", "74.735 kJ (20.8 Wh) in 5:32 min:s",
-                           "67.597 kJ (18.8 Wh) (-9.6 %) in 5:07 min:s (-7.5 %)", "14.4 % over 7 legs",
+                           "kinematics -5.1 kJ, physics -2.0 kJ", "74.7 kJ (20.8 Wh) in 5:32 min:s",
+                           "67.6 kJ (18.8 Wh) in 5:07 min:s: energy -9.6 %, time -7.5 %", "14.4 % over 7 legs",
                            "waypoint 11 passed (measured) at 2:34 min:s"}) {
     EXPECT_NE(html.find(text), std::string::npos) << text;
   }
