@@ -7,8 +7,7 @@
 #include <sstream>
 
 #include "cli.hpp"
-#include "wattswath/calibration/mission_calibration.hpp"
-#include "wattswath/mission/files.hpp"
+#include "replay_mission.hpp"
 #include "report_data.hpp"
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/logs/log_io.hpp"
@@ -107,80 +106,9 @@ void printMetrics(const std::string& label, const calibration::ErrorMetrics& m) 
             << " %, leg-energy MAPE " << m.leg_energy_mape_pct << " %\n";
 }
 
-json numOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
-
-// Each logged flight against its mission's prediction, leg by leg (calibration/mission_calibration.hpp).
-json missionComparisons(const en::Vehicle& v, const en::EnergyModel& given, bool effects_given,
-                        const std::vector<std::string>& log_paths, const std::vector<std::string>& mission_paths,
-                        const std::vector<calibration::LogReplay>& reps, const logs::LogReadOptions& read) {
-  const auto cal = calibration::calibratedModel(v);
-  const bool use_cal = cal && !effects_given;
-  const en::EnergyModel& model = use_cal ? cal->model : given;
-  const auto ap = mission::parseAutopilot(v.autopilot_json, v.name);
-  mission::PredictSettings ps;
-  if (use_cal) {
-    if (cal->takeoff_delay_s >= 0.0) ps.flight.takeoff_delay_s = cal->takeoff_delay_s;
-    ps.flight.stop_at_waypoints = cal->stop_at_waypoints;
-    ps.flight.speed_change_late = cal->speed_change_late;
-  }
-  json out = json::array();
-  for (std::size_t i = 0; i < log_paths.size(); ++i) {
-    calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]), logs::readFlightLog(log_paths[i], read)};
-    const auto c = calibration::compareFlight(f, v, model, ap, ps);
-    // Physics: the same model on the logged kinematics (replay) against the measurement;
-    // kinematics: the predicted flight against that replay.
-    const double replay_j = use_cal ? calibration::replay(model, calibration::prepareLog(f.log)).flight.modelled_j
-                                    : reps[i].flight.modelled_j;
-    json legs = json::array();
-    for (std::size_t k = 0; k < c.measured.leg_s.size() && k < c.predicted.leg_s.size(); ++k) {
-      legs.push_back({{"leg", k + 1},
-                      {"measured_time_s", numOrNull(c.measured.leg_s[k])},
-                      {"predicted_time_s", numOrNull(c.predicted.leg_s[k])},
-                      {"measured_speed_mps", numOrNull(c.measured.leg_speed_mps[k])},
-                      {"predicted_speed_mps", numOrNull(c.predicted.leg_speed_mps[k])},
-                      {"measured_energy_j", numOrNull(c.measured.leg_energy_j[k])},
-                      {"predicted_energy_j", numOrNull(c.predicted.leg_energy_j[k])}});
-    }
-    out.push_back({{"log", log_paths[i]},
-                   {"mission", mission_paths[i]},
-                   {"model", use_cal ? "the vehicle file's calibration" : "--effects"},
-                   {"autopilot", mission::toString(ap.family)},
-                   {"measured_energy_j", c.measured.energy_j},
-                   {"predicted_energy_j", c.predicted.energy_j},
-                   {"replay_energy_j", replay_j},
-                   {"kinematics_error_j", c.predicted.energy_j - replay_j},
-                   {"physics_error_j", replay_j - c.measured.energy_j},
-                   {"measured_time_s", c.measured.total_s},
-                   {"predicted_time_s", c.predicted.total_s},
-                   {"time_error_pct", c.time_error_pct},
-                   {"energy_error_pct", c.energy_error_pct},
-                   {"leg_time_mape_pct", numOrNull(c.leg_time_mape_pct)},
-                   {"legs_matched", c.legs_matched},
-                   {"log_offset_m", {c.offset.x(), c.offset.y()}},
-                   {"legs", legs}});
-  }
-  return out;
-}
-
-void printMissionComparisons(const json& missions) {
-  for (const auto& m : missions) {
-    std::cout << m["log"].get<std::string>() << " against " << m["mission"].get<std::string>() << " (" << m["autopilot"].get<std::string>()
-              << ", " << m["model"].get<std::string>() << "):\n  time " << m["predicted_time_s"].get<double>() << " s predicted vs "
-              << m["measured_time_s"].get<double>() << " s measured (" << m["time_error_pct"].get<double>() << " %), energy "
-              << m["predicted_energy_j"].get<double>() << " J vs " << m["measured_energy_j"].get<double>() << " J ("
-              << m["energy_error_pct"].get<double>() << " %): kinematics " << m["kinematics_error_j"].get<double>()
-              << " J, physics " << m["physics_error_j"].get<double>() << " J\n  leg  measured s  predicted s  measured J  predicted J\n";
-    for (const auto& l : m["legs"]) {
-      auto f = [](const json& x) { return x.is_null() ? std::string("-") : std::to_string(static_cast<long>(std::lround(x.get<double>()))); };
-      std::cout << "  " << l["leg"].get<int>() << "  " << f(l["measured_time_s"]) << "  " << f(l["predicted_time_s"]) << "  "
-                << f(l["measured_energy_j"]) << "  " << f(l["predicted_energy_j"]) << "\n";
-    }
-  }
-}
-
 void registerReplay(CLI::App& app) {
   struct Opts {
-    std::string vehicle, effects = kPaperEffects, samples_out, plan;
+    std::string vehicle, effects = kPaperEffects, samples_out, plan, report, report_svg;
     std::vector<std::string> logs, missions;
     logs::LogReadOptions read;
     calibration::PlanPredictionSettings plan_settings;
@@ -211,18 +139,18 @@ void registerReplay(CLI::App& app) {
       ->check(CLI::Range(0.0, 50.0))
       ->capture_default_str();
   addLogReadOptions(cmd, o->read);
-  addForceFlag(cmd, o->force);
+  addReportOptions(cmd, o->report, o->report_svg, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o, effects_opt]() {
     if (!o->missions.empty() && o->missions.size() != o->logs.size()) {
       throw std::runtime_error("replay: " + std::to_string(o->logs.size()) + " --log but " + std::to_string(o->missions.size()) +
                                " --mission; give one mission per log, in the same order");
     }
-    if (!o->samples_out.empty()) {
-      auto inputs = o->logs;
-      inputs.push_back(o->vehicle);
-      checkWritable(o->samples_out, o->force, inputs);
-    }
+    auto inputs = o->logs;
+    inputs.insert(inputs.end(), o->missions.begin(), o->missions.end());
+    inputs.push_back(o->vehicle);
+    if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, inputs);
+    checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
     const auto logs = prepareAll(o->logs, o->read);
@@ -254,8 +182,18 @@ void registerReplay(CLI::App& app) {
                          {"physics_error_j", c.physicsErrorJ()}});
       }
     }
-    const json missions = o->missions.empty() ? json(nullptr)
-                                              : missionComparisons(v, model, effects_opt->count() > 0, o->logs, o->missions, reps, o->read);
+    const MissionReplays missions = o->missions.empty() ? MissionReplays{}
+                                                        : missionReplays(v, model, effects_opt->count() > 0, o->logs, o->missions, reps, o->read);
+    if (!o->report.empty() || !o->report_svg.empty()) {
+      // With --mission the mission section comes first, then the model on the logged kinematics.
+      auto data = validationFromReplays(reps);
+      data.facts.insert(data.facts.begin(), {{"vehicle", v.name}, {"model", o->effects + " (as given by the vehicle's physics)"}});
+      report::HtmlReport page(o->missions.empty() ? "wattswath replay" : "wattswath replay: missions against their logs");
+      page.facts(data.facts);
+      if (!o->missions.empty()) report::addMissionReplay(page, missions.report);
+      report::addValidation(page, data);
+      writeReport(page, o->report, o->report_svg, o->force);
+    }
     if (!o->samples_out.empty()) {
       std::ostringstream os;
       os << "log,time_s,phase,leg,measured_w,modelled_w,speed_mps,climb_rate_mps,acceleration_mps2,heading_rad\n";
@@ -272,10 +210,10 @@ void registerReplay(CLI::App& app) {
                  {"flights", flightsJson(reps)},
                  {"residuals", residualsJson(calibration::residualTables(reps))},
                  {"plan_prediction", o->plan.empty() ? json(nullptr) : plans},
-                 {"mission_prediction", missions}});
+                 {"mission_prediction", o->missions.empty() ? json(nullptr) : missions.json}});
       return;
     }
-    if (!missions.is_null()) printMissionComparisons(missions);
+    if (!o->missions.empty()) printMissionReplays(missions.json);
     printMetrics("model " + o->effects, m);
     for (const auto& r : reps) {
       std::cout << r.source << ": measured " << r.flight.measured_j << " J, modelled " << r.flight.modelled_j << " J ("

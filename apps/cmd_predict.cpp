@@ -1,15 +1,19 @@
 // wattswath predict MISSION --vehicle V: energy, time and battery of a mission file flown by the
 // vehicle's autopilot (mission/predict.hpp).
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "cli.hpp"
+#include "report_data.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/predict.hpp"
+#include "wattswath/report/reports.hpp"
+#include "wattswath/report/svg.hpp"
 
 namespace wattswath::apps {
 namespace {
@@ -18,7 +22,7 @@ namespace en = wattswath::energy;
 namespace ms = wattswath::mission;
 
 struct PredictOptions {
-  std::string mission, vehicle, effects, samples_out;
+  std::string mission, vehicle, effects, samples_out, report, report_svg;
   double reserve_pct = 25.0;
   bool json = false, lenient = false, force = false;
 };
@@ -27,11 +31,34 @@ nlohmann::json totalsJson(const ms::Totals& t) {
   return {{"energy_j", t.energy_j}, {"energy_wh", t.energy_j / 3600.0}, {"time_s", t.time_s}, {"distance_m", t.distance_m}};
 }
 
-std::string minutesSeconds(double s) {
-  std::ostringstream os;
-  const long whole = std::lround(s);
-  os << whole / 60 << ":" << std::setw(2) << std::setfill('0') << whole % 60;
-  return os.str();
+std::string minutesSeconds(double s) { return report::formatMinSec(s); }
+
+// Which energy model predicted: its effects and where they come from.
+std::string modelText(const en::EnergyModel& model, bool calibrated) {
+  std::string names;
+  for (const auto& e : model.effectNames()) names += (names.empty() ? "" : ", ") + e;
+  return names + (calibrated ? " (the vehicle file's calibration)" : " (the vehicle's physics)");
+}
+
+// The mission report: the prediction's figures and tables with the inputs as facts.
+report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap, const en::Vehicle& v,
+                                 const std::string& model, const PredictOptions& o) {
+  auto d = missionReportData(p, o.reserve_pct);
+  d.title = "wattswath predict: " + std::filesystem::path(o.mission).filename().string();
+  d.facts = {{"mission", o.mission},
+             {"vehicle", v.name + " (" + o.vehicle + ")"},
+             {"flown by", ap.firmware + " " + ap.version + " (" + ms::toString(ap.family) + " model" +
+                              (ap.from_file ? ")" : ", firmware defaults)")},
+             {"energy model", model},
+             {"take-off to landing", minutesSeconds(p.total.time_s) + " min:s, " + report::formatNumber(p.total.energy_j / 3600.0, 1) +
+                                         " Wh (" + report::formatNumber(p.total.energy_j, 0) + " J), " +
+                                         report::formatNumber(p.total.distance_m, 0) + " m"}};
+  if (p.battery.known) {
+    d.facts.push_back({"battery at landing", report::formatNumber(100.0 * p.battery.usable_left_end, 1) + " % usable left (reserve " +
+                                                 report::formatNumber(o.reserve_pct, 0) + " %)"});
+  }
+  for (const auto& w : p.warnings) d.facts.push_back({"note", w});
+  return report::missionReport(d);
 }
 
 nlohmann::json toJson(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap, const PredictOptions& o) {
@@ -112,10 +139,11 @@ void registerPredictCommand(CLI::App& app) {
   cmd->add_option("--reserve", o->reserve_pct, "Usable charge to keep on landing [%]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
   cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
   cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
-  addForceFlag(cmd, o->force);
+  addReportOptions(cmd, o->report, o->report_svg, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o] {
     if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, {o->mission, o->vehicle});
+    checkReportWritable(o->report, o->report_svg, o->force, {o->mission, o->vehicle, o->samples_out});
     const en::Vehicle v = en::loadVehicle(o->vehicle);
     const auto calibrated = wattswath::calibration::calibratedModel(v);
     const bool use_calibration = calibrated && o->effects.empty();
@@ -135,6 +163,9 @@ void registerPredictCommand(CLI::App& app) {
     }
     const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, ps);
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
+    if (!o->report.empty() || !o->report_svg.empty()) {
+      writeReport(missionReport(p, ap, v, modelText(model, use_calibration), *o), o->report, o->report_svg, o->force);
+    }
     if (o->json) {
       printJson(toJson(p, ap, *o));
     } else {

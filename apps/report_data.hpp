@@ -11,6 +11,7 @@
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/turns.hpp"
+#include "wattswath/mission/predict.hpp"
 #include "wattswath/report/reports.hpp"
 
 namespace wattswath::apps {
@@ -38,5 +39,9 @@ std::string fittedValuesText(const std::vector<calibration::FittedCoefficient>& 
 
 /// The diagnosis table rows (best first) from a diagnosis.
 std::vector<report::DiagnosisRow> diagnosisRows(const calibration::Diagnosis& d);
+
+/// The mission report's trajectory, items, phase totals, battery and verdict from a prediction
+/// (facts are left to the command); `reserve_pct` [%] is the reserve line.
+report::MissionReportData missionReportData(const mission::MissionPrediction& p, double reserve_pct);
 
 }  // namespace wattswath::apps

@@ -1,4 +1,4 @@
-// Line, bar and map figures rendered to self-contained SVG with the SvgWriter.
+// Line and bar figures rendered to self-contained SVG with the SvgWriter.
 #include "wattswath/report/charts.hpp"
 
 #include <algorithm>
@@ -7,37 +7,13 @@
 #include <map>
 #include <stdexcept>
 
+#include "chart_common.hpp"
 #include "wattswath/report/svg.hpp"
 
 namespace wattswath::report {
 
-namespace {
+namespace detail {
 
-constexpr double kCharWidth = 6.6;  // [px] rough width of one 12 px character, for layout
-constexpr double kLegendRow = 18.0;  // [px]
-const char* const kGrid = "#e3e3e3";
-const char* const kInk = "#222222";
-
-double textWidth(const std::string& s, double font = 12.0) { return kCharWidth * font / 12.0 * static_cast<double>(s.size()); }
-
-std::string axisTitle(const Axis& a, const char* which) {
-  if (a.label.empty() || a.unit.empty()) {
-    throw std::invalid_argument(std::string("chart: the ") + which + " axis needs a label and a unit (got label '" +
-                                a.label + "', unit '" + a.unit + "')");
-  }
-  return a.label + " [" + a.unit + "]";
-}
-
-/// Legend entry kinds.
-enum class LegendKind { Line, Points, Swatch };
-struct LegendItem {
-  std::string name;
-  std::string colour;
-  std::string dash;
-  LegendKind kind = LegendKind::Line;
-};
-
-/// Rows needed to lay the legend out in `width` px.
 std::vector<std::vector<LegendItem>> legendRows(const std::vector<LegendItem>& items, double width) {
   std::vector<std::vector<LegendItem>> rows;
   double x = 0.0;
@@ -73,6 +49,20 @@ void drawLegend(SvgWriter& svg, const std::vector<std::vector<LegendItem>>& rows
     }
     y += kLegendRow;
   }
+}
+
+}  // namespace detail
+
+using namespace detail;
+
+namespace {
+
+std::string axisTitle(const Axis& a, const char* which) {
+  if (a.label.empty() || a.unit.empty()) {
+    throw std::invalid_argument(std::string("chart: the ") + which + " axis needs a label and a unit (got label '" +
+                                a.label + "', unit '" + a.unit + "')");
+  }
+  return a.label + " [" + a.unit + "]";
 }
 
 /// Maps data values to pixels along one axis.
@@ -113,18 +103,6 @@ Ticks axisTicks(const Axis& a, double lo, double hi) {
   }
   return t;
 }
-
-/// Running min/max over finite values.
-struct Range {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v, bool log) {
-    if (!std::isfinite(v) || (log && v <= 0.0)) return;
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  bool empty() const { return lo > hi; }
-};
 
 /// Clips segment (x0,y0)-(x1,y1) to the box (Liang-Barsky). Returns false when fully outside.
 bool clipSegment(double& x0, double& y0, double& x1, double& y1, double bx0, double by0, double bx1, double by1) {
@@ -183,6 +161,39 @@ void checkSeries(const Series& s, std::size_t index) {
   }
 }
 
+/// Event ticks just outside the top or bottom edge of the plot [px box], in x order per edge;
+/// labels left out where they would overlap the previous one on the same edge.
+void drawEvents(SvgWriter& svg, const std::vector<XEvent>& events, const Scale& sx, double px0, double py0, double px1,
+                double py1) {
+  if (events.empty()) return;
+  std::vector<const XEvent*> order;
+  for (const auto& e : events) {
+    if (sx.valid(e.x) && sx(e.x) >= px0 - 0.5 && sx(e.x) <= px1 + 0.5) order.push_back(&e);
+  }
+  std::stable_sort(order.begin(), order.end(), [](const XEvent* a, const XEvent* b) { return a->x < b->x; });
+  double lastEnd[2] = {-1e300, -1e300};  // [px] right end of the last label, top and bottom
+  svg.open("g", {{"class", "events"}, {"font-size", "10"}});
+  for (const XEvent* e : order) {
+    const double X = sx(e->x);
+    svg.open("g", {});
+    if (!e->tooltip.empty()) svg.title(e->tooltip);
+    if (e->bottom) {
+      svg.line(X, py1, X, py1 + 6, {{"stroke", e->colour}, {"stroke-width", "1.6"}});
+    } else {
+      svg.line(X, py0 - 6, X, py0, {{"stroke", e->colour}, {"stroke-width", "1.6"}});
+    }
+    const double w = 1.15 * textWidth(e->label, 10.0);
+    double& last = lastEnd[e->bottom ? 1 : 0];
+    const double lx = std::clamp(X, px0 + w / 2, std::max(px0 + w / 2, px1 - w / 2));  // inside the plot's width
+    if (!e->label.empty() && lx - w / 2 > last + 4) {
+      svg.text(lx, e->bottom ? py1 + 16 : py0 - 8, e->label, {{"text-anchor", "middle"}, {"fill", e->colour}});
+      last = lx + w / 2;
+    }
+    svg.close();
+  }
+  svg.close();
+}
+
 }  // namespace
 
 std::string renderSvg(const LineChart& c) {
@@ -208,6 +219,7 @@ std::string renderSvg(const LineChart& c) {
     xr.add(r.x0, c.x.log);
     xr.add(r.x1, c.x.log);
   }
+  for (const auto& e : c.events) xr.add(e.x, c.x.log);
   if (c.y_ref) yr.add(*c.y_ref, c.y.log);
   if (xr.empty()) xr = {c.x.log ? 1.0 : 0.0, c.x.log ? 10.0 : 1.0};
   if (yr.empty()) yr = {c.y.log ? 1.0 : 0.0, c.y.log ? 10.0 : 1.0};
@@ -234,7 +246,12 @@ std::string renderSvg(const LineChart& c) {
   std::size_t ylabel_chars = 0;
   for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
   const double left = 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
-  const double right = 18.0, top = c.title.empty() ? 12.0 : 32.0, bottom = 46.0;
+  // Event ticks sit outside the plot (above it, or between it and the x tick labels): they never hide data.
+  const auto onEdge = [&](bool bottomEdge) {
+    return std::any_of(c.events.begin(), c.events.end(), [&](const XEvent& e) { return e.bottom == bottomEdge; });
+  };
+  const double eventsTop = onEdge(false) ? 16.0 : 0.0, eventsBottom = onEdge(true) ? 16.0 : 0.0;
+  const double right = 18.0, top = (c.title.empty() ? 12.0 : 32.0) + eventsTop, bottom = 46.0 + eventsBottom;
   const auto rows = legendRows(items, c.width - left - right);
   const double height = c.height + kLegendRow * static_cast<double>(rows.size()) + (rows.empty() ? 0.0 : 6.0);
   const double px0 = left, px1 = c.width - right, py0 = top, py1 = c.height - bottom;
@@ -262,13 +279,13 @@ std::string renderSvg(const LineChart& c) {
   svg.close();
   svg.open("g", {{"class", "ticks"}, {"fill", kInk}, {"font-size", "11"}});
   for (std::size_t i = 0; i < xt.values.size(); ++i) {
-    svg.text(sx(xt.values[i]), py1 + 15, xt.labels[i], {{"text-anchor", "middle"}});
+    svg.text(sx(xt.values[i]), py1 + 15 + eventsBottom, xt.labels[i], {{"text-anchor", "middle"}});
   }
   for (std::size_t i = 0; i < yt.values.size(); ++i) {
     svg.text(px0 - 5, sy(yt.values[i]) + 4, yt.labels[i], {{"text-anchor", "end"}});
   }
   svg.close();
-  svg.text((px0 + px1) / 2, py1 + 34, xtitle, {{"text-anchor", "middle"}, {"fill", kInk}});
+  svg.text((px0 + px1) / 2, py1 + 34 + eventsBottom, xtitle, {{"text-anchor", "middle"}, {"fill", kInk}});
   svg.text(0, 0, ytitle,
            {{"text-anchor", "middle"}, {"fill", kInk},
             {"transform", "translate(14," + svgNum((py0 + py1) / 2) + ") rotate(-90)"}});
@@ -349,6 +366,7 @@ std::string renderSvg(const LineChart& c) {
     svg.text(X + (leftSide ? -9 : 9), Y - 8, m.label, {{"fill", m.colour}, {"text-anchor", leftSide ? "end" : "start"}, {"font-weight", "bold"}});
     svg.close();
   }
+  drawEvents(svg, c.events, sx, px0, py0, px1, py1);
   svg.rect(px0, py0, px1 - px0, py1 - py0, {{"fill", "none"}, {"stroke", "#888888"}, {"stroke-width", "1"}});
   drawLegend(svg, rows, px0, c.height - 4);
   return svg.str();
@@ -417,7 +435,8 @@ std::string renderSvg(const BarChart& c) {
   const double barw = c.stacked || ns == 0 ? group : group / static_cast<double>(ns);
   for (std::size_t k = 0; k < nc; ++k) {
     const double gx = px0 + band * static_cast<double>(k) + (band - group) / 2;
-    const double fs = std::min(12.0, std::max(8.0, band / std::max<std::size_t>(1, c.categories[k].size()) / 0.6));
+    // Category labels shrink (down to 8 px) to keep a gap to their neighbours.
+    const double fs = std::min(12.0, std::max(8.0, (band - 5.0) / std::max<std::size_t>(1, c.categories[k].size()) / 0.62));
     svg.text(px0 + band * (static_cast<double>(k) + 0.5), py1 + 16, c.categories[k],
              {{"text-anchor", "middle"}, {"fill", kInk}, {"font-size", svgNum(fs)}});
     double pos = 0.0, neg = 0.0;
@@ -451,141 +470,6 @@ std::string renderSvg(const BarChart& c) {
   if (sy.valid(0.0) && yt.lo <= 0.0 && yt.hi >= 0.0) svg.line(px0, sy(0.0), px1, sy(0.0), {{"stroke", "#444444"}});
   svg.rect(px0, py0, px1 - px0, py1 - py0, {{"fill", "none"}, {"stroke", "#888888"}});
   drawLegend(svg, rows, px0, c.height - 4);
-  return svg.str();
-}
-
-std::string renderSvg(const MapView& m) {
-  Range xr, yr, vr;
-  auto addPt = [&](const geometry::Point& p) {
-    xr.add(p.x(), false);
-    yr.add(p.y(), false);
-  };
-  for (const auto& a : m.areas) {
-    for (const auto& p : a.outer) addPt(p);
-    for (const auto& h : a.holes) for (const auto& p : h) addPt(p);
-  }
-  for (const auto& z : m.no_fly) for (const auto& p : z) addPt(p);
-  for (const auto& l : m.path) {
-    for (const auto& p : l.points) addPt(p);
-    vr.add(l.value, false);
-  }
-  for (const auto& k : m.markers) addPt(k.position);
-  if (xr.empty() || yr.empty()) throw std::invalid_argument("map '" + m.title + "': nothing to draw");
-  const bool hasPath = !m.path.empty();
-  if (hasPath && (m.value_label.empty() || m.value_unit.empty())) {
-    throw std::invalid_argument("map '" + m.title + "': the path colour needs value_label and value_unit");
-  }
-  const double top = m.title.empty() ? 12.0 : 32.0, bottom = 12.0, left = 12.0;
-  const double right = hasPath ? 110.0 : 12.0;
-  const double pw = m.width - left - right, ph = m.height - top - bottom;
-  const double dx = std::max(xr.hi - xr.lo, 1.0), dy = std::max(yr.hi - yr.lo, 1.0);
-  const double scale = 0.94 * std::min(pw / dx, ph / dy);  // [px/m]
-  const double cx = (xr.lo + xr.hi) / 2, cy = (yr.lo + yr.hi) / 2;
-  const double ox = left + pw / 2, oy = top + ph / 2;
-  auto X = [&](double x) { return ox + (x - cx) * scale; };
-  auto Y = [&](double y) { return oy - (y - cy) * scale; };
-  auto ringData = [&](const geometry::Ring& r) {
-    std::string d;
-    for (std::size_t i = 0; i < r.size(); ++i) d += (i ? "L" : "M") + svgNum(X(r[i].x())) + " " + svgNum(Y(r[i].y()));
-    return d + "Z";
-  };
-
-  SvgWriter svg(m.width, m.height);
-  svg.rect(0, 0, m.width, m.height, {{"fill", "#ffffff"}});
-  if (!m.title.empty()) svg.text(left, 20, m.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
-  for (const auto& a : m.areas) {
-    std::string d = ringData(a.outer);
-    for (const auto& h : a.holes) d += ringData(h);
-    svg.open("path", {{"d", d}, {"fill", "#e8eef3"}, {"fill-rule", "evenodd"}, {"stroke", "#4d4d4d"}, {"stroke-width", "1.4"}});
-    svg.title("survey area: " + formatNumber(geometry::area(a) / 1e4, 3) + " ha, " + std::to_string(a.holes.size()) + " hole(s)");
-    svg.close();
-  }
-  for (const auto& z : m.no_fly) {
-    svg.open("path", {{"d", ringData(z)}, {"fill", "#D55E00"}, {"fill-opacity", "0.22"}, {"stroke", "#D55E00"},
-                      {"stroke-width", "1.4"}, {"stroke-dasharray", "5 3"}});
-    svg.title("no-fly zone");
-    svg.close();
-  }
-  const double vlo = vr.empty() ? 0.0 : vr.lo, vhi = vr.empty() ? 1.0 : (vr.hi > vr.lo ? vr.hi : vr.lo + 1.0);
-  svg.open("g", {{"class", "path"}, {"fill", "none"}, {"stroke-width", "2.6"}, {"stroke-linecap", "round"}, {"stroke-linejoin", "round"}});
-  for (const auto& l : m.path) {
-    std::vector<std::pair<double, double>> pts;
-    for (const auto& p : l.points) {
-      if (std::isfinite(p.x()) && std::isfinite(p.y())) pts.push_back({X(p.x()), Y(p.y())});
-    }
-    if (pts.size() < 2) continue;
-    Attrs a = {{"points", svgPoints(pts)}, {"stroke", valueColour((l.value - vlo) / (vhi - vlo))}};
-    if (l.dashed) a.push_back({"stroke-dasharray", "6 4"});
-    svg.open("polyline", a);
-    if (!l.tooltip.empty()) svg.title(l.tooltip);
-    svg.close();
-  }
-  svg.close();
-  for (const auto& k : m.markers) {
-    const double x = X(k.position.x()), y = Y(k.position.y());
-    svg.open("g", {{"class", "marker"}});
-    svg.title(k.label + " (" + formatNumber(k.position.x(), 1) + " m E, " + formatNumber(k.position.y(), 1) + " m N)");
-    const Attrs style = {{"fill", k.colour}, {"stroke", "#ffffff"}, {"stroke-width", "1.5"}};
-    Attrs a;
-    if (k.shape == MapMarker::Shape::Square) {
-      a = {{"x", svgNum(x - 6)}, {"y", svgNum(y - 6)}, {"width", "12"}, {"height", "12"}};
-      a.insert(a.end(), style.begin(), style.end());
-      svg.leaf("rect", a);
-    } else if (k.shape == MapMarker::Shape::Triangle) {
-      a = {{"points", svgPoints({{x, y - 8}, {x - 7, y + 5}, {x + 7, y + 5}})}};
-      a.insert(a.end(), style.begin(), style.end());
-      svg.leaf("polygon", a);
-    } else {
-      a = {{"cx", svgNum(x)}, {"cy", svgNum(y)}, {"r", "6"}};
-      a.insert(a.end(), style.begin(), style.end());
-      svg.leaf("circle", a);
-    }
-    svg.text(x + 9, y - 7, k.label, {{"fill", k.colour}, {"font-weight", "bold"}, {"stroke", "#ffffff"},
-                                     {"stroke-width", "3"}, {"paint-order", "stroke"}});
-    svg.close();
-  }
-  // North arrow (top left of the map area).
-  svg.open("g", {{"class", "north"}, {"fill", kInk}});
-  svg.leaf("polygon", {{"points", svgPoints({{left + 14, top + 4}, {left + 8, top + 20}, {left + 14, top + 16}, {left + 20, top + 20}})}});
-  svg.text(left + 14, top + 33, "N", {{"text-anchor", "middle"}, {"font-weight", "bold"}});
-  svg.close();
-  // Scale bar: a round length near a fifth of the map width.
-  {
-    const double target = 0.2 * pw / scale;
-    const double mag = std::pow(10.0, std::floor(std::log10(target)));
-    double len = mag;
-    for (const double f : {1.0, 2.0, 5.0}) {
-      if (f * mag <= target) len = f * mag;
-    }
-    const double bx = left + 8, by = m.height - bottom - 10, bw = len * scale;
-    svg.open("g", {{"class", "scalebar"}});
-    svg.rect(bx, by - 5, bw / 2, 5, {{"fill", kInk}});
-    svg.rect(bx + bw / 2, by - 5, bw / 2, 5, {{"fill", "#ffffff"}, {"stroke", kInk}});
-    const std::string label = len >= 1000 ? formatNumber(len / 1000, len >= 10000 ? 0 : 1) + " km" : formatNumber(len, len < 1 ? 2 : 0) + " m";
-    svg.text(bx + bw + 6, by, label, {{"fill", kInk}, {"font-size", "11"}});
-    svg.close();
-  }
-  // Colour bar.
-  if (hasPath) {
-    const double bx = m.width - right + 22, bw = 16, b0 = top + 30, b1 = m.height - bottom - 30;
-    const int n = 48;
-    svg.open("g", {{"class", "colourbar"}});
-    svg.text(bx - 6, top + 12, m.value_label, {{"fill", kInk}});
-    svg.text(bx - 6, top + 26, "[" + m.value_unit + "]", {{"fill", kInk}});
-    for (int i = 0; i < n; ++i) {
-      const double t0 = static_cast<double>(i) / n;
-      svg.rect(bx, b1 - (b1 - b0) * (t0 + 1.0 / n), bw, (b1 - b0) / n + 0.6, {{"fill", valueColour(t0 + 0.5 / n)}});
-    }
-    svg.rect(bx, b0, bw, b1 - b0, {{"fill", "none"}, {"stroke", "#666666"}});
-    const Ticks t = niceTicks(vlo, vhi, 5);
-    for (std::size_t i = 0; i < t.values.size(); ++i) {
-      if (t.values[i] < vlo - 1e-9 * (vhi - vlo) || t.values[i] > vhi + 1e-9 * (vhi - vlo)) continue;
-      const double y = b1 - (t.values[i] - vlo) / (vhi - vlo) * (b1 - b0);
-      svg.line(bx + bw, y, bx + bw + 4, y, {{"stroke", kInk}});
-      svg.text(bx + bw + 7, y + 4, t.labels[i], {{"fill", kInk}, {"font-size", "11"}});
-    }
-    svg.close();
-  }
   return svg.str();
 }
 

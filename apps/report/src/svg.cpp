@@ -59,6 +59,14 @@ std::string formatSignificant(double value, int digits) {
   return formatNumber(value, std::max(0, std::clamp(digits, 1, 15) - 1 - mag));
 }
 
+std::string formatMinSec(double seconds) {
+  if (!std::isfinite(seconds)) return "-";
+  const long long whole = std::llround(std::abs(seconds));
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%s%lld:%02lld", seconds < 0 && whole > 0 ? "-" : "", whole / 60, whole % 60);
+  return buf;
+}
+
 Ticks niceTicks(double lo, double hi, int target) {
   if (!std::isfinite(lo) || !std::isfinite(hi)) throw std::invalid_argument("niceTicks: non-finite axis range");
   target = std::clamp(target, 2, 20);

@@ -99,6 +99,13 @@ std::string residualChart(const std::vector<double>& x, const std::vector<double
 }  // namespace
 
 HtmlReport validationReport(const ValidationReportData& d) {
+  HtmlReport r(d.title);
+  addFacts(r, d.facts);
+  addValidation(r, d);
+  return r;
+}
+
+void addValidation(HtmlReport& r, const ValidationReportData& d) {
   const std::size_t n = d.t.size();
   checkSameSize(d.measured_power, n, "measured_power");
   checkSameSize(d.modelled_power, n, "modelled_power");
@@ -108,8 +115,6 @@ HtmlReport validationReport(const ValidationReportData& d) {
   if (d.residual_bins < 2 || d.residual_bins > 100) {
     throw std::invalid_argument("validation report: residual_bins = " + std::to_string(d.residual_bins) + ", expected 2..100");
   }
-  HtmlReport r(d.title);
-  addFacts(r, d.facts);
   const bool haveBoth = n > 0 && d.measured_power.size() == n && d.modelled_power.size() == n;
   std::vector<std::size_t> starts = d.log_start.empty() ? std::vector<std::size_t>{0} : d.log_start;
   for (std::size_t k = 0; k < starts.size(); ++k) {
@@ -232,7 +237,6 @@ HtmlReport validationReport(const ValidationReportData& d) {
     }
     r.table(t);
   }
-  return r;
 }
 
 std::string validationReportHtml(const ValidationReportData& d) { return validationReport(d).html(); }

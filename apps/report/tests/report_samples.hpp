@@ -1,6 +1,7 @@
 #pragma once
 // Synthetic, seeded data for the report tests: shaped like real plans, logs and sweeps so that the
 // rendered pages exercise every figure (numbers are illustrative, not physics).
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -139,6 +140,99 @@ inline wr::SpeedReportData sampleSpeed() {
     e.best_speed = 5.0;
     e.best_energy = L * (180 / 5.0 + 5.0) + 375;
     d.legs.push_back(e);
+  }
+  return d;
+}
+
+/// A 5-minute survey mission at 10 m: take-off, a lawnmower of 6 waypoints (two at the same spot),
+/// return and landing, 10 Hz samples, with a battery.
+inline wr::MissionReportData sampleMission() {
+  wr::MissionReportData d;
+  d.title = "Mission: sample <survey>";
+  d.facts = {{"mission", "sample.waypoints"}, {"vehicle", "sample quad"}};
+  const std::vector<std::pair<double, double>> wps = {{0, 40}, {120, 40}, {120, 80}, {0, 80}, {0, 40}, {60, 120}};
+  auto addPhase = [&](const std::string& phase, double t0, double t1, auto pos) {
+    for (double t = t0; t < t1 - 1e-9; t += 0.1) {
+      const auto p = pos(t);
+      d.t.push_back(t);
+      d.x.push_back(p[0]);
+      d.y.push_back(p[1]);
+      d.z.push_back(p[2]);
+      d.speed.push_back(p[3]);
+      d.phase.push_back(phase);
+    }
+  };
+  addPhase("takeoff", 0, 5, [](double t) { return std::array<double, 4>{0, 0, 2 * t, 2}; });
+  const double legT = 40.0;  // every leg flown in 40 s, speed a sine bump
+  addPhase("mission", 5, 5 + legT * 7, [&](double t) {
+    const int k = std::min(6, static_cast<int>((t - 5) / legT));
+    const double f = (t - 5 - k * legT) / legT;
+    const auto a = k == 0 ? std::pair<double, double>{0, 0} : wps[k - 1], b = wps[std::min<std::size_t>(k, wps.size() - 1)];
+    return std::array<double, 4>{a.first + f * (b.first - a.first), a.second + f * (b.second - a.second), 10,
+                                 4.5 * std::sin(kPi() * f)};
+  });
+  addPhase("return", 285, 300, [](double t) { return std::array<double, 4>{60 - 4 * (t - 285), 120 - 8 * (t - 285), 10, 6}; });
+  addPhase("landing", 300, 310, [](double t) { return std::array<double, 4>{0, 0, 10 - (t - 300), 1}; });
+  for (std::size_t k = 0; k < wps.size(); ++k) {
+    wr::MissionMark m;
+    m.seq = static_cast<int>(2 * k + 2);
+    m.command = "NAV_WAYPOINT";
+    m.position = geometry::Point(wps[k].first, wps[k].second);
+    m.reached_s = 5 + legT * (k + 1);
+    m.energy_j = 9000;
+    m.time_s = legT;
+    m.distance_m = 100;
+    d.items.push_back(m);
+  }
+  d.items.push_back({-1, "NAV_RETURN_TO_LAUNCH", std::nullopt, 300.0, 4000, 15, 120});
+  d.phases = {{"takeoff", 5, 1500, 10}, {"mission", 280, 60000, 900}, {"return", 15, 4000, 120}, {"landing", 10, 2500, 10}};
+  d.total = {"total", 310, 68000, 1040};
+  wr::BatteryTrace b;
+  b.model = "Hwang et al.";
+  for (double t = 0; t <= 310; t += 1) {
+    b.t.push_back(t);
+    b.soc.push_back(100.0 - 0.15 * t);
+  }
+  d.battery = b;
+  d.reserve_pct = 25;
+  d.verdict = "Fits: lands with 53.5 % of the usable charge (reserve 25 %).";
+  return d;
+}
+
+/// Two logged flights of a mission against their prediction; the second has an unmatched waypoint.
+inline wr::MissionReplayData sampleMissionReplay() {
+  wr::MissionReplayData d;
+  d.model = "the vehicle file's calibration";
+  d.autopilot = "arducopter-leash";
+  for (int flight = 0; flight < 2; ++flight) {
+    wr::MissionReplayFlight f;
+    f.name = "flight" + std::to_string(flight + 1) + ".csv";
+    f.mission = "mission <" + std::to_string(flight + 1) + ">.waypoints";
+    for (double t = 0; t <= 300; t += 1.0) {
+      f.measured_t.push_back(t);
+      f.measured_speed.push_back(5 + 4 * std::sin(t / 9.0));
+    }
+    for (double t = 0; t <= 290; t += 0.1) {
+      f.predicted_t.push_back(t);
+      f.predicted_speed.push_back(5.5 + 4 * std::sin(t / 8.5));
+    }
+    for (int k = 0; k < 8; ++k) {
+      f.waypoint_labels.push_back(std::to_string(2 * k + 3));
+      f.measured_passage_s.push_back(10 + 36.0 * k);
+      f.predicted_passage_s.push_back(flight == 1 && k == 4 ? std::nan("") : 10 + 34.5 * k);
+    }
+    for (int k = 0; k + 1 < 8; ++k) {
+      const bool unmatched = flight == 1 && (k == 3 || k == 4);
+      f.legs.push_back({f.waypoint_labels[k] + "-" + f.waypoint_labels[k + 1], 36.0, unmatched ? std::nan("") : 34.5,
+                        9000.0 + 300 * k, unmatched ? std::nan("") : 8600.0 + 250 * k});
+    }
+    f.measured_energy_j = 74735;
+    f.predicted_energy_j = 67597;
+    f.replay_energy_j = 72746;
+    f.measured_time_s = 332;
+    f.predicted_time_s = 307;
+    f.leg_time_mape_pct = 14.4;
+    d.flights.push_back(f);
   }
   return d;
 }

@@ -177,6 +177,13 @@ TEST(ReportRender, PlanReport) { checkReport(wr::planReport(samplePlan()), "samp
 TEST(ReportRender, ValidationReport) { checkReport(wr::validationReport(sampleValidation()), "sample-validation", 6); }
 TEST(ReportRender, TurnReport) { checkReport(wr::turnReport(sampleTurns()), "sample-turns", 2); }
 TEST(ReportRender, SpeedReport) { checkReport(wr::speedReport(sampleSpeed()), "sample-speed", 2); }
+TEST(ReportRender, MissionReport) { checkReport(wr::missionReport(sampleMission()), "sample-mission", 4); }
+TEST(ReportRender, MissionReplayReport) {
+  wr::HtmlReport r("Replay: missions against their logs");
+  wr::addMissionReplay(r, sampleMissionReplay());
+  wr::addValidation(r, sampleValidation());
+  checkReport(r, "sample-replay-mission", 12);
+}
 TEST(ReportRender, VoptCommandReport) {
   checkCommandReport("vopt --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --distance 100", "cli-vopt", 2);
 }
@@ -197,4 +204,20 @@ TEST(ReportRender, DiagnoseCommandReportOfThreeFlights) {
     logs += " --log '" + f + "'";
   }
   checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "'" + logs, "cli-diagnose-3", 8);
+}
+TEST(ReportRender, PredictCommandReport) {
+  // Map, speed, altitude and battery of the IRIS+ mission flown by the ArduCopter 3.x model.
+  const std::string m = sharedData("iris-flights/mission__2017-10-18_1436_energy14.waypoints");
+  if (!fs::exists(m)) GTEST_SKIP() << "no " << m;
+  checkCommandReport("predict '" + m + "' --vehicle '" + sourcePath("data/vehicles/iris-plus-arducopter3.json") + "'",
+                     "cli-predict", 4);
+}
+TEST(ReportRender, ReplayMissionCommandReport) {
+  // The mission section (speed, leg energy, leg time) and the validation (power, 3 residuals, legs).
+  const std::string f = sharedData("iris-flights/2017-10-18_1436_energy14.csv");
+  const std::string m = sharedData("iris-flights/mission__2017-10-18_1436_energy14.waypoints");
+  if (!fs::exists(f) || !fs::exists(m)) GTEST_SKIP() << "no " << f << " or " << m;
+  checkCommandReport("replay --vehicle '" + sourcePath("data/vehicles/iris-plus-arducopter3.json") + "' --log '" + f +
+                         "' --mission '" + m + "'",
+                     "cli-replay-mission", 8);
 }

@@ -228,6 +228,59 @@ TEST(ReportSvg, MapWithHolesPathMarkersAndBars) {
   EXPECT_THROW(wr::renderSvg(wr::MapView{}), std::invalid_argument);
 }
 
+TEST(ReportSvg, MapByCategoryWithLegendAndMetreAxes) {
+  // A path coloured by phase needs no colour bar (and no value label); axes in metres replace the scale bar.
+  wr::MapView m;
+  m.title = "Track";
+  m.axes = true;
+  m.path = {{{{0, 0}, {100, 0}}, 0.0, "mission"}, {{{100, 0}, {0, 0}}, 0.0, "return"}};
+  m.path[0].colour = "#0072B2";
+  m.path[1].colour = "#009E73";
+  m.path[1].dash = "7 3";
+  m.legend = {{"mission", "#0072B2", ""}, {"return", "#009E73", "7 3"}};
+  wr::MapMarker wp{{100, 0}, "3, 7", wr::MapMarker::Shape::Circle, "#222222"};
+  wp.size = 3.0;
+  m.markers = {wp};
+  const std::string svg = wr::renderSvg(m);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_EQ(svg.find("colourbar"), std::string::npos);
+  EXPECT_EQ(svg.find("scalebar"), std::string::npos);
+  EXPECT_NE(svg.find(">east of home [m]</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">north of home [m]</text>"), std::string::npos);
+  EXPECT_NE(svg.find("stroke=\"#009E73\" stroke-dasharray=\"7 3\""), std::string::npos);
+  EXPECT_NE(svg.find(">return</text>"), std::string::npos);  // legend
+  EXPECT_NE(svg.find("r=\"3\""), std::string::npos);          // the small waypoint dot
+  m.path[1].colour.clear();                                   // one piece by value: the colour bar needs its unit
+  EXPECT_THROW(wr::renderSvg(m), std::invalid_argument);
+}
+
+TEST(ReportSvg, EventTicksSitOutsideThePlotAndLabelsDoNotOverlap) {
+  wr::LineChart c = sampleLine();
+  c.events = {{1.0, "12", "waypoint 12", "#222222", false}, {1.01, "13", "waypoint 13", "#222222", false},
+              {3.0, "14", "waypoint 14 (log)", "#444444", true}};
+  const std::string svg = wr::renderSvg(c);
+  EXPECT_EQ(xmlProblem(svg), "");
+  EXPECT_NE(svg.find("<title>waypoint 13</title>"), std::string::npos);  // every tick keeps its tooltip
+  EXPECT_NE(svg.find(">12</text>"), std::string::npos);
+  EXPECT_EQ(svg.find(">13</text>"), std::string::npos);  // too close to 12: label left out
+  EXPECT_NE(svg.find(">14</text>"), std::string::npos);
+  // The plot frame starts below the top ticks: nothing is drawn over the data.
+  const auto frame = svg.find("fill=\"none\" stroke=\"#888888\"");
+  ASSERT_NE(frame, std::string::npos);
+  EXPECT_NE(svg.rfind("<rect x=\"", frame), std::string::npos);
+  EXPECT_NE(svg.substr(svg.rfind("<rect x=\"", frame), frame - svg.rfind("<rect x=\"", frame)).find("y=\"48\""), std::string::npos)
+      << svg.substr(svg.rfind("<rect x=\"", frame), 200);
+}
+
+TEST(ReportSvg, MinutesAndSeconds) {
+  EXPECT_EQ(wr::formatMinSec(0.0), "0:00");
+  EXPECT_EQ(wr::formatMinSec(307.4), "5:07");
+  EXPECT_EQ(wr::formatMinSec(59.6), "1:00");
+  EXPECT_EQ(wr::formatMinSec(3725.0), "62:05");
+  EXPECT_EQ(wr::formatMinSec(-65.0), "-1:05");
+  EXPECT_EQ(wr::formatMinSec(std::numeric_limits<double>::quiet_NaN()), "-");
+}
+
 TEST(ReportHtml, SelfContainedPageWithTablesAndFigures) {
   wr::HtmlReport r("Report <1>");
   r.heading("Figures");

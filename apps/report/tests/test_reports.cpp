@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include "report_samples.hpp"
 #include "xml_check.hpp"
@@ -132,4 +133,96 @@ TEST(Reports, TurnAndSpeedReports) {
   EXPECT_EQ(checkFigures(s), 2);
   EXPECT_NE(s.html().find("optimal cruise speed [m/s]"), std::string::npos);
   EXPECT_NE(s.html().find(">1000</text>"), std::string::npos);  // log distance axis (2 .. 1000 m)
+}
+
+namespace {
+/// No "nan"/"inf" anywhere a reader or an XML parser would see it (tables, labels, attributes).
+void expectFinite(const std::string& html) {
+  for (const char* bad : {"nan", "NaN", "inf", "Inf"}) {
+    for (std::size_t p = html.find(bad); p != std::string::npos; p = html.find(bad, p + 1)) {
+      // Words that contain the letters ("information", "infinite", "financial") are fine: only a
+      // number-like token, i.e. the letters standing alone, is not.
+      const bool alone = (p == 0 || !std::isalpha(static_cast<unsigned char>(html[p - 1]))) &&
+                         (p + 3 >= html.size() || !std::isalpha(static_cast<unsigned char>(html[p + 3])));
+      EXPECT_FALSE(alone) << "'" << bad << "' in: " << html.substr(p > 60 ? p - 60 : 0, 120);
+    }
+  }
+}
+}  // namespace
+
+TEST(Reports, MissionReportHasMapSpeedAltitudeBatteryAndPhaseTable) {
+  const auto r = wr::missionReport(sampleMission());
+  EXPECT_EQ(checkFigures(r), 4);  // map, speed, altitude, battery
+  const std::string html = r.html();
+  expectFinite(html);
+  EXPECT_NE(html.find("Mission: sample &lt;survey&gt;"), std::string::npos);
+  for (const char* axis : {"east of home [m]", "north of home [m]", "speed [m/s]", "time since the take-off command [min]",
+                           "height above home [m]", "usable charge left [%]"}) {
+    EXPECT_NE(html.find(axis), std::string::npos) << axis;
+  }
+  // Phases in the map legend, the table and the shading; the reserve line; waypoint numbers (two at one spot).
+  for (const char* text : {">take-off</text>", ">mission</text>", ">return</text>", ">landing</text>", "reserve 25 %",
+                           ">2, 10</text>", ">12</text>", "home (take-off)", "time [min:s]", "energy [Wh]", "energy [J]",
+                           "<td>take-off to landing</td>", "<td class=\"num\">5:10</td>", "<td class=\"num\">18.89</td>",
+                           "Fits: lands with 53.5 %", "NAV_RETURN_TO_LAUNCH reached at 5:00 min:s"}) {
+    EXPECT_NE(html.find(text), std::string::npos) << text;
+  }
+  EXPECT_NE(html.find("Take-off and landing are flown vertically"), std::string::npos);
+  // Phase colours with dash patterns, so that the phases stay apart in grey-scale print.
+  EXPECT_NE(html.find("stroke=\"#009E73\" stroke-dasharray=\"7 3\""), std::string::npos);
+}
+
+TEST(Reports, MissionReportWithoutBatterySaysSoAndChecksSizes) {
+  auto d = sampleMission();
+  d.battery.reset();
+  d.verdict = "The vehicle file has no battery: no state of charge or reserve verdict can be given.";
+  const auto r = wr::missionReport(d);
+  EXPECT_EQ(checkFigures(r), 3);
+  EXPECT_NE(r.html().find("The vehicle file has no battery: the usable charge along the flight cannot be shown."), std::string::npos);
+  auto bad = sampleMission();
+  bad.speed.pop_back();
+  EXPECT_THROW(wr::missionReport(bad), std::invalid_argument);
+  bad = sampleMission();
+  bad.battery->soc.pop_back();
+  EXPECT_THROW(wr::missionReport(bad), std::invalid_argument);
+  wr::MissionReportData empty;  // no samples: the table, and a sentence instead of figures
+  EXPECT_EQ(checkFigures(wr::missionReport(empty)), 0);
+  EXPECT_NE(wr::missionReport(empty).html().find("no trajectory samples"), std::string::npos);
+}
+
+TEST(Reports, MissionReplayAddsSpeedLegEnergyAndLegTimePerFlight) {
+  wr::HtmlReport r("replay");
+  wr::addMissionReplay(r, sampleMissionReplay());
+  EXPECT_EQ(checkFigures(r), 6);  // per flight: speed, leg energy, leg time
+  const std::string html = r.html();
+  expectFinite(html);
+  for (const char* text : {"Speed along the path: predicted and measured", "time since the take-off command [s]", "speed [m/s]",
+                           "Energy per leg", "energy [kJ]", "Time per leg", "time [s]", "measured (log)",
+                           "predicted from the mission", ">3-5</text>", "mission &lt;2&gt;.waypoints",
+                           "kinematics -5.1 kJ, physics -2.0 kJ", "74.7 kJ (20.8 Wh) in 5:32 min:s",
+                           "67.6 kJ (18.8 Wh) in 5:07 min:s: energy -9.6 %, time -7.5 %", "14.4 % over 7 legs",
+                           "waypoint 11 passed (measured) at 2:34 min:s"}) {
+    EXPECT_NE(html.find(text), std::string::npos) << text;
+  }
+  // Two series in distinct colours, the predicted one dashed.
+  EXPECT_NE(html.find("stroke=\"#444444\""), std::string::npos);
+  EXPECT_NE(html.find("stroke=\"#D55E00\" stroke-width=\"1.8\" stroke-linejoin=\"round\" stroke-dasharray=\"6 3\""), std::string::npos);
+  // The second flight's unmatched waypoint has no predicted tick; its legs no predicted bars.
+  EXPECT_EQ(html.find("waypoint 11 passed (predicted)", html.find("Flight 2")), std::string::npos);
+  auto bad = sampleMissionReplay();
+  bad.flights[0].measured_speed.pop_back();
+  EXPECT_THROW(wr::addMissionReplay(r, bad), std::invalid_argument);
+  bad = sampleMissionReplay();
+  bad.flights[1].waypoint_labels.pop_back();
+  wr::HtmlReport r2("replay");
+  EXPECT_THROW(wr::addMissionReplay(r2, bad), std::invalid_argument);
+}
+
+TEST(Reports, ReplayReportPutsTheMissionsBeforeTheValidation) {
+  wr::HtmlReport r("replay");
+  wr::addMissionReplay(r, sampleMissionReplay());
+  wr::addValidation(r, sampleValidation());
+  EXPECT_EQ(checkFigures(r), 12);  // 6 mission figures, then power, 3 residuals, legs, staircase
+  const std::string html = r.html();
+  EXPECT_LT(html.find("Missions: predicted flight against the log"), html.find("Power over time"));
 }

@@ -65,6 +65,17 @@ struct Marker {
   std::string colour = "#000000";  ///< "#rrggbb"
 };
 
+/// A moment marked on the x axis (a waypoint reached, for example): a short tick at the plot's top
+/// or bottom edge with a short label. A label that would overlap its neighbour is left out (the
+/// tick and its tooltip stay).
+struct XEvent {
+  double x = 0.0;                  ///< [x axis unit]
+  std::string label;               ///< short text next to the tick, e.g. "7"
+  std::string tooltip;             ///< hover text (<title>)
+  std::string colour = "#222222";  ///< "#rrggbb"
+  bool bottom = false;             ///< at the bottom edge instead of the top
+};
+
 /// A line / scatter plot with a legend.
 struct LineChart {
   std::string title;               ///< drawn above the plot
@@ -73,6 +84,7 @@ struct LineChart {
   std::vector<Series> series;      ///< data, drawn in order
   std::vector<XRange> shaded;      ///< shaded x-ranges, drawn under the data
   std::vector<Marker> markers;     ///< labelled points, drawn over the data
+  std::vector<XEvent> events;      ///< ticks on the top or bottom edge, drawn over the data
   bool diagonal = false;           ///< draw the y = x reference line (measured vs modelled)
   std::optional<double> y_ref;     ///< [y axis unit] draw a horizontal reference line (e.g. 0)
   double width = 900.0;            ///< [px] figure width
@@ -106,6 +118,15 @@ struct MapPolyline {
   double value = 0.0;                   ///< [value unit] colour value (speed, power, ...)
   std::string tooltip;                  ///< hover text (<title>), e.g. "leg 12 sweep 8.1 m/s"
   bool dashed = false;                  ///< dashed (transits)
+  std::string colour{};                 ///< "#rrggbb" fixed colour (a category, e.g. flight phase); "" = `value` on the colour bar
+  std::string dash{};                   ///< SVG dash array; overrides `dashed` when not empty
+};
+
+/// One line entry of a map's legend (categorical path colours).
+struct MapLegendEntry {
+  std::string name;    ///< text, e.g. "take-off"
+  std::string colour;  ///< "#rrggbb"
+  std::string dash;    ///< SVG dash array ("" = solid)
 };
 
 /// A point of interest on the map.
@@ -114,10 +135,11 @@ struct MapMarker {
   std::string label;                                   ///< short text ("start", "home")
   enum class Shape { Circle, Square, Triangle } shape = Shape::Circle;  ///< symbol
   std::string colour = "#000000";                      ///< "#rrggbb"
+  double size = 6.0;                                   ///< [px] symbol radius (a waypoint dot: 3)
 };
 
 /// A map in local metres (north up, equal scale): areas with holes, no-fly zones, a path coloured
-/// by a value with a colour bar and a scale bar.
+/// by a value with a colour bar (or by category with a legend) and a scale bar or metre axes.
 struct MapView {
   std::string title;                                 ///< drawn above the map
   std::vector<geometry::PolygonWithHoles> areas;     ///< survey areas (holes left unfilled)
@@ -126,12 +148,14 @@ struct MapView {
   std::vector<MapMarker> markers;                    ///< start, home, ...
   std::string value_label;                           ///< colour-bar quantity, e.g. "speed"
   std::string value_unit;                            ///< colour-bar unit, e.g. "m/s"
+  std::vector<MapLegendEntry> legend;                ///< line legend under the map (for fixed path colours)
+  bool axes = false;                                 ///< east/north axes with ticks in metres instead of the scale bar
   double width = 900.0;                              ///< [px] figure width
-  double height = 600.0;                             ///< [px] figure height
+  double height = 600.0;                             ///< [px] figure height (legend rows are added below)
 };
 
 /// Renders a map to SVG; throws std::invalid_argument when there is nothing to draw or the value
-/// label/unit are missing while a path is given.
+/// label/unit are missing while a path piece is coloured by value.
 std::string renderSvg(const MapView& map);
 
 }  // namespace wattswath::report

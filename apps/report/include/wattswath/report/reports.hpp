@@ -145,6 +145,9 @@ struct ValidationReportData {
 /// Builds the validation report (power over time, residuals, leg energies, staircase, diagnosis).
 /// Throws std::invalid_argument when per-sample vectors differ in length.
 HtmlReport validationReport(const ValidationReportData& data);
+/// Appends the validation report's sections (all but its title and facts) to `report`; throws
+/// like validationReport.
+void addValidation(HtmlReport& report, const ValidationReportData& data);
 /// The validation report as one HTML page.
 std::string validationReportHtml(const ValidationReportData& data);
 
@@ -204,5 +207,94 @@ struct SpeedReportData {
 HtmlReport speedReport(const SpeedReportData& data);
 /// The optimal-speed report as one HTML page.
 std::string speedReportHtml(const SpeedReportData& data);
+
+// ---------------------------------------------------------------- mission report (predict)
+
+/// One mission item as drawn: its number on the map and its reached time on the time axis.
+struct MissionMark {
+  int seq = -1;                             ///< the item's number in the mission file (-1: added by the autopilot model)
+  std::string command;                      ///< MAVLink command name, e.g. "NAV_WAYPOINT"
+  std::optional<geometry::Point> position;  ///< [m] ENU target from home (none: no position, e.g. land in place)
+  double reached_s = 0.0;                   ///< [s] since the take-off command when reached (NaN: never)
+  double energy_j = 0.0;                    ///< [J] energy while the item was active
+  double time_s = 0.0;                      ///< [s] time while the item was active
+  double distance_m = 0.0;                  ///< [m] distance flown while the item was active
+};
+
+/// Time, energy and distance of one flight phase (or of the whole flight).
+struct MissionPhaseTotals {
+  std::string phase;        ///< "takeoff", "mission", "return", "landing" (or "total")
+  double time_s = 0.0;      ///< [s] duration
+  double energy_j = 0.0;    ///< [J] electrical energy
+  double distance_m = 0.0;  ///< [m] distance flown (3-D)
+};
+
+/// Everything the mission report (`predict --report`) shows: the predicted trajectory sample by
+/// sample, the items, the phase totals and the battery.
+struct MissionReportData {
+  std::string title = "wattswath mission prediction";  ///< page title
+  Facts facts;                                        ///< mission, vehicle, autopilot, totals
+  std::vector<double> t;                              ///< [s] sample times since the take-off command
+  std::vector<double> x;                              ///< [m] east of home per sample
+  std::vector<double> y;                              ///< [m] north of home per sample
+  std::vector<double> z;                              ///< [m] height above home per sample
+  std::vector<double> speed;                          ///< [m/s] speed along the path (3-D) per sample
+  std::vector<std::string> phase;                     ///< flight phase per sample: "takeoff", "mission", "return", "landing"
+  std::vector<MissionMark> items;                     ///< mission items in flight order
+  std::vector<MissionPhaseTotals> phases;             ///< per phase, in flight order
+  MissionPhaseTotals total;                           ///< take-off command to landing
+  std::optional<BatteryTrace> battery;                ///< usable charge left [%] in BatteryTrace::soc, when the vehicle has a battery
+  double reserve_pct = 25.0;                          ///< [%] usable charge to keep on landing (the reserve line)
+  std::string verdict;                                ///< one plain sentence on the reserve
+};
+
+/// Builds the mission report (map by phase with waypoint numbers, speed / altitude / battery over
+/// time, phase table and verdict). Throws std::invalid_argument when per-sample vectors differ in length.
+HtmlReport missionReport(const MissionReportData& data);
+/// The mission report as one HTML page.
+std::string missionReportHtml(const MissionReportData& data);
+
+// ---------------------------------------------------------------- mission replay (replay --mission)
+
+/// One leg between consecutive waypoints of a logged mission, measured and predicted (NaN: unmatched).
+struct LegComparison {
+  std::string label;       ///< the waypoint numbers, e.g. "3-4"
+  double measured_s = 0.0;   ///< [s] leg time in the log
+  double predicted_s = 0.0;  ///< [s] leg time predicted
+  double measured_j = 0.0;   ///< [J] leg energy in the log
+  double predicted_j = 0.0;  ///< [J] leg energy predicted
+};
+
+/// A logged flight of a known mission against the mission's prediction.
+struct MissionReplayFlight {
+  std::string name;                          ///< the log
+  std::string mission;                       ///< the mission file
+  std::vector<double> measured_t;            ///< [s] log samples since the take-off command
+  std::vector<double> measured_speed;        ///< [m/s] logged speed along the path (3-D)
+  std::vector<double> predicted_t;           ///< [s] predicted samples since the take-off command
+  std::vector<double> predicted_speed;       ///< [m/s] predicted speed along the path (3-D)
+  std::vector<std::string> waypoint_labels;  ///< the flown waypoints' numbers, in order
+  std::vector<double> measured_passage_s;    ///< [s] closest approach to each waypoint in the log (NaN: unmatched)
+  std::vector<double> predicted_passage_s;   ///< [s] the same on the prediction
+  std::vector<LegComparison> legs;           ///< legs between consecutive waypoints
+  double measured_energy_j = 0.0;            ///< [J] whole flight, measured
+  double predicted_energy_j = 0.0;           ///< [J] whole flight, predicted from the mission
+  double replay_energy_j = 0.0;              ///< [J] the same model on the logged kinematics
+  double measured_time_s = 0.0;              ///< [s] take-off command to landing, measured
+  double predicted_time_s = 0.0;             ///< [s] the same, predicted
+  double leg_time_mape_pct = 0.0;            ///< [%] mean absolute error of the matched leg times (NaN: none)
+};
+
+/// The mission section of the replay report: which models predicted, and each flight.
+struct MissionReplayData {
+  std::string model;                         ///< energy model, e.g. "the vehicle file's calibration"
+  std::string autopilot;                     ///< flight-behaviour model, e.g. "arducopter-leash"
+  std::vector<MissionReplayFlight> flights;  ///< one per --log / --mission pair
+};
+
+/// Appends the mission section to `report` (the replay's validation report): per flight, predicted
+/// and measured speed over time, leg energies and leg times, the totals and the kinematics / physics
+/// split. Throws std::invalid_argument when a flight's series differ in length.
+void addMissionReplay(HtmlReport& report, const MissionReplayData& data);
 
 }  // namespace wattswath::report

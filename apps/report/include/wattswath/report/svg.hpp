@@ -25,6 +25,10 @@ std::string formatNumber(double value, int decimals);
 /// Formats `value` with `digits` significant digits (at least 0 decimals); "-" when non-finite.
 std::string formatSignificant(double value, int digits = 3);
 
+/// Formats a duration [s] as minutes and seconds, "m:ss" (e.g. 307 s -> "5:07"), rounded to the
+/// second; "-" when non-finite. Negative durations get a leading "-".
+std::string formatMinSec(double seconds);
+
 /// Ticks of an axis: positions in data units and their labels.
 struct Ticks {
   std::vector<double> values;       ///< tick positions [data units], increasing

@@ -1,0 +1,68 @@
+// Fills the mission report (predict --report) from a mission prediction.
+#include <cmath>
+
+#include "report_data.hpp"
+
+namespace wattswath::apps {
+
+namespace ms = wattswath::mission;
+
+namespace {
+
+/// True for the steps drawn as numbered points on the map (they fly to a position of their own).
+bool drawnOnMap(const ms::NavStep& s) {
+  using K = ms::NavStep::Kind;
+  return s.has_position &&
+         (s.kind == K::Waypoint || s.kind == K::SplineWaypoint || s.kind == K::LoiterTime || s.kind == K::Land);
+}
+
+report::MissionPhaseTotals phaseTotals(const std::string& name, const ms::Totals& t) {
+  return {name, t.time_s, t.energy_j, t.distance_m};
+}
+
+}  // namespace
+
+report::MissionReportData missionReportData(const ms::MissionPrediction& p, double reserve_pct) {
+  report::MissionReportData d;
+  for (const auto& s : p.flight.samples) {
+    d.t.push_back(s.t);
+    d.x.push_back(s.position.x());
+    d.y.push_back(s.position.y());
+    d.z.push_back(s.position.z());
+    d.speed.push_back(s.velocity.norm());
+    d.phase.push_back(ms::toString(s.phase));
+  }
+  for (const auto& it : p.items) {
+    report::MissionMark m;
+    m.seq = it.seq;
+    m.command = it.command;
+    if (it.step >= 0 && it.step < static_cast<int>(p.flight.steps.size()) && drawnOnMap(p.flight.steps[it.step])) {
+      const auto& target = p.flight.steps[it.step].target;
+      m.position = geometry::Point(target.x(), target.y());
+    }
+    m.reached_s = it.reached_s;
+    m.energy_j = it.totals.energy_j;
+    m.time_s = it.totals.time_s;
+    m.distance_m = it.totals.distance_m;
+    d.items.push_back(std::move(m));
+  }
+  for (int k = 0; k < ms::kFlightPhaseCount; ++k) {
+    d.phases.push_back(phaseTotals(ms::toString(static_cast<ms::FlightPhase>(k)), p.phases[k]));
+  }
+  d.total = phaseTotals("total", p.total);
+  d.reserve_pct = reserve_pct;
+  if (p.battery.known) {
+    report::BatteryTrace b;
+    b.t = p.battery.t_s;
+    for (const double u : p.battery.usable_left) b.soc.push_back(100.0 * u);
+    b.voltage = p.battery.voltage_v;
+    b.model = "Hwang et al. Eq. 9-15";
+    d.battery = std::move(b);
+    d.verdict = p.battery.verdict;
+  } else {
+    d.verdict = "The vehicle file has no battery: no state of charge or reserve verdict can be given.";
+  }
+  return d;
+}
+
+}  // namespace wattswath::apps

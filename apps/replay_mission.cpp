@@ -1,0 +1,157 @@
+// replay --mission: each logged flight against its mission's prediction, leg by leg, as JSON, text
+// and the replay report's mission section.
+#include "replay_mission.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "wattswath/calibration/mission_calibration.hpp"
+#include "wattswath/mission/files.hpp"
+
+namespace wattswath::apps {
+namespace en = wattswath::energy;
+using nlohmann::json;
+
+namespace {
+
+json numOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+/// The numbers (seq) of the waypoints compareFlight matches passages to (calibration::flownWaypoints).
+std::vector<std::string> waypointLabels(const mission::Mission& m, const std::vector<mission::NavStep>& steps) {
+  using K = mission::NavStep::Kind;
+  std::vector<std::string> out;
+  for (const auto& s : steps) {
+    if (!((s.kind == K::Waypoint || s.kind == K::SplineWaypoint || s.kind == K::LoiterTime) && s.has_position))
+      continue;
+    out.push_back(s.item >= 0 && s.item < static_cast<int>(m.items.size()) ? std::to_string(m.items[s.item].seq) : "?");
+  }
+  return out;
+}
+
+/// The report's view of one flight: speed series, passages, legs and totals.
+report::MissionReplayFlight reportFlight(const calibration::MissionFlight& f, const std::string& mission_path,
+                                         const calibration::FlightComparison& c, const mission::MissionPrediction& pred,
+                                         double replay_j) {
+  report::MissionReplayFlight r;
+  r.name = std::filesystem::path(f.name).filename().string();
+  r.mission = std::filesystem::path(mission_path).filename().string();
+  const double t0 = f.log.samples.empty() ? 0.0 : f.log.samples.front().t;
+  for (const auto& s : f.log.samples) {
+    r.measured_t.push_back(s.t - t0);
+    r.measured_speed.push_back(s.velocity.norm());
+  }
+  for (const auto& s : pred.flight.samples) {
+    r.predicted_t.push_back(s.t);
+    r.predicted_speed.push_back(s.velocity.norm());
+  }
+  r.waypoint_labels = waypointLabels(f.mission, pred.flight.steps);
+  r.measured_passage_s = c.measured.passage_s;
+  r.predicted_passage_s = c.predicted.passage_s;
+  r.predicted_passage_s.resize(r.measured_passage_s.size(), std::nan(""));
+  if (r.waypoint_labels.size() != r.measured_passage_s.size()) r.waypoint_labels.clear();
+  for (std::size_t k = 0; k < c.measured.leg_s.size() && k < c.predicted.leg_s.size(); ++k) {
+    const std::string label = r.waypoint_labels.empty() ? std::to_string(k + 1) + "-" + std::to_string(k + 2)
+                                                        : r.waypoint_labels[k] + "-" + r.waypoint_labels[k + 1];
+    r.legs.push_back(
+        {label, c.measured.leg_s[k], c.predicted.leg_s[k], c.measured.leg_energy_j[k], c.predicted.leg_energy_j[k]});
+  }
+  r.measured_energy_j = c.measured.energy_j;
+  r.predicted_energy_j = c.predicted.energy_j;
+  r.replay_energy_j = replay_j;
+  r.measured_time_s = c.measured.total_s;
+  r.predicted_time_s = c.predicted.total_s;
+  r.leg_time_mape_pct = c.leg_time_mape_pct;
+  return r;
+}
+
+json flightJson(const calibration::FlightComparison& c, const std::string& log, const std::string& mission_path,
+                const std::string& model, const std::string& autopilot, double replay_j) {
+  json legs = json::array();
+  for (std::size_t k = 0; k < c.measured.leg_s.size() && k < c.predicted.leg_s.size(); ++k) {
+    legs.push_back({{"leg", k + 1},
+                    {"measured_time_s", numOrNull(c.measured.leg_s[k])},
+                    {"predicted_time_s", numOrNull(c.predicted.leg_s[k])},
+                    {"measured_speed_mps", numOrNull(c.measured.leg_speed_mps[k])},
+                    {"predicted_speed_mps", numOrNull(c.predicted.leg_speed_mps[k])},
+                    {"measured_energy_j", numOrNull(c.measured.leg_energy_j[k])},
+                    {"predicted_energy_j", numOrNull(c.predicted.leg_energy_j[k])}});
+  }
+  return {{"log", log},
+          {"mission", mission_path},
+          {"model", model},
+          {"autopilot", autopilot},
+          {"measured_energy_j", c.measured.energy_j},
+          {"predicted_energy_j", c.predicted.energy_j},
+          {"replay_energy_j", replay_j},
+          {"kinematics_error_j", c.predicted.energy_j - replay_j},
+          {"physics_error_j", replay_j - c.measured.energy_j},
+          {"measured_time_s", c.measured.total_s},
+          {"predicted_time_s", c.predicted.total_s},
+          {"time_error_pct", c.time_error_pct},
+          {"energy_error_pct", c.energy_error_pct},
+          {"leg_time_mape_pct", numOrNull(c.leg_time_mape_pct)},
+          {"legs_matched", c.legs_matched},
+          {"log_offset_m", {c.offset.x(), c.offset.y()}},
+          {"legs", legs}};
+}
+
+}  // namespace
+
+MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given, bool effects_given,
+                              const std::vector<std::string>& log_paths, const std::vector<std::string>& mission_paths,
+                              const std::vector<calibration::LogReplay>& reps, const logs::LogReadOptions& read) {
+  const auto cal = calibration::calibratedModel(v);
+  const bool use_cal = cal && !effects_given;
+  const en::EnergyModel& model = use_cal ? cal->model : given;
+  const auto ap = mission::parseAutopilot(v.autopilot_json, v.name);
+  mission::PredictSettings ps;
+  if (use_cal) {
+    if (cal->takeoff_delay_s >= 0.0) ps.flight.takeoff_delay_s = cal->takeoff_delay_s;
+    ps.flight.stop_at_waypoints = cal->stop_at_waypoints;
+    ps.flight.speed_change_late = cal->speed_change_late;
+  }
+  const std::string model_text = use_cal ? "the vehicle file's calibration" : "--effects";
+  MissionReplays out;
+  std::string effects;
+  for (const auto& e : model.effectNames()) effects += (effects.empty() ? "" : ", ") + e;
+  out.report.model = effects + (use_cal ? " (the vehicle file's calibration)" : " (--effects)");
+  out.report.autopilot = mission::toString(ap.family);
+  for (std::size_t i = 0; i < log_paths.size(); ++i) {
+    calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]),
+                                 logs::readFlightLog(log_paths[i], read)};
+    const auto c = calibration::compareFlight(f, v, model, ap, ps);
+    // Physics: the same model on the logged kinematics (replay) against the measurement;
+    // kinematics: the predicted flight against that replay.
+    const double replay_j = use_cal ? calibration::replay(model, calibration::prepareLog(f.log)).flight.modelled_j
+                                    : reps[i].flight.modelled_j;
+    out.json.push_back(
+        flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
+    // The predicted trajectory for the report's speed figure (compareFlight keeps only its times).
+    const auto pred = mission::predictMission(f.mission, v, model, ap, ps);
+    out.report.flights.push_back(reportFlight(f, mission_paths[i], c, pred, replay_j));
+  }
+  return out;
+}
+
+void printMissionReplays(const json& missions) {
+  for (const auto& m : missions) {
+    std::cout << m["log"].get<std::string>() << " against " << m["mission"].get<std::string>() << " ("
+              << m["autopilot"].get<std::string>() << ", " << m["model"].get<std::string>() << "):\n  time "
+              << m["predicted_time_s"].get<double>() << " s predicted vs " << m["measured_time_s"].get<double>()
+              << " s measured (" << m["time_error_pct"].get<double>() << " %), energy "
+              << m["predicted_energy_j"].get<double>() << " J vs " << m["measured_energy_j"].get<double>() << " J ("
+              << m["energy_error_pct"].get<double>() << " %): kinematics " << m["kinematics_error_j"].get<double>()
+              << " J, physics " << m["physics_error_j"].get<double>()
+              << " J\n  leg  measured s  predicted s  measured J  predicted J\n";
+    for (const auto& l : m["legs"]) {
+      auto f = [](const json& x) {
+        return x.is_null() ? std::string("-") : std::to_string(static_cast<long>(std::lround(x.get<double>())));
+      };
+      std::cout << "  " << l["leg"].get<int>() << "  " << f(l["measured_time_s"]) << "  " << f(l["predicted_time_s"])
+                << "  " << f(l["measured_energy_j"]) << "  " << f(l["predicted_energy_j"]) << "\n";
+    }
+  }
+}
+
+}  // namespace wattswath::apps

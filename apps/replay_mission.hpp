@@ -1,0 +1,34 @@
+#pragma once
+/// @file replay_mission.hpp
+/// `replay --mission`: each logged flight against the flight predicted from its mission file, leg
+/// by leg (calibration/mission_calibration.hpp), as JSON and as the replay report's mission section.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "wattswath/calibration/replay.hpp"
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/logs/autopilot_log.hpp"
+#include "wattswath/report/reports.hpp"
+
+namespace wattswath::apps {
+
+/// The comparisons of `replay --mission`, as the --json array and as report data.
+struct MissionReplays {
+  nlohmann::json json = nlohmann::json::array();  ///< one object per flight (mission_prediction in --json)
+  report::MissionReplayData report;               ///< the report's mission section
+};
+
+/// Compares each log of `log_paths` with the prediction of the mission of `mission_paths` at the same
+/// index. The model is the vehicle file's calibration unless `effects_given` (then `given`);
+/// `reps` are the replays of `given` on the same logs (for the kinematics / physics split).
+MissionReplays missionReplays(const energy::Vehicle& v, const energy::EnergyModel& given, bool effects_given,
+                              const std::vector<std::string>& log_paths, const std::vector<std::string>& mission_paths,
+                              const std::vector<calibration::LogReplay>& reps, const logs::LogReadOptions& read);
+
+/// Prints the comparisons (the `json` of missionReplays) as text on stdout.
+void printMissionReplays(const nlohmann::json& missions);
+
+}  // namespace wattswath::apps
