@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "wattswath/geometry/clearance.hpp"
 #include "wattswath/planner/camera.hpp"
 #include "wattswath/planner/margin.hpp"
 
@@ -64,6 +65,7 @@ void validate(const MissionOptions& o) {
   if (!(o.trigger_distance_m >= 0.0 && std::isfinite(o.trigger_distance_m))) bad("trigger_distance_m", o.trigger_distance_m, "[0, inf)");
   if (!(o.stop_hold_s >= 0.0 && o.stop_hold_s <= 3600.0)) bad("stop_hold_s", o.stop_hold_s, "[0, 3600]");
   if (!(o.fence_margin_m >= 0.0 && o.fence_margin_m <= 1000.0)) bad("fence_margin_m", o.fence_margin_m, "[0, 1000]");
+  if (!(o.no_fly_margin_m >= 0.0 && o.no_fly_margin_m <= 1000.0)) bad("no_fly_margin_m", o.no_fly_margin_m, "[0, 1000]");
 }
 
 /// The waypoints as they are written, with the speed in force and the legs planned too slow.
@@ -105,12 +107,36 @@ void countPhotos(const FlownPath& flown, double trigger_m, MissionWaypoints& out
     } else if (*w.camera_trigger_m == 0.0 && on) {
       on = false;
       double length = 0.0;
-      for (int i = from + 1; i <= w.leg; ++i) length += flown.path.legs[static_cast<size_t>(i)].length();
+      for (int i = from + 1; i <= w.leg; ++i) {
+        length += flown.path.legs[static_cast<size_t>(i)].length();
+        out.camera_legs.push_back(i);
+      }
       ++out.camera_runs;
       out.photos += photosAlong(length, trigger_m);
       out.camera_length_m += length;
     }
   }
+}
+
+/// Notes on the straight legs home -> waypoints -> home that come within `margin` [m] of a zone of
+/// `problem` (the path keeps the margin; a chord of an arc may not); returns how many do.
+int checkWaypointLegs(const MissionWaypoints& wps, const SurveyProblem& problem, double margin,
+                      std::vector<std::string>& notes) {
+  geo::CoveragePath legs;
+  geo::Point from = problem.home;
+  for (const auto& w : wps.waypoints) {
+    geo::PathLeg l;
+    l.start = from;
+    l.end = from = w.position;
+    legs.legs.push_back(l);
+  }
+  const auto close = geo::marginViolations(legs, noFlyZones(problem), margin);
+  for (size_t k = 0; k < close.size() && k < kLegsNamed; ++k)
+    notes.push_back("mission: the straight leg into waypoint " + std::to_string(close[k].leg + 1) + " (of " +
+                    std::to_string(wps.waypoints.size()) + ") passes " +
+                    fixed(close[k].distance_m, 2) + " m from no-fly zone " + std::to_string(close[k].zone) + ", within the " +
+                    fixed(margin, 1) + " m margin the planned path keeps (an arc written as its chord)");
+  return static_cast<int>(close.size());
 }
 
 }  // namespace
@@ -180,11 +206,13 @@ PlanMission missionFromPlan(const FlownPath& flown, const SurveyProblem& problem
     for (const auto& p : fence.ring) m.fence_inclusion.push_back(frame.toGeodetic(p));
     pm.fence_distance_m = fence.distance_m;
   }
+  if (options.no_fly_margin_m > 0.0) pm.legs_within_margin = checkWaypointLegs(wps, problem, options.no_fly_margin_m, wps.notes);
   pm.notes = std::move(wps.notes);
   pm.holds = wps.holds;
   pm.camera_runs = wps.camera_runs;
   pm.photos = wps.photos;
   pm.camera_length_m = wps.camera_length_m;
+  pm.camera_legs = std::move(wps.camera_legs);
   return pm;
 }
 

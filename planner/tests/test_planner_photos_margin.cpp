@@ -26,6 +26,7 @@ using namespace wattswath;
 using namespace wattswath::planner;
 using geometry::LegRole;
 using geometry::Point;
+using geometry::PrimitiveKind;
 using test::line;
 using test::problemOf;
 using test::turnInPlace;
@@ -225,8 +226,9 @@ TEST(NoFlyMargin, ExampleAreaPlanKeepsTheMarginAndTheFence) {
   EXPECT_GE(fence.distance_m, kDefaultNoFlyMargin);
   // The mission: the fence first, the zone, holds at the planned stops; both loaders accept it.
   MissionOptions o;
-  o.fence_margin_m = kDefaultNoFlyMargin;
+  o.fence_margin_m = o.no_fly_margin_m = kDefaultNoFlyMargin;
   const auto pm = missionFromPlan(kept.plan.flown, pr, *area.frame, 0.0, o);
+  EXPECT_EQ(pm.legs_within_margin, 0);  // the chords between the waypoints keep it too
   EXPECT_EQ(pm.mission.fence_inclusion.size(), fence.ring.size());
   EXPECT_EQ(pm.mission.no_fly.size(), 1u);
   EXPECT_GT(pm.holds, 0);
@@ -247,4 +249,34 @@ TEST(NoFlyMargin, SharedIrisAreaWithObstacleFileKeepsTheMargin) {
   const auto r = planCoverage(withNoFlyMargin(pr, kDefaultNoFlyMargin), v, energy::marinsModel(v));
   ASSERT_TRUE(r.plan.valid);
   EXPECT_TRUE(geometry::marginViolations(r.plan.flown.path, noFlyZones(pr), kDefaultNoFlyMargin).empty());
+}
+
+TEST(NoFlyMargin, AChordThatCutsIntoTheMarginIsNoted) {
+  // A half circle of radius 10 around a zone 1-3 m east of its centre: the arc keeps 6.8 m, the
+  // chord the autopilot flies between its ends passes 1 m from the zone.
+  FlownPath f;
+  f.path.legs = {line({-20, -10}, {0, -10}, LegRole::Sweep)};
+  geometry::PathLeg a;
+  a.kind = PrimitiveKind::Arc;
+  a.role = LegRole::Turn;
+  a.center = {0, 0};
+  a.radius = 10.0;
+  a.turn_angle = M_PI;
+  a.start = {0, -10};
+  a.end = {0, 10};
+  f.path.legs.push_back(a);
+  f.path.legs.push_back(line({0, 10}, {-20, 10}, LegRole::Sweep));
+  f.speeds.cruise = {5.0, 3.0, 5.0};
+  f.speeds.junction = {0.0, 3.0, 3.0, 0.0};
+  SurveyProblem pr;
+  pr.home = {-20, -10};
+  pr.no_fly = {{{1, -1}, {3, -1}, {3, 1}, {1, 1}}};
+  EXPECT_TRUE(geometry::marginViolations(f.path, pr.no_fly, 2.0).empty());
+  MissionOptions o;
+  o.no_fly_margin_m = 2.0;
+  const auto pm = missionFromPlan(f, pr, geometry::LocalFrame({43.7, 10.4, 0.0}), 0.0, o);
+  EXPECT_EQ(pm.legs_within_margin, 1);
+  ASSERT_FALSE(pm.notes.empty());
+  EXPECT_NE(pm.notes.back().find("waypoint 2 (of 3) passes 1.00 m from no-fly zone 0"), std::string::npos)
+      << pm.notes.back();
 }

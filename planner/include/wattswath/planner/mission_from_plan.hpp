@@ -46,6 +46,8 @@ struct MissionOptions {
   int rotor_count = 4;                    ///< [-] the vehicle's rotors, for the .plan's vehicleType
   double fence_margin_m = 0.0;            ///< [m] inclusion fence keeping every flown point this far inside it
                                           ///< (0: no inclusion fence), >= 0
+  double no_fly_margin_m = 0.0;           ///< [m] margin the straight legs between waypoints are checked
+                                          ///< against (0: not checked), >= 0
 };
 
 /// One waypoint of the mission in the local ENU frame, before conversion to WGS84.
@@ -66,6 +68,7 @@ struct MissionWaypoints {
   int camera_runs = 0;                     ///< [-] stretches of sweep flown with the camera on
   int photos = 0;                          ///< [-] photos the camera commands take (photosAlong per run)
   double camera_length_m = 0.0;            ///< [m] length flown with the camera on
+  std::vector<int> camera_legs;            ///< [-] indices of the flown legs the camera is on along
 };
 
 /// Waypoints [m] and speed commands [m/s] of `flown`: the end of every line or arc (turns in place
@@ -85,14 +88,20 @@ struct PlanMission {
   int camera_runs = 0;              ///< [-] sweeps flown with the camera on
   int photos = 0;                   ///< [-] photos the mission's camera commands take
   double camera_length_m = 0.0;     ///< [m] length flown with the camera on
+  std::vector<int> camera_legs;     ///< [-] indices of the flown legs the camera is on along
   double fence_distance_m = 0.0;    ///< [m] how far the inclusion fence lies outside the area (0: none)
+  int legs_within_margin = 0;       ///< [-] straight legs between waypoints (arcs written as chords) that
+                                    ///< come within options.no_fly_margin_m of a no-fly zone (each noted)
 };
 
 /// The mission of `flown` planned for `problem` [m, local frame `frame`]: take-off to
 /// problem.altitude [m] at problem.home, missionWaypoints at that altitude, cruise and hover speed
 /// the fastest command [m/s], the vehicle type of options.rotor_count, and a geofence of the area's
 /// holes and the no-fly zones that did not become holes, with the inclusionFence (margin.hpp) when
-/// options.fence_margin_m > 0. `home_altitude_amsl_m` [m] is home's height above mean sea level.
+/// options.fence_margin_m > 0. With options.no_fly_margin_m > 0 the straight legs between the
+/// waypoints (what the autopilot flies; an arc is written as its chord) are checked against the
+/// no-fly zones and each one within the margin is noted. `home_altitude_amsl_m` [m] is home's
+/// height above mean sea level.
 PlanMission missionFromPlan(const FlownPath& flown, const SurveyProblem& problem, const geometry::LocalFrame& frame,
                             double home_altitude_amsl_m, const MissionOptions& options = {});
 
