@@ -466,7 +466,8 @@ void runPlan(const PlanOpts& o) {
                                              : std::string("no camera commands")});
     writeReport(report::planReport(data), o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
   }
-  const double whole_area_pct = pl::coveragePercent(pr, r.plan.flown.path);
+  const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
+  const double whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
   geo::CoveragePath photographed;  // the legs the camera is on along
   for (int i : pm.camera_legs) photographed.legs.push_back(r.plan.flown.path.legs[static_cast<size_t>(i)]);
   const double photo_pct = s.photos ? pl::coveragePercent(flown_pr, photographed) : 0.0;
