@@ -192,7 +192,7 @@ TEST(CliPlan, LinesKeepTheNoFlyMarginThatPlanningWithoutItBreaks) {
     }
     return d;
   };
-  EXPECT_LT(closest("--no-fly-margin 0"), 2.0);  // issue 17: 0.45-0.68 m
+  EXPECT_LT(closest("--no-fly-margin 0"), 2.0);  // 1.68 m: the plan before issue 17
   EXPECT_GE(closest(""), 2.0 - 1e-6);           // the default margin (CSV positions to 1e-8 deg)
   EXPECT_GE(closest("--no-fly-margin 5"), 5.0 - 1e-6);
 }
