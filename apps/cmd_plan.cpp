@@ -17,7 +17,10 @@
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/mission/planned_mission.hpp"
+#include "wattswath/geometry/clearance.hpp"
+#include "wattswath/planner/camera.hpp"
 #include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/margin.hpp"
 #include "wattswath/planner/mission_from_plan.hpp"
 
 namespace wattswath::apps {
@@ -29,12 +32,23 @@ namespace fs = std::filesystem;
 namespace {
 
 struct PlanOpts {
-  std::string area, vehicle, home, out, corners = "auto";
+  std::string area, vehicle, home, out, corners = "auto", sensor_mm, image_px;
   std::vector<std::string> no_fly;
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
+  double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
+  double no_fly_margin = pl::kDefaultNoFlyMargin;
   bool force = false, json = false, no_report = false, no_spiral = false;
   std::string report_svg;
 };
+
+/// `v` with `precision` decimals.
+std::string fixedText(double v, int precision) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(precision);
+  os << v;
+  return os.str();
+}
 
 /// Polyline of one leg for the map [m] (arcs sampled every 10 deg; a turn in place is one point).
 std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
@@ -58,13 +72,7 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
   report::PlanReportData d;
   d.title = "wattswath plan: " + fs::path(area_file).filename().string();
   const auto& f = r.plan.flown;
-  auto num = [](double x, int prec) {
-    std::ostringstream os;
-    os.setf(std::ios::fixed);
-    os.precision(prec);
-    os << x;
-    return os.str();
-  };
+  const auto num = fixedText;
   d.facts = {{"area", area_file},
              {"vehicle", v.name},
              {"plan", r.plan.pattern + " at " + num(r.plan.sweep_angle_deg, 0) + " deg, " + std::to_string(r.plan.cells) +
@@ -201,108 +209,52 @@ std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFr
   return out;
 }
 
-void runPlan(const PlanOpts& o) {
-  const auto vehicle = energy::loadVehicle(o.vehicle);
-  geo::ReadOptions ro;
-  ro.no_fly_files = o.no_fly;
-  progress("plan: reading " + o.area);
-  const auto area = geo::readSurveyArea(o.area, ro);
-  if (!area.frame) throw std::invalid_argument(o.area + ": the area has no geodetic frame (metric WKT without an origin); missions need lat/lon");
-  const auto& frame = *area.frame;
-
-  pl::SurveyProblem pr;
-  pr.area = area.polygon();
-  pr.no_fly = area.no_fly;
-  pr.altitude = o.altitude;
-  if (o.spacing > 0.0) {
-    if (o.fov_deg > 0.0 || o.overlap >= 0.0) throw std::invalid_argument("give either --spacing or --altitude/--fov/--overlap, not both");
-    pr.spacing = pr.footprint = o.spacing;
-  } else {
-    if (!(o.fov_deg > 0.0 && o.fov_deg < 180.0))
-      throw std::invalid_argument("--fov = " + std::to_string(o.fov_deg) + " deg: expected (0, 180) (or give --spacing)");
-    if (!(o.overlap >= 0.0 && o.overlap < 1.0))
-      throw std::invalid_argument("--overlap = " + std::to_string(o.overlap) + ": expected a fraction in [0, 1) (or give --spacing)");
-    pr.footprint = 2.0 * o.altitude * std::tan(0.5 * o.fov_deg * M_PI / 180.0);
-    pr.spacing = pr.footprint * (1.0 - o.overlap);
-  }
-  if (!o.home.empty()) pr.home = parseHome(o.home, frame);
-  else if (area.home) pr.home = *area.home;
-  else pr.home = pr.area.outer.front();
-
-  std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
-  if (!o.no_report) files.push_back("report.html");
-  for (const auto& f : files)
-    if (fs::exists(fs::path(o.out) / f) && !o.force)
-      throw std::runtime_error((fs::path(o.out) / f).string() + " exists; pass --force to overwrite it");
-
-  pl::PlannerSettings ps;
-  ps.corners = pl::cornerStrategyFromString(o.corners);
-  ps.camera_max_speed = o.camera_max_speed;
-  ps.spirals = !o.no_spiral;
-  const auto model = energy::marinsModel(vehicle);
-  const auto r = pl::planCoverage(pr, vehicle, model, ps, [](const std::string& s) { progress(s); });
-  if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
-  const auto problems = pl::checkPlan(pr, r.plan.flown.path);
-  if (!problems.empty()) throw std::runtime_error("plan failed its own check: " + problems.front());
-
-  const auto pm = pl::missionFromPlan(r.plan.flown, pr, frame, area.home_alt_m.value_or(frame.origin().alt_m));
-  std::vector<std::string> notes = r.notes;
-  notes.insert(notes.end(), pm.notes.begin(), pm.notes.end());
-  geo::PathGeoJsonOptions go;
-  go.leg_properties["speed_mps"] = r.plan.flown.speeds.cruise;
-  go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
-  go.leg_properties["time_s"] = r.plan.flown.leg_time;
-  const fs::path dir(o.out);
-  writeTextFileAtomic((dir / "mission.plan").string(), ms::toQgcPlan(pm.mission));
-  writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
-  writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
-  writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
-  if (!o.no_report || !o.report_svg.empty()) {
-    const auto report = report::planReport(planReportData(r, pr, vehicle, model, o.area));
-    writeReport(report, o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
-  }
-
+/// The plan's JSON (issue 5's keys, baselines, battery, files, notes); runPlan adds the mission.
+nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const PlanOpts& o, const fs::path& dir,
+                          const std::vector<std::string>& notes) {
   const double e = r.plan.flown.energy;
-  nlohmann::json j = {
-      {"energy_j", e},
-      {"time_s", r.plan.flown.time},
-      {"length_m", r.plan.flown.length},
-      {"pattern", r.plan.pattern},
-      {"sweep_angle_deg", r.plan.sweep_angle_deg},
-      {"coverage_pct", r.plan.coverage_pct},
-      {"lower_bound_j", r.lower_bound_j},
-      {"bound_ratio", r.lower_bound_j > 0 ? e / r.lower_bound_j : 0.0},
-      {"spacing_m", pr.spacing},
-      {"footprint_m", pr.footprint},
-      {"altitude_m", pr.altitude},
-      {"corner_strategy", o.corners},
-      {"corners", {{"sharp", r.plan.flown.sharp_corners}, {"rounded", r.plan.flown.rounded_corners}}},
-      {"cells", r.plan.cells},
-      {"cell_plans", cellPlansJson(r.plan.cell_plans)},
-      {"sweep_scan", sweepScanJson(r.sweep_scan)},
-      {"per_cell", r.per_cell ? nlohmann::json{{"energy_j", r.per_cell->flown.energy},
-                                               {"pattern", r.per_cell->pattern},
-                                               {"coverage_pct", r.per_cell->coverage_pct},
-                                               {"cell_plans", cellPlansJson(r.per_cell->cell_plans)}}
-                              : nlohmann::json(nullptr)},
-      {"candidates", r.candidates},
-      {"baselines",
-       {{"shortest_path", candidateJson(r.shortest_path, e)},
-        {"ground_station_default", candidateJson(r.ground_station_default, e)},
-        {"best_spiral", r.best_spiral ? candidateJson(*r.best_spiral, e) : nlohmann::json(nullptr)}}},
-      {"battery", batteryJson(r.battery)},
-      {"files", {(dir / "mission.plan").string(), (dir / "mission.waypoints").string(), (dir / "path.geojson").string(),
-                 (dir / "legs.csv").string()}},
-      {"notes", notes}};
-  if (o.json) {
-    printJson(j);
-    return;
-  }
+  return {{"energy_j", e},
+          {"time_s", r.plan.flown.time},
+          {"length_m", r.plan.flown.length},
+          {"pattern", r.plan.pattern},
+          {"sweep_angle_deg", r.plan.sweep_angle_deg},
+          {"coverage_pct", r.plan.coverage_pct},
+          {"lower_bound_j", r.lower_bound_j},
+          {"bound_ratio", r.lower_bound_j > 0 ? e / r.lower_bound_j : 0.0},
+          {"spacing_m", pr.spacing},
+          {"footprint_m", pr.footprint},
+          {"altitude_m", pr.altitude},
+          {"corner_strategy", o.corners},
+          {"corners", {{"sharp", r.plan.flown.sharp_corners}, {"rounded", r.plan.flown.rounded_corners}}},
+          {"cells", r.plan.cells},
+          {"cell_plans", cellPlansJson(r.plan.cell_plans)},
+          {"sweep_scan", sweepScanJson(r.sweep_scan)},
+          {"per_cell", r.per_cell ? nlohmann::json{{"energy_j", r.per_cell->flown.energy},
+                                                   {"pattern", r.per_cell->pattern},
+                                                   {"coverage_pct", r.per_cell->coverage_pct},
+                                                   {"cell_plans", cellPlansJson(r.per_cell->cell_plans)}}
+                                  : nlohmann::json(nullptr)},
+          {"candidates", r.candidates},
+          {"baselines",
+           {{"shortest_path", candidateJson(r.shortest_path, e)},
+            {"ground_station_default", candidateJson(r.ground_station_default, e)},
+            {"best_spiral", r.best_spiral ? candidateJson(*r.best_spiral, e) : nlohmann::json(nullptr)}}},
+          {"battery", batteryJson(r.battery)},
+          {"files", {(dir / "mission.plan").string(), (dir / "mission.waypoints").string(), (dir / "path.geojson").string(),
+                     (dir / "legs.csv").string()}},
+          {"notes", notes}};
+}
+
+/// The plan, its cells, the bound, the baselines and the battery as text.
+void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin) {
+  const double e = r.plan.flown.energy;
   std::cout << std::fixed << std::setprecision(1);
   std::cout << "plan: " << r.plan.pattern;
   if (r.plan.pattern != "spiral") std::cout << " at " << std::setprecision(0) << r.plan.sweep_angle_deg << " deg";
   std::cout << std::setprecision(1) << ", " << e / 1000.0 << " kJ, " << std::setprecision(0) << r.plan.flown.time
-            << " s, " << r.plan.flown.length << " m, coverage " << std::setprecision(1) << r.plan.coverage_pct << " %\n";
+            << " s, " << r.plan.flown.length << " m, coverage " << std::setprecision(1) << r.plan.coverage_pct << " %";
+  if (margin > 0.0) std::cout << " (" << whole_area_pct << " % counting the no-fly margin band as area)";
+  std::cout << "\n";
   for (size_t i = 0; i < r.plan.cell_plans.size(); ++i) {
     const auto& c = r.plan.cell_plans[i];
     std::cout << "  cell " << i + 1 << ": " << c.pattern;
@@ -323,6 +275,215 @@ void runPlan(const PlanOpts& o) {
     std::cout << "battery: mission " << r.battery->mission_energy_j / 1000.0 << " kJ of "
               << r.battery->usable_energy_j / 1000.0 << " kJ usable (margin " << r.battery->margin_pct << " %, "
               << r.battery->remaining_pct << " % of the usable charge left on landing)\n";
+}
+
+/// "A,B" as two positive numbers; throws std::invalid_argument naming `option` and `expected`.
+std::pair<double, double> parsePair(const std::string& s, const std::string& option, const std::string& expected) {
+  const auto comma = s.find(',');
+  try {
+    if (comma == std::string::npos) throw std::invalid_argument("no comma");
+    size_t a = 0, b = 0;
+    const double x = std::stod(s.substr(0, comma), &a), y = std::stod(s.substr(comma + 1), &b);
+    if (a != comma || b != s.size() - comma - 1 || !(x > 0.0) || !(y > 0.0)) throw std::invalid_argument("bad");
+    return {x, y};
+  } catch (const std::exception&) {
+    throw std::invalid_argument(option + " '" + s + "': expected " + expected);
+  }
+}
+
+/// The area read and the problem set up from the options: spacing, or the camera's footprint.
+struct PlanSetup {
+  geo::SurveyArea area;
+  pl::SurveyProblem problem;                 ///< [m] the area with its zones as read (no margin)
+  std::optional<pl::PhotoGeometry> photos;   ///< the camera's photos (absent with --spacing)
+  double side_overlap = 0.0, frontal_overlap = 0.0;  ///< [-] as used for the photos
+  std::vector<std::string> notes;            ///< what the options left to a default
+};
+
+/// The camera of the options: --sensor-mm/--focal-mm (and --image-px), else --fov (and --fov-along).
+pl::Camera cameraOf(const PlanOpts& o) {
+  if (!o.sensor_mm.empty() || o.focal_mm > 0.0) {
+    if (o.sensor_mm.empty() || !(o.focal_mm > 0.0))
+      throw std::invalid_argument("give both --sensor-mm W,H and --focal-mm F (or --fov)");
+    if (o.fov_deg > 0.0 || o.fov_along_deg > 0.0) throw std::invalid_argument("give either --fov or --sensor-mm/--focal-mm, not both");
+    const auto sensor = parsePair(o.sensor_mm, "--sensor-mm", "W,H in mm, e.g. 23.2,15.4");
+    const auto image = o.image_px.empty() ? std::pair<double, double>{0, 0}
+                                          : parsePair(o.image_px, "--image-px", "W,H in pixels, e.g. 5456,3632");
+    return pl::Camera::fromSensor(sensor.first, sensor.second, o.focal_mm, static_cast<int>(image.first),
+                                  static_cast<int>(image.second));
+  }
+  if (!(o.fov_deg > 0.0 && o.fov_deg < 180.0))
+    throw std::invalid_argument("--fov = " + std::to_string(o.fov_deg) + " deg: expected (0, 180) (or give --spacing)");
+  if (!o.image_px.empty()) throw std::invalid_argument("--image-px goes with --sensor-mm and --focal-mm");
+  pl::Camera c;
+  c.fov_across_rad = o.fov_deg * M_PI / 180.0;
+  c.fov_along_rad = (o.fov_along_deg > 0.0 ? o.fov_along_deg : o.fov_deg) * M_PI / 180.0;
+  return c;
+}
+
+/// Spacing and footprint of `s.problem` from --spacing, or from the camera with its overlaps.
+void setSpacing(const PlanOpts& o, PlanSetup& s) {
+  auto& pr = s.problem;
+  const bool camera = o.fov_deg > 0.0 || o.fov_along_deg > 0.0 || !o.sensor_mm.empty() || o.focal_mm > 0.0 || o.overlap >= 0.0;
+  if (o.spacing > 0.0) {
+    if (camera) throw std::invalid_argument("give either --spacing or --altitude/--fov/--overlap, not both");
+    if (o.frontal_overlap >= 0.0)
+      throw std::invalid_argument("--frontal-overlap needs a camera (--fov or --sensor-mm/--focal-mm with --overlap), not --spacing");
+    pr.spacing = pr.footprint = o.spacing;
+    return;
+  }
+  if (!(o.overlap >= 0.0 && o.overlap < 1.0))
+    throw std::invalid_argument("--overlap = " + std::to_string(o.overlap) + ": expected a fraction in [0, 1) (or give --spacing)");
+  s.side_overlap = o.overlap;
+  s.frontal_overlap = o.frontal_overlap >= 0.0 ? o.frontal_overlap : o.overlap;
+  if (o.frontal_overlap < 0.0)
+    s.notes.push_back("camera: frontal overlap " + fixedText(100.0 * s.frontal_overlap, 0) +
+                      " % taken from the side overlap (give --frontal-overlap)");
+  s.photos = pl::photoGeometry(cameraOf(o), o.altitude, s.side_overlap, s.frontal_overlap);
+  pr.footprint = s.photos->footprint_across_m;
+  pr.spacing = s.photos->line_spacing_m;
+}
+
+PlanSetup setUp(const PlanOpts& o) {
+  PlanSetup s;
+  geo::ReadOptions ro;
+  ro.no_fly_files = o.no_fly;
+  progress("plan: reading " + o.area);
+  s.area = geo::readSurveyArea(o.area, ro);
+  if (!s.area.frame) throw std::invalid_argument(o.area + ": the area has no geodetic frame (metric WKT without an origin); missions need lat/lon");
+  auto& pr = s.problem;
+  pr.area = s.area.polygon();
+  pr.no_fly = s.area.no_fly;
+  pr.altitude = o.altitude;
+  setSpacing(o, s);
+  if (!o.home.empty()) pr.home = parseHome(o.home, *s.area.frame);
+  else if (s.area.home) pr.home = *s.area.home;
+  else pr.home = pr.area.outer.front();
+  return s;
+}
+
+/// Throws std::runtime_error when the flown path enters a zone or comes within the margin of one.
+void checkFlown(const pl::SurveyProblem& pr, const geo::CoveragePath& path, double margin) {
+  const auto problems = pl::checkPlan(pr, path);
+  if (!problems.empty()) throw std::runtime_error("plan failed its own check: " + problems.front());
+  if (margin <= 0.0) return;
+  const auto close = geo::marginViolations(path, pl::noFlyZones(pr), margin);
+  if (!close.empty())
+    throw std::runtime_error("plan failed its own check: leg " + std::to_string(close.front().leg) + " passes " +
+                             fixedText(close.front().distance_m, 2) + " m from no-fly zone " +
+                             std::to_string(close.front().zone) + " (--no-fly-margin " + fixedText(margin, 2) + " m)");
+}
+
+/// The camera and mission facts of the output: photos, holds, fences, vehicle type.
+nlohmann::json missionJson(const PlanSetup& s, const pl::PlanMission& pm, double margin, double photo_pct) {
+  nlohmann::json camera = nullptr;
+  if (s.photos)
+    camera = {{"trigger_distance_m", s.photos->trigger_distance_m},
+              {"footprint_across_m", s.photos->footprint_across_m},
+              {"footprint_along_m", s.photos->footprint_along_m},
+              {"line_spacing_m", s.photos->line_spacing_m},
+              {"side_overlap", s.side_overlap},
+              {"frontal_overlap", s.frontal_overlap},
+              {"gsd_m", s.photos->gsd_m > 0.0 ? nlohmann::json(s.photos->gsd_m) : nlohmann::json(nullptr)},
+              {"photos", pm.photos},
+              {"photo_coverage_pct", photo_pct},
+              {"camera_runs", pm.camera_runs},
+              {"camera_length_m", pm.camera_length_m}};
+  return {{"camera", camera},
+          {"holds", pm.holds},
+          {"hold_s", pl::kStopHoldSeconds},
+          {"vehicle_type", pm.mission.vehicle_type},
+          {"no_fly_margin_m", margin},
+          {"waypoint_legs_within_margin", pm.legs_within_margin},
+          {"inclusion_fence_distance_m", pm.fence_distance_m}};
+}
+
+/// The camera and mission lines of the text output.
+void printMission(const PlanSetup& s, const pl::PlanMission& pm, double margin, double photo_pct, double hover_power_w) {
+  std::cout << std::fixed << std::setprecision(1);
+  if (s.photos) {
+    const auto& g = *s.photos;
+    std::cout << "camera: a photo every " << std::setprecision(2) << g.trigger_distance_m << " m along " << pm.camera_runs
+              << " sweeps (footprint " << std::setprecision(1) << g.footprint_across_m << " x " << g.footprint_along_m
+              << " m, lines " << g.line_spacing_m << " m apart";
+    if (g.gsd_m > 0.0) std::cout << ", GSD " << std::setprecision(2) << 100.0 * g.gsd_m << " cm/px";
+    std::cout << "): " << pm.photos << " photos covering " << std::setprecision(1) << photo_pct
+              << " % of the area (turns and transits take none)\n";
+  } else {
+    std::cout << "camera: no camera commands written (--spacing has no camera; give --altitude with --fov or "
+                 "--sensor-mm/--focal-mm, --overlap and --frontal-overlap for photos)\n";
+  }
+  std::cout << std::setprecision(1) << "mission: " << pm.holds << (pm.holds == 1 ? " planned stop holds " : " planned stops hold ")
+            << pl::kStopHoldSeconds
+            << " s (about " << pm.holds * pl::kStopHoldSeconds * hover_power_w / 1000.0
+            << " kJ of hover not in the plan's energy); legs keep " << margin
+            << " m from the no-fly zones; inclusion fence " << pm.fence_distance_m << " m outside the area\n";
+}
+
+void runPlan(const PlanOpts& o) {
+  const auto vehicle = energy::loadVehicle(o.vehicle);
+  PlanSetup s = setUp(o);
+  const auto& pr = s.problem;
+  const auto& frame = *s.area.frame;
+  std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
+  if (!o.no_report) files.push_back("report.html");
+  for (const auto& f : files)
+    if (fs::exists(fs::path(o.out) / f) && !o.force)
+      throw std::runtime_error((fs::path(o.out) / f).string() + " exists; pass --force to overwrite it");
+
+  pl::PlannerSettings ps;
+  ps.corners = pl::cornerStrategyFromString(o.corners);
+  ps.camera_max_speed = o.camera_max_speed;
+  ps.spirals = !o.no_spiral;
+  const auto model = energy::marinsModel(vehicle);
+  const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
+  const auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
+  if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
+  checkFlown(pr, r.plan.flown.path, o.no_fly_margin);
+
+  pl::MissionOptions mo;
+  mo.trigger_distance_m = s.photos ? s.photos->trigger_distance_m : 0.0;
+  mo.rotor_count = vehicle.rotor_count;
+  mo.fence_margin_m = o.no_fly_margin > 0.0 ? o.no_fly_margin : pl::kDefaultNoFlyMargin;
+  mo.no_fly_margin_m = o.no_fly_margin;
+  const auto pm = pl::missionFromPlan(r.plan.flown, pr, frame, s.area.home_alt_m.value_or(frame.origin().alt_m), mo);
+  std::vector<std::string> notes = s.notes;
+  notes.insert(notes.end(), r.notes.begin(), r.notes.end());
+  notes.insert(notes.end(), pm.notes.begin(), pm.notes.end());
+  geo::PathGeoJsonOptions go;
+  go.leg_properties["speed_mps"] = r.plan.flown.speeds.cruise;
+  go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
+  go.leg_properties["time_s"] = r.plan.flown.leg_time;
+  const fs::path dir(o.out);
+  writeTextFileAtomic((dir / "mission.plan").string(), ms::toQgcPlan(pm.mission));
+  writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
+  writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
+  writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
+  if (!o.no_report || !o.report_svg.empty()) {
+    auto data = planReportData(r, pr, vehicle, model, o.area);
+    data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
+                                                   fixedText(s.photos->trigger_distance_m, 2) + " m)"
+                                             : std::string("no camera commands")});
+    writeReport(report::planReport(data), o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
+  }
+  const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
+  const double whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
+  geo::CoveragePath photographed;  // the legs the camera is on along
+  for (int i : pm.camera_legs) photographed.legs.push_back(r.plan.flown.path.legs[static_cast<size_t>(i)]);
+  const double photo_pct = s.photos ? pl::coveragePercent(flown_pr, photographed) : 0.0;
+  if (s.photos && photo_pct < 99.0)
+    notes.push_back("camera: the photos cover " + fixedText(photo_pct, 1) +
+                    " % of the area, less than the plan's coverage: the camera is off along turns (a spiral's corner "
+                    "arcs too), whose footprint the plan's coverage counts");
+  if (o.json) {
+    auto j = planJsonOf(r, pr, o, dir, notes);
+    j["coverage_outside_zones_pct"] = whole_area_pct;
+    j["mission"] = missionJson(s, pm, o.no_fly_margin, photo_pct);
+    printJson(j);
+    return;
+  }
+  printPlanText(r, whole_area_pct, o.no_fly_margin);
+  printMission(s, pm, o.no_fly_margin, photo_pct, energy::marinsHoverPowerW(vehicle));
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
   std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
 }
@@ -339,7 +500,19 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
   cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));
   cmd->add_option("--fov", o->fov_deg, "camera field of view across track [deg]");
+  cmd->add_option("--fov-along", o->fov_along_deg, "camera field of view along track [deg] (default: --fov, a square footprint)")
+      ->check(CLI::Range(0.0, 180.0));
+  cmd->add_option("--sensor-mm", o->sensor_mm, "camera sensor width,height [mm], with --focal-mm (instead of --fov)");
+  cmd->add_option("--focal-mm", o->focal_mm, "camera focal length [mm], with --sensor-mm")->check(CLI::PositiveNumber);
+  cmd->add_option("--image-px", o->image_px, "image width,height [px], with --sensor-mm: ground sampling distance");
   cmd->add_option("--overlap", o->overlap, "side overlap between neighbouring swaths, fraction in [0, 1)");
+  cmd->add_option("--frontal-overlap", o->frontal_overlap,
+                  "overlap between consecutive photos along a sweep, fraction in [0, 1) (default: --overlap); sets the "
+                  "camera trigger distance")
+      ->check(CLI::Range(0.0, 0.999));
+  cmd->add_option("--no-fly-margin", o->no_fly_margin,
+                  "distance every flown point keeps from the no-fly zones, for GPS and tracking error [m] (default 2; 0: none)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--camera-max-speed", o->camera_max_speed, "largest ground speed on sweep legs the camera allows [m/s] (0: none)")
       ->check(CLI::Range(0.0, 200.0));
   cmd->add_option("--corner-strategy", o->corners, "sharp, rounded or auto (cheapest per corner)")
@@ -352,8 +525,8 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--report-svg", o->report_svg, "also write the report's figures as SVG files into this folder");
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
-    if (o->spacing <= 0.0 && o->fov_deg <= 0.0)
-      throw std::invalid_argument("give --spacing M, or --altitude M --fov DEG --overlap F");
+    if (o->spacing <= 0.0 && o->fov_deg <= 0.0 && o->sensor_mm.empty())
+      throw std::invalid_argument("give --spacing M, or --altitude M --fov DEG --overlap F (or --sensor-mm W,H --focal-mm F)");
     runPlan(*o);
   });
 }

@@ -93,6 +93,16 @@ left out the footprint beyond the chords of arcs) and so rejected some spirals f
 that keep coverage: with the exact check, the E-Spiral rectangle's plan fell from 60.9 to 59.2 kJ,
 polygon from 92.5 to 84.2 kJ, and spiral_polygon became a spiral (100.9 -> 95.0 kJ).
 
+Every flown point keeps 2 m from the no-fly zones (`plan --no-fly-margin`, default 2 m, for GPS and
+tracking error; docs/missions.md): the zones are grown by the margin before the search, and coverage
+is of the area outside the grown zones. Since 2026-11-24 (issue 17) this changes the two IRIS+ rows,
+the only areas with a no-fly zone (before, their legs passed 1.68 m from it): the plan keeps its
+66 deg sweep but its lines shift, 83.3 -> 83.2 kJ, 2025 -> 2022 m, plan / bound 2.95 (2.98 with the
+obstacle file) -> 3.02 (the bound falls with the area left to cover, 28.3 -> 27.5 kJ); its baselines
+change more (shortest path 84.7 -> 87.4 kJ, so the energy objective now saves 4.8 %% instead of
+1.7 %%; ground-station default 127.6 -> 126.4 kJ; best spiral 170.6 -> 175.0 kJ). The E-Spiral rows
+are unchanged.
+
 | area | plan | energy [kJ] | coverage [%%] | time [s] | length [m] | saving vs shortest path [%%] | vs ground-station default [%%] | vs best spiral [%%] | plan / bound | wall [s] |
 |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
 %s

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "test_util.hpp"
+#include "wattswath/geometry/clearance.hpp"
+#include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/mission/planned_mission.hpp"
 
 using wattswath::test::cliBinary;
@@ -78,6 +80,8 @@ void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
   const auto problems = wattswath::mission::checkQgcPlan(slurp(out + "/mission.plan"));
   EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
+  const auto mp = wattswath::mission::checkMissionPlannerPlan(slurp(out + "/mission.plan"));
+  EXPECT_TRUE(mp.empty()) << (mp.empty() ? "" : mp.front());
   EXPECT_EQ(slurp(out + "/mission.waypoints").rfind("QGC WPL 110", 0), 0u);
   const auto gj = nlohmann::json::parse(slurp(out + "/path.geojson"));
   EXPECT_EQ(gj.at("type"), "FeatureCollection");
@@ -96,10 +100,101 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   const auto out = outDir("iris");
   const auto j = planJson(sourcePath("data/areas/iris_area.geojson"), out, "--spacing 15");
   checkPlanOutput(j, out);
-  // The no-fly zone of the area is a geofence exclusion polygon in the .plan.
+  // The inclusion fence around the area, then the no-fly zone as an exclusion polygon.
   const auto plan = nlohmann::json::parse(slurp(out + "/mission.plan"));
-  EXPECT_EQ(plan.at("geoFence").at("polygons").size(), 1u);
-  EXPECT_FALSE(plan.at("geoFence").at("polygons").at(0).at("inclusion").get<bool>());
+  ASSERT_EQ(plan.at("geoFence").at("polygons").size(), 2u);
+  EXPECT_TRUE(plan.at("geoFence").at("polygons").at(0).at("inclusion").get<bool>());
+  EXPECT_FALSE(plan.at("geoFence").at("polygons").at(1).at("inclusion").get<bool>());
+  EXPECT_GE(j.at("mission").at("inclusion_fence_distance_m").get<double>(), 2.0);
+  // Integer plan speeds (Mission Planner), a quadrotor, holds at the planned stops, no camera.
+  EXPECT_TRUE(plan.at("mission").at("cruiseSpeed").is_number_integer());
+  EXPECT_EQ(plan.at("mission").at("vehicleType"), 2);
+  int holds = 0, camera = 0;
+  for (const auto& item : plan.at("mission").at("items")) {
+    holds += item.at("command") == 16 && item.at("params").at(0).get<double>() > 0.0;
+    camera += item.at("command") == 206;
+  }
+  EXPECT_EQ(holds, j.at("mission").at("holds").get<int>());
+  EXPECT_GT(holds, 0);
+  EXPECT_EQ(camera, 0);
+  EXPECT_TRUE(j.at("mission").at("camera").is_null());
+  EXPECT_DOUBLE_EQ(j.at("mission").at("no_fly_margin_m").get<double>(), 2.0);
+  EXPECT_EQ(j.at("mission").at("waypoint_legs_within_margin").get<int>(), 0);
+}
+
+TEST(CliPlan, TextOutputSaysWhenNoCameraCommandsAreWritten) {
+  const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/espiral_rectangle.geojson") + " --vehicle " + iris() +
+                     " --spacing 30 --out " + outDir("nocamera") + " --no-report 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("no camera commands written"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("planned stop"), std::string::npos) << r.output;
+}
+
+TEST(CliPlan, CameraTriggersAlongEachSweepAtTheFrontalFootprintDistance) {
+  // The worked example of planner/tests (QGC's Sony ILCE-QX1 at 50 m, 70 % side, 80 % frontal):
+  // a photo every 0.2 x 48.26 m = 9.65 m.
+  const auto out = outDir("sensor");
+  const auto j = planJson(sourcePath("data/areas/espiral_rectangle.geojson"), out,
+                          "--altitude 50 --sensor-mm 23.2,15.4 --focal-mm 16 --image-px 5456,3632 --overlap 0.7 "
+                          "--frontal-overlap 0.8 --no-spiral --no-report");
+  const auto& cam = j.at("mission").at("camera");
+  ASSERT_TRUE(cam.is_object());
+  EXPECT_NEAR(cam.at("trigger_distance_m").get<double>(), 0.2 * 48.262463343108504, 1e-9);
+  EXPECT_NEAR(cam.at("gsd_m").get<double>(), 50.0 * 23.2 / (5456.0 * 16.0), 1e-12);
+  EXPECT_NEAR(j.at("spacing_m").get<double>(), 0.3 * 72.5, 1e-9);
+  EXPECT_GE(cam.at("photo_coverage_pct").get<double>(), 99.0);
+  const auto plan = nlohmann::json::parse(slurp(out + "/mission.plan"));
+  EXPECT_TRUE(wattswath::mission::checkQgcPlan(plan.dump()).empty());
+  EXPECT_TRUE(wattswath::mission::checkMissionPlannerPlan(plan.dump()).empty());
+  // On (param1 d) and off (0) alternate, each right after a waypoint; one pair per camera run.
+  const auto& items = plan.at("mission").at("items");
+  int on = 0, off = 0;
+  bool camera_on = false;
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items[i].at("command") != 206) continue;
+    EXPECT_EQ(items[i - 1].at("command"), 16) << "item " << i;
+    const double d = items[i].at("params").at(0).get<double>();
+    EXPECT_EQ(d > 0.0, !camera_on) << "item " << i;
+    if (d > 0.0) {
+      EXPECT_NEAR(d, cam.at("trigger_distance_m").get<double>(), 1e-12);
+    }
+    camera_on = d > 0.0;
+    (d > 0.0 ? on : off) += 1;
+  }
+  EXPECT_FALSE(camera_on);
+  EXPECT_EQ(on, cam.at("camera_runs").get<int>());
+  EXPECT_EQ(off, on);
+  EXPECT_GE(on, 2);
+  EXPECT_GT(cam.at("photos").get<int>(), static_cast<int>(cam.at("camera_length_m").get<double>() / 9.66));
+}
+
+TEST(CliPlan, LinesKeepTheNoFlyMarginThatPlanningWithoutItBreaks) {
+  // Distances of the written lines (legs.csv) to the area's no-fly zone, in the area's frame.
+  const std::string area_file = sourcePath("data/areas/iris_area.geojson");
+  const auto area = wattswath::geometry::readSurveyArea(area_file);
+  const auto& zone = area.polygon().holes.at(0);
+  auto closest = [&](const std::string& extra) {
+    const auto out = outDir("margin");
+    planJson(area_file, out, "--spacing 15 --no-report " + extra);
+    std::istringstream csv(slurp(out + "/legs.csv"));
+    std::string row;
+    std::getline(csv, row);
+    double d = 1e300;
+    while (std::getline(csv, row)) {
+      std::vector<std::string> f;
+      std::stringstream ss(row);
+      for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+      if (f.at(1) != "line") continue;
+      wattswath::geometry::PathLeg leg;
+      leg.start = area.frame->toLocal(std::stod(f.at(3)), std::stod(f.at(4)));
+      leg.end = area.frame->toLocal(std::stod(f.at(5)), std::stod(f.at(6)));
+      d = std::min(d, wattswath::geometry::distanceToRing(leg, zone));
+    }
+    return d;
+  };
+  EXPECT_LT(closest("--no-fly-margin 0"), 2.0);  // 1.68 m: the plan before issue 17
+  EXPECT_GE(closest(""), 2.0 - 1e-6);           // the default margin (CSV positions to 1e-8 deg)
+  EXPECT_GE(closest("--no-fly-margin 5"), 5.0 - 1e-6);
 }
 
 TEST(CliPlan, NoSpiralFliesStraightLinesOnly) {
@@ -136,6 +231,15 @@ TEST(CliPlan, ClearErrors) {
   expectError(base + " --spacing 10 --home 43.7", "LAT,LON");
   expectError(base + " --spacing 10 --home 95,10", "lat");
   expectError(base + " --spacing 10 --corner-strategy wiggly", "corner-strategy");
+  expectError(base + " --spacing 10 --frontal-overlap 0.6", "--frontal-overlap needs a camera");
+  expectError(base + " --altitude 50 --sensor-mm 23.2 --focal-mm 16 --overlap 0.7", "--sensor-mm");
+  expectError(base + " --altitude 50 --sensor-mm 23.2,15.4 --overlap 0.7", "--focal-mm");
+  expectError(base + " --altitude 50 --fov 60 --focal-mm 16 --sensor-mm 23.2,15.4 --overlap 0.7", "not both");
+  expectError(base + " --spacing 10 --no-fly-margin -1", "no-fly-margin");
+  // Home on the IRIS+ area's no-fly zone (a vertex of it): inside the margin.
+  expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --spacing 15 --out " +
+                  outDir("errors3") + " --home 43.7159,10.461794",
+              "within the no-fly margin");
   expectError("plan " + sourcePath("data/vehicles/iris.json") + " --vehicle " + iris() + " --spacing 10 --out " +
                   outDir("errors2"),
               "iris.json");
@@ -185,6 +289,8 @@ TEST(CliPlan, BatteryWhenTheVehicleHasOne) {
   EXPECT_NEAR(b.at("margin_j").get<double>(),
               b.at("usable_energy_j").get<double>() - b.at("mission_energy_j").get<double>(), 1e-6);
   EXPECT_EQ(b.at("fits").get<bool>(), b.at("warning").is_null());
+  // A hexacopter is written as one (MAV_TYPE_HEXAROTOR), not as a quadrotor.
+  EXPECT_EQ(nlohmann::json::parse(slurp(out + "/mission.plan")).at("mission").at("vehicleType"), 13);
   // The IRIS vehicle file has no battery: null, not a guess.
   EXPECT_TRUE(planJson(sourcePath("data/areas/espiral_rectangle.geojson"), outDir("battery2"), "--spacing 30")
                   .at("battery")

@@ -13,6 +13,11 @@ namespace wattswath::geometry::detail {
 /// split into polygons with holes (outer CCW, holes CW). Handles holes touching the boundary.
 std::vector<PolygonWithHoles> regularizedRegions(const PolygonWithHoles& area);
 
+/// Union of the Minkowski sums of each ring with the regular `sides`-gon of circumradius
+/// `circumradius` [m] centred on the origin: outer boundaries, counter-clockwise. Throws
+/// std::invalid_argument naming the ring when one is not a simple polygon.
+std::vector<Ring> minkowskiUnion(const std::vector<Ring>& rings, double circumradius, int sides);
+
 /// Convex pieces with vertical walls covering `poly` (CGAL::Polygon_vertical_decomposition_2).
 std::vector<Ring> verticalDecomposition(const PolygonWithHoles& poly);
 

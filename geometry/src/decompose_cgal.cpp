@@ -1,13 +1,17 @@
-// CGAL translation unit (slow to compile): vertical decomposition and straight-skeleton offsets.
+// CGAL translation unit (slow to compile): vertical decomposition, straight-skeleton offsets and
+// Minkowski sums (rings inflated by a margin).
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_vertical_decomposition_2.h>
 #include <CGAL/create_offset_polygons_2.h>
 #include <CGAL/create_straight_skeleton_2.h>
+#include <CGAL/minkowski_sum_2.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "cgal_ops.hpp"
 
@@ -65,6 +69,26 @@ std::vector<PolygonWithHoles> regularizedRegions(const PolygonWithHoles& area) {
     regions.push_back(std::move(r));
   }
   return regions;
+}
+
+std::vector<Ring> minkowskiUnion(const std::vector<Ring>& rings, double circumradius, int sides) {
+  EPolygon disk;
+  for (int k = 0; k < sides; ++k) {  // edge normals at multiples of 2 pi / sides (east, north, ...)
+    const double a = 2.0 * M_PI * (k + 0.5) / sides;
+    disk.push_back(EK::Point_2(circumradius * std::cos(a), circumradius * std::sin(a)));
+  }
+  CGAL::Polygon_set_2<EK> set;
+  for (size_t i = 0; i < rings.size(); ++i) {
+    const EPolygon p = toExact(rings[i], true);
+    if (p.size() < 3 || !p.is_simple())
+      throw std::invalid_argument("ring " + std::to_string(i) + " is not a simple polygon");
+    set.join(CGAL::minkowski_sum_2(p, disk));
+  }
+  std::vector<EPolygonWithHoles> parts;
+  set.polygons_with_holes(std::back_inserter(parts));
+  std::vector<Ring> out;
+  for (const auto& part : parts) out.push_back(toRing(part.outer_boundary()));
+  return out;
 }
 
 std::vector<Ring> verticalDecomposition(const PolygonWithHoles& poly) {

@@ -1,5 +1,6 @@
 #include "wattswath/mission/planned_mission.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +19,7 @@ constexpr int kCmdWaypoint = 16;        // MAV_CMD_NAV_WAYPOINT
 constexpr int kCmdReturnToLaunch = 20;  // MAV_CMD_NAV_RETURN_TO_LAUNCH
 constexpr int kCmdTakeoff = 22;         // MAV_CMD_NAV_TAKEOFF
 constexpr int kCmdChangeSpeed = 178;    // MAV_CMD_DO_CHANGE_SPEED
+constexpr int kCmdCamTriggDist = 206;   // MAV_CMD_DO_SET_CAM_TRIGG_DIST
 constexpr int kFrameGlobal = 0;         // MAV_FRAME_GLOBAL (home row of WPL files)
 constexpr int kFrameMission = 2;        // MAV_FRAME_MISSION (commands without a position)
 constexpr int kFrameRelativeAlt = 3;    // MAV_FRAME_GLOBAL_RELATIVE_ALT
@@ -43,6 +45,24 @@ void checkPositive(double v, const std::string& what) {
     throw std::invalid_argument("mission: " + what + " = " + std::to_string(v) + " must be positive");
 }
 
+void checkNonNegative(double v, const std::string& what) {
+  if (!std::isfinite(v) || v < 0.0)
+    throw std::invalid_argument("mission: " + what + " = " + std::to_string(v) + " must be finite and >= 0");
+}
+
+void checkPolygon(const std::vector<GeoPoint>& poly, const std::string& what) {
+  if (poly.size() < 3)
+    throw std::invalid_argument("mission: " + what + " has " + std::to_string(poly.size()) +
+                                " vertices (at least 3 expected)");
+  for (size_t k = 0; k < poly.size(); ++k) checkGeo(poly[k], what + " vertex " + std::to_string(k));
+}
+
+json ringJson(const std::vector<GeoPoint>& poly, bool inclusion) {
+  json ring = json::array();
+  for (const auto& g : poly) ring.push_back({g.lat_deg, g.lon_deg});
+  return {{"inclusion", inclusion}, {"polygon", ring}, {"version", 1}};
+}
+
 // The flight as MAVLink items: take-off, then per waypoint a speed change when its speed differs
 // from the one in force (the caller decides what counts as a change: planner::missionWaypoints),
 // then the waypoint; finally return to launch.
@@ -65,8 +85,17 @@ std::vector<Item> items(const PlannedMission& m) {
     }
     Item wp;
     wp.command = kCmdWaypoint;
-    wp.params = {0 /* hold */, 0, 0, NAN /* yaw unchanged */, w.position.lat_deg, w.position.lon_deg, w.altitude_m};
+    wp.params = {w.hold_s, 0, 0, NAN /* yaw unchanged */, w.position.lat_deg, w.position.lon_deg, w.altitude_m};
     out.push_back(wp);
+    if (w.camera_trigger_m) {
+      // As QGC's survey (TransectStyleComplexItem::_appendCameraTriggerDistance): param3 1 takes one
+      // photo at once, so each sweep's first and last footprints are photographed.
+      Item cam;
+      cam.command = kCmdCamTriggDist;
+      cam.frame = kFrameMission;
+      cam.params = {*w.camera_trigger_m, 0 /* shutter integration: ignore */, 1 /* trigger once now */, 0, 0, 0, 0};
+      out.push_back(cam);
+    }
   }
   Item rtl;
   rtl.command = kCmdReturnToLaunch;
@@ -93,6 +122,21 @@ std::string csvEscape(const std::string& s) {
 
 }  // namespace
 
+std::optional<int> mavTypeOfRotors(int rotor_count) {
+  switch (rotor_count) {
+    case 3: return 15;  // MAV_TYPE_TRICOPTER
+    case 4: return 2;   // MAV_TYPE_QUADROTOR
+    case 6: return 13;  // MAV_TYPE_HEXAROTOR
+    case 8: return 14;  // MAV_TYPE_OCTOROTOR
+    default: return std::nullopt;
+  }
+}
+
+int planSpeedField(double speed_mps) {
+  if (!std::isfinite(speed_mps) || speed_mps <= 1.0) return 1;
+  return static_cast<int>(std::min(std::lround(speed_mps), 1000L));
+}
+
 void validate(const PlannedMission& m) {
   checkGeo(m.home, "home");
   if (!std::isfinite(m.home_altitude_amsl_m))
@@ -100,6 +144,9 @@ void validate(const PlannedMission& m) {
   checkPositive(m.takeoff_altitude_m, "takeoff_altitude_m");
   checkPositive(m.cruise_speed_mps, "cruise_speed_mps");
   checkPositive(m.hover_speed_mps, "hover_speed_mps");
+  if (m.vehicle_type != 2 && m.vehicle_type != 13 && m.vehicle_type != 14 && m.vehicle_type != 15)
+    throw std::invalid_argument("mission: vehicle_type = " + std::to_string(m.vehicle_type) +
+                                " is not a multirotor MAV_TYPE (2, 13, 14 or 15 expected)");
   if (m.waypoints.empty()) throw std::invalid_argument("mission: no waypoints (a mission needs at least one)");
   for (size_t i = 0; i < m.waypoints.size(); ++i) {
     const auto& w = m.waypoints[i];
@@ -109,14 +156,11 @@ void validate(const PlannedMission& m) {
     if (!std::isfinite(w.altitude_m) || w.altitude_m <= 0.0)
       throw std::invalid_argument("mission: " + what + " altitude_m = " + std::to_string(w.altitude_m) +
                                   " must be above home (> 0)");
+    checkNonNegative(w.hold_s, what + " hold_s");
+    if (w.camera_trigger_m) checkNonNegative(*w.camera_trigger_m, what + " camera_trigger_m");
   }
-  for (size_t i = 0; i < m.no_fly.size(); ++i) {
-    if (m.no_fly[i].size() < 3)
-      throw std::invalid_argument("mission: no-fly polygon " + std::to_string(i) + " has " +
-                                  std::to_string(m.no_fly[i].size()) + " vertices (at least 3 expected)");
-    for (size_t k = 0; k < m.no_fly[i].size(); ++k)
-      checkGeo(m.no_fly[i][k], "no-fly polygon " + std::to_string(i) + " vertex " + std::to_string(k));
-  }
+  for (size_t i = 0; i < m.no_fly.size(); ++i) checkPolygon(m.no_fly[i], "no-fly polygon " + std::to_string(i));
+  if (!m.fence_inclusion.empty()) checkPolygon(m.fence_inclusion, "inclusion fence");
 }
 
 std::string toQgcPlan(const PlannedMission& m) {
@@ -136,11 +180,8 @@ std::string toQgcPlan(const PlannedMission& m) {
     jitems.push_back(j);
   }
   json polygons = json::array();
-  for (const auto& poly : m.no_fly) {
-    json ring = json::array();
-    for (const auto& g : poly) ring.push_back({g.lat_deg, g.lon_deg});
-    polygons.push_back({{"inclusion", false}, {"polygon", ring}, {"version", 1}});
-  }
+  if (!m.fence_inclusion.empty()) polygons.push_back(ringJson(m.fence_inclusion, true));
+  for (const auto& poly : m.no_fly) polygons.push_back(ringJson(poly, false));
   json plan = {
       {"fileType", "Plan"},
       {"version", 1},
@@ -148,10 +189,10 @@ std::string toQgcPlan(const PlannedMission& m) {
       {"mission",
        {{"version", 2},
         {"firmwareType", static_cast<int>(m.firmware)},
-        {"vehicleType", 2},  // MAV_TYPE_QUADROTOR
+        {"vehicleType", m.vehicle_type},
         {"globalPlanAltitudeMode", 1},
-        {"cruiseSpeed", m.cruise_speed_mps},
-        {"hoverSpeed", m.hover_speed_mps},
+        {"cruiseSpeed", planSpeedField(m.cruise_speed_mps)},
+        {"hoverSpeed", planSpeedField(m.hover_speed_mps)},
         {"plannedHomePosition", {m.home.lat_deg, m.home.lon_deg, m.home_altitude_amsl_m}},
         {"items", jitems}}},
       {"geoFence", {{"version", 2}, {"circles", json::array()}, {"polygons", polygons}}},
@@ -173,105 +214,6 @@ std::string toQgcWpl(const PlannedMission& m) {
     o << "\t1\n";
   }
   return o.str();
-}
-
-std::vector<std::string> checkQgcPlan(const std::string& json_text) {
-  std::vector<std::string> problems;
-  json j;
-  try {
-    j = json::parse(json_text);
-  } catch (const std::exception& e) {
-    return {std::string("not JSON: ") + e.what()};
-  }
-  auto need = [&](const json& obj, const std::string& where, const std::string& key, json::value_t type) -> bool {
-    if (!obj.is_object() || !obj.contains(key)) {
-      problems.push_back(where + ": missing key '" + key + "'");
-      return false;
-    }
-    const auto t = obj.at(key).type();
-    const bool number_ok = (type == json::value_t::number_float) &&
-                           (t == json::value_t::number_integer || t == json::value_t::number_unsigned ||
-                            t == json::value_t::number_float);
-    const bool int_ok = (type == json::value_t::number_integer) &&
-                        (t == json::value_t::number_integer || t == json::value_t::number_unsigned);
-    if (!(t == type || number_ok || int_ok)) {
-      problems.push_back(where + ": key '" + key + "' has the wrong type");
-      return false;
-    }
-    return true;
-  };
-  using vt = json::value_t;
-  if (need(j, "plan", "fileType", vt::string) && j["fileType"] != "Plan") problems.push_back("plan: fileType must be \"Plan\"");
-  if (need(j, "plan", "version", vt::number_integer) && j["version"] != 1) problems.push_back("plan: version must be 1");
-  need(j, "plan", "groundStation", vt::string);
-  if (need(j, "plan", "mission", vt::object)) {
-    const auto& mi = j["mission"];
-    if (need(mi, "mission", "version", vt::number_integer) && mi["version"] != 2)
-      problems.push_back("mission: version must be 2");
-    if (need(mi, "mission", "firmwareType", vt::number_integer)) {
-      const int f = mi["firmwareType"];
-      if (f != 0 && f != 3 && f != 12) problems.push_back("mission: firmwareType " + std::to_string(f) + " unknown");
-    }
-    // Optional in QGC's loader (MissionController::_loadJsonMissionFileV2), numbers when present.
-    for (const char* k : {"vehicleType", "cruiseSpeed", "hoverSpeed"})
-      if (mi.contains(k)) need(mi, "mission", k, std::string(k) == "vehicleType" ? vt::number_integer : vt::number_float);
-    if (need(mi, "mission", "plannedHomePosition", vt::array) && mi["plannedHomePosition"].size() != 3)
-      problems.push_back("mission: plannedHomePosition must be [lat, lon, alt]");
-    if (need(mi, "mission", "items", vt::array)) {
-      if (mi["items"].empty()) problems.push_back("mission: items must contain at least one item");
-      int expected_id = 1;
-      for (size_t i = 0; i < mi["items"].size(); ++i) {
-        const auto& it = mi["items"][i];
-        const std::string w = "mission item " + std::to_string(i);
-        if (need(it, w, "type", vt::string) && it["type"] != "SimpleItem")
-          problems.push_back(w + ": type must be \"SimpleItem\"");
-        need(it, w, "frame", vt::number_integer);
-        need(it, w, "command", vt::number_integer);
-        need(it, w, "autoContinue", vt::boolean);
-        if (need(it, w, "doJumpId", vt::number_integer) && it["doJumpId"] != expected_id)
-          problems.push_back(w + ": doJumpId " + it["doJumpId"].dump() + ", expected " + std::to_string(expected_id));
-        ++expected_id;
-        if (need(it, w, "params", vt::array)) {
-          if (it["params"].size() != 7) problems.push_back(w + ": params must hold 7 values");
-          for (const auto& p : it["params"])
-            if (!p.is_number() && !p.is_null()) problems.push_back(w + ": params must be numbers or null");
-          if (it["params"].size() == 7 && (it["command"] == kCmdWaypoint || it["command"] == kCmdTakeoff)) {
-            const auto& lat = it["params"][4];
-            const auto& lon = it["params"][5];
-            if (!lat.is_number() || !lon.is_number() || std::abs(lat.get<double>()) > 90.0 ||
-                std::abs(lon.get<double>()) > 180.0)
-              problems.push_back(w + ": latitude/longitude out of range");
-          }
-        }
-      }
-    }
-  }
-  if (j.contains("geoFence")) {
-    const auto& g = j["geoFence"];
-    if (need(g, "geoFence", "version", vt::number_integer) && g["version"] != 2)
-      problems.push_back("geoFence: version must be 2");
-    need(g, "geoFence", "circles", vt::array);
-    if (need(g, "geoFence", "polygons", vt::array)) {
-      for (size_t i = 0; i < g["polygons"].size(); ++i) {
-        const auto& p = g["polygons"][i];
-        const std::string w = "geoFence polygon " + std::to_string(i);
-        need(p, w, "inclusion", vt::boolean);
-        need(p, w, "version", vt::number_integer);
-        if (need(p, w, "polygon", vt::array)) {
-          if (p["polygon"].size() < 3) problems.push_back(w + ": fewer than 3 vertices");
-          for (const auto& v : p["polygon"])
-            if (!v.is_array() || v.size() != 2) problems.push_back(w + ": vertices must be [lat, lon]");
-        }
-      }
-    }
-  }
-  if (j.contains("rallyPoints")) {
-    const auto& r = j["rallyPoints"];
-    if (need(r, "rallyPoints", "version", vt::number_integer) && r["version"] != 2)
-      problems.push_back("rallyPoints: version must be 2");
-    need(r, "rallyPoints", "points", vt::array);
-  }
-  return problems;
 }
 
 std::string toLegCsv(const std::vector<LegRecord>& legs) {

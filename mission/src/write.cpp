@@ -1,5 +1,6 @@
 // Writers of the item model: QGroundControl `.plan` and QGC WPL 110 `.waypoints`.
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 
@@ -41,6 +42,13 @@ std::vector<MissionItem> renumbered(const Mission& m) {
 
 json jsonNumber(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
 
+/// A `.plan` speed field: an integer when the value is whole (Mission Planner reads cruiseSpeed and
+/// hoverSpeed as int and refuses 5.0), the real otherwise (read back exactly; QGC takes either).
+json speedField(double v) {
+  if (std::trunc(v) == v && std::abs(v) < 1e9) return json(static_cast<std::int64_t>(v));
+  return json(v);
+}
+
 /// QGroundControl's AltitudeMode of a frame (1 relative, 2 absolute, 4 terrain frame), 0 for none.
 int altitudeMode(int frame) {
   switch (frame) {
@@ -76,8 +84,8 @@ std::string toQgcPlan(const Mission& m) {
                   {"plannedHomePosition", {m.home.lat_deg, m.home.lon_deg, m.home.alt_m}},
                   {"items", items}};
   if (!m.home_known) mission["plannedHomePosition"] = {0.0, 0.0, 0.0};
-  if (m.plan_cruise_speed_mps > 0.0) mission["cruiseSpeed"] = m.plan_cruise_speed_mps;
-  if (m.plan_hover_speed_mps > 0.0) mission["hoverSpeed"] = m.plan_hover_speed_mps;
+  if (m.plan_cruise_speed_mps > 0.0) mission["cruiseSpeed"] = speedField(m.plan_cruise_speed_mps);
+  if (m.plan_hover_speed_mps > 0.0) mission["hoverSpeed"] = speedField(m.plan_hover_speed_mps);
   const json plan = {{"fileType", "Plan"},
                      {"version", 1},
                      {"groundStation", "wattswath"},

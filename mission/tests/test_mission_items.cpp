@@ -158,3 +158,17 @@ TEST(MissionItems, PlannedMissionFilesReadBack) {
   EXPECT_DOUBLE_EQ(a.items[3].param[1], 3.0);
   EXPECT_DOUBLE_EQ(b.home.alt_m, 3.0);
 }
+
+TEST(MissionItems, WholePlanSpeedsAreWrittenAsIntegersForMissionPlanner) {
+  Mission m = everyCommand();
+  m.plan_cruise_speed_mps = 5.0;
+  m.plan_hover_speed_mps = 3.0;
+  const std::string text = toQgcPlan(m);
+  const auto j = nlohmann::json::parse(text);
+  EXPECT_TRUE(j["mission"]["cruiseSpeed"].is_number_integer());
+  EXPECT_TRUE(j["mission"]["hoverSpeed"].is_number_integer());
+  for (const auto& p : checkMissionPlannerPlan(text)) EXPECT_EQ(p.find("Speed"), std::string::npos) << p;
+  EXPECT_DOUBLE_EQ(parseQgcPlan(text, "whole.plan").plan_cruise_speed_mps, 5.0);
+  m.plan_cruise_speed_mps = 5.25;  // not whole: kept exactly (read(write(m)) == m), which Mission Planner refuses
+  EXPECT_DOUBLE_EQ(parseQgcPlan(toQgcPlan(m), "real.plan").plan_cruise_speed_mps, 5.25);
+}

@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+
+#include "wattswath/geometry/clearance.hpp"
+#include "wattswath/planner/camera.hpp"
+#include "wattswath/planner/margin.hpp"
 
 namespace wattswath::planner {
 namespace {
@@ -52,52 +57,162 @@ std::vector<geo::Ring> fenceOf(const SurveyProblem& problem) {
   return fence;
 }
 
-}  // namespace
+/// Throws std::invalid_argument naming the field of `o` out of range.
+void validate(const MissionOptions& o) {
+  auto bad = [](const std::string& field, double v, const std::string& range) {
+    throw std::invalid_argument("MissionOptions." + field + " = " + std::to_string(v) + " is outside " + range);
+  };
+  if (!(o.trigger_distance_m >= 0.0 && std::isfinite(o.trigger_distance_m))) bad("trigger_distance_m", o.trigger_distance_m, "[0, inf)");
+  if (!(o.stop_hold_s >= 0.0 && o.stop_hold_s <= 3600.0)) bad("stop_hold_s", o.stop_hold_s, "[0, 3600]");
+  if (!(o.fence_margin_m >= 0.0 && o.fence_margin_m <= 1000.0)) bad("fence_margin_m", o.fence_margin_m, "[0, 1000]");
+  if (!(o.no_fly_margin_m >= 0.0 && o.no_fly_margin_m <= 1000.0)) bad("no_fly_margin_m", o.no_fly_margin_m, "[0, 1000]");
+}
 
-MissionWaypoints missionWaypoints(const FlownPath& flown) {
+/// The waypoints as they are written, with the speed in force and the legs planned too slow.
+struct Builder {
   MissionWaypoints out;
   std::vector<int> slow_legs;
-  double slowest = kMinCommandedSpeed, in_force = -1.0;
-  const auto& legs = flown.path.legs;
-  for (size_t i = 0; i < legs.size() && i < flown.speeds.cruise.size(); ++i) {
-    const auto& leg = legs[i];
-    if (leg.kind == geo::PrimitiveKind::TurnInPlace) continue;
-    if (!out.waypoints.empty() && (leg.end - out.waypoints.back().position).norm() < kMinWaypointSpacing) continue;
-    const double planned = flown.speeds.cruise[i];
-    if (planned < kMinCommandedSpeed) {
-      slow_legs.push_back(static_cast<int>(i));
+  double slowest = kMinCommandedSpeed;
+  double in_force = -1.0;  // [m/s] speed commanded so far (-1: none yet)
+
+  /// A waypoint at `at` [m] ending leg `leg`, planned at `planned` [m/s]: commanded at least at
+  /// kMinCommandedSpeed, at the speed in force when within kSpeedChangeTolerance of it.
+  void add(const geo::Point& at, double planned, int leg) {
+    if (planned < kMinCommandedSpeed && leg >= 0) {
+      slow_legs.push_back(leg);
       slowest = std::min(slowest, planned);
     }
     double speed = std::max(planned, kMinCommandedSpeed);
     if (in_force > 0.0 && std::abs(speed - in_force) <= kSpeedChangeTolerance) speed = in_force;
     in_force = speed;
-    out.waypoints.push_back({leg.end, speed, planned, static_cast<int>(i)});
+    MissionWaypoint w;
+    w.position = at;
+    w.speed_mps = speed;
+    w.planned_speed_mps = planned;
+    w.leg = leg;
+    out.waypoints.push_back(w);
   }
-  if (auto note = slowLegsNote(slow_legs, slowest); !note.empty()) out.notes.push_back(note);
+};
+
+/// Camera runs, their length and photos as the written commands make them: from a waypoint that
+/// switches the camera on to the next that switches it off, along the flown legs between them.
+void countPhotos(const FlownPath& flown, double trigger_m, MissionWaypoints& out) {
+  bool on = false;
+  int from = -1;
+  for (const auto& w : out.waypoints) {
+    if (!w.camera_trigger_m) continue;
+    if (*w.camera_trigger_m > 0.0 && !on) {
+      on = true;
+      from = w.leg;
+    } else if (*w.camera_trigger_m == 0.0 && on) {
+      on = false;
+      double length = 0.0;
+      for (int i = from + 1; i <= w.leg; ++i) {
+        length += flown.path.legs[static_cast<size_t>(i)].length();
+        out.camera_legs.push_back(i);
+      }
+      ++out.camera_runs;
+      out.photos += photosAlong(length, trigger_m);
+      out.camera_length_m += length;
+    }
+  }
+}
+
+/// Notes on the straight legs home -> waypoints -> home that come within `margin` [m] of a zone of
+/// `problem` (the path keeps the margin; a chord of an arc may not); returns how many do.
+int checkWaypointLegs(const MissionWaypoints& wps, const SurveyProblem& problem, double margin,
+                      std::vector<std::string>& notes) {
+  geo::CoveragePath legs;
+  geo::Point from = problem.home;
+  for (const auto& w : wps.waypoints) {
+    geo::PathLeg l;
+    l.start = from;
+    l.end = from = w.position;
+    legs.legs.push_back(l);
+  }
+  const auto close = geo::marginViolations(legs, noFlyZones(problem), margin);
+  for (size_t k = 0; k < close.size() && k < kLegsNamed; ++k)
+    notes.push_back("mission: the straight leg into waypoint " + std::to_string(close[k].leg + 1) + " (of " +
+                    std::to_string(wps.waypoints.size()) + ") passes " +
+                    fixed(close[k].distance_m, 2) + " m from no-fly zone " + std::to_string(close[k].zone) + ", within the " +
+                    fixed(margin, 1) + " m margin the planned path keeps (an arc written as its chord)");
+  return static_cast<int>(close.size());
+}
+
+}  // namespace
+
+MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& options) {
+  validate(options);
+  Builder b;
+  const bool camera = options.trigger_distance_m > 0.0;
+  bool camera_on = false;
+  const auto& legs = flown.path.legs;
+  const auto& junction = flown.speeds.junction;
+  for (size_t i = 0; i < legs.size() && i < flown.speeds.cruise.size(); ++i) {
+    const auto& leg = legs[i];
+    const double planned = flown.speeds.cruise[i];
+    if (camera && leg.kind != geo::PrimitiveKind::TurnInPlace) {  // a turn in place takes no photo, ends no run
+      const bool sweep = leg.role == geo::LegRole::Sweep;
+      if (sweep && !camera_on) {
+        if (b.out.waypoints.empty()) b.add(leg.start, planned, -1);  // a sweep from home: camera on at its start
+        b.out.waypoints.back().camera_trigger_m = options.trigger_distance_m;
+      } else if (!sweep && camera_on) {
+        b.out.waypoints.back().camera_trigger_m = 0.0;
+      }
+      camera_on = sweep;
+    }
+    const bool merged = !b.out.waypoints.empty() && (leg.end - b.out.waypoints.back().position).norm() < kMinWaypointSpacing;
+    if (leg.kind != geo::PrimitiveKind::TurnInPlace && !merged) b.add(leg.end, planned, static_cast<int>(i));
+    const bool stops = i + 1 < junction.size() && junction[i + 1] < kStopSpeed;
+    if (stops && options.stop_hold_s > 0.0 && !b.out.waypoints.empty()) b.out.waypoints.back().hold_s = options.stop_hold_s;
+  }
+  auto& out = b.out;
+  if (camera_on) out.waypoints.back().camera_trigger_m = 0.0;
+  if (!out.waypoints.empty()) out.waypoints.back().hold_s = 0.0;  // the return to launch stops there anyway
+  for (const auto& w : out.waypoints) out.holds += w.hold_s > 0.0;
+  if (camera) countPhotos(flown, options.trigger_distance_m, out);
+  if (auto note = slowLegsNote(b.slow_legs, b.slowest); !note.empty()) out.notes.push_back(note);
   return out;
 }
 
 PlanMission missionFromPlan(const FlownPath& flown, const SurveyProblem& problem, const geo::LocalFrame& frame,
-                            double home_altitude_amsl_m) {
+                            double home_altitude_amsl_m, const MissionOptions& options) {
   PlanMission pm;
   auto& m = pm.mission;
   m.home = frame.toGeodetic(problem.home);
   m.home_altitude_amsl_m = home_altitude_amsl_m;
   m.takeoff_altitude_m = problem.altitude;
-  auto wps = missionWaypoints(flown);
+  auto wps = missionWaypoints(flown, options);
   double fastest = 0.0;
   for (const auto& w : wps.waypoints) {
-    m.waypoints.push_back({frame.toGeodetic(w.position), problem.altitude, w.speed_mps});
+    m.waypoints.push_back({frame.toGeodetic(w.position), problem.altitude, w.speed_mps, w.hold_s, w.camera_trigger_m});
     fastest = std::max(fastest, std::max(w.planned_speed_mps, kMinCommandedSpeed));
   }
   m.cruise_speed_mps = fastest > 0.0 ? fastest : kDefaultCruise;
   m.hover_speed_mps = m.cruise_speed_mps;
+  if (const auto type = mission::mavTypeOfRotors(options.rotor_count)) {
+    m.vehicle_type = *type;
+  } else {
+    wps.notes.push_back("mission: no MAVLink vehicle type for " + std::to_string(options.rotor_count) +
+                        " rotors (3, 4, 6 and 8 have one): vehicleType written as a quadrotor (2)");
+  }
   for (const auto& z : fenceOf(problem)) {
     std::vector<mission::GeoPoint> ring;
     for (const auto& p : z) ring.push_back(frame.toGeodetic(p));
     m.no_fly.push_back(ring);
   }
+  if (options.fence_margin_m > 0.0) {
+    const auto fence = inclusionFence(problem, flown.path, options.fence_margin_m);
+    for (const auto& p : fence.ring) m.fence_inclusion.push_back(frame.toGeodetic(p));
+    pm.fence_distance_m = fence.distance_m;
+  }
+  if (options.no_fly_margin_m > 0.0) pm.legs_within_margin = checkWaypointLegs(wps, problem, options.no_fly_margin_m, wps.notes);
   pm.notes = std::move(wps.notes);
+  pm.holds = wps.holds;
+  pm.camera_runs = wps.camera_runs;
+  pm.photos = wps.photos;
+  pm.camera_length_m = wps.camera_length_m;
+  pm.camera_legs = std::move(wps.camera_legs);
   return pm;
 }
 

@@ -14,30 +14,18 @@
 #include "wattswath/mission/planned_mission.hpp"
 #include "wattswath/planner/coverage.hpp"
 #include "wattswath/planner/mission_from_plan.hpp"
+#include "mission_fixtures.hpp"
 #include "test_util.hpp"
 
 using namespace wattswath;
 using namespace wattswath::planner;
 using geometry::LegRole;
 using geometry::Point;
-using geometry::PrimitiveKind;
+using test::line;
+using test::problemOf;
+using test::turnInPlace;
 
 namespace {
-
-geometry::PathLeg line(Point a, Point b, LegRole role = LegRole::Sweep) {
-  geometry::PathLeg l;
-  l.kind = PrimitiveKind::Line;
-  l.role = role;
-  l.start = a;
-  l.end = b;
-  return l;
-}
-
-geometry::PathLeg turnInPlace(Point at) {
-  auto t = line(at, at, LegRole::Turn);
-  t.kind = PrimitiveKind::TurnInPlace;
-  return t;
-}
 
 /// A flown path of `legs` with cruise speeds `cruise` [m/s] (junction speeds unused here).
 FlownPath flown(const std::vector<geometry::PathLeg>& legs, const std::vector<double>& cruise) {
@@ -87,19 +75,6 @@ void expectHonestMission(const FlownPath& f, const SurveyProblem& pr, const geom
     EXPECT_GE(item["params"][1].get<double>(), kMinCommandedSpeed);
   }
   EXPECT_GE(commands, 1);
-}
-
-/// The problem `wattswath plan AREA --spacing S` (or --altitude 10 --fov 100 --overlap 0.1 when
-/// `spacing` is 0) sets up from a survey area file.
-SurveyProblem problemOf(const geometry::SurveyArea& area, double spacing) {
-  SurveyProblem pr;
-  pr.area = area.polygon();
-  pr.no_fly = area.no_fly;
-  pr.altitude = 10.0;
-  pr.footprint = spacing > 0 ? spacing : 2.0 * pr.altitude * std::tan(50.0 * M_PI / 180.0);
-  pr.spacing = spacing > 0 ? spacing : 0.9 * pr.footprint;
-  pr.home = area.home ? *area.home : pr.area.outer.front();
-  return pr;
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #pragma once
 /// @file mission_from_plan.hpp
-/// The mission the autopilot is told for a planned coverage flight: which waypoints and which
-/// speed commands go into the `.plan` / `.waypoints` that mission/'s writers write. The one place
-/// where the planner's speeds become speed commands (the command line only writes the result).
+/// The mission the autopilot is told for a planned coverage flight: which waypoints, speed
+/// commands, holds, camera commands and fences go into the `.plan` / `.waypoints` that mission/'s
+/// writers write. The one place where the planner's speeds become speed commands and its stops
+/// become holds (the command line only writes the result).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,36 +31,78 @@ inline constexpr double kSpeedChangeTolerance = 0.05;
 /// as deep as they can) is commanded at this speed, which every ArduCopter obeys, and a note says so.
 inline constexpr double kMinCommandedSpeed = 1.0;
 
+/// [s] Hold written at every planned stop (NAV_WAYPOINT param1). ArduCopter flies through a
+/// waypoint without a hold, blending it into the next leg (../shared/data/sitl: no stop at any plain
+/// waypoint), and keeps the hold in whole seconds, so 1 s is the least that makes it stop there.
+inline constexpr double kStopHoldSeconds = 1.0;
+
+/// [m/s] A leg whose planned end speed is below this ends in a stop (a sharp corner, a turn in place).
+inline constexpr double kStopSpeed = 1e-6;
+
+/// What the mission carries beyond its waypoints and speeds.
+struct MissionOptions {
+  double trigger_distance_m = 0.0;        ///< [m] camera trigger distance on sweeps (0: no camera commands), >= 0
+  double stop_hold_s = kStopHoldSeconds;  ///< [s] hold at each planned stop (0: none), >= 0
+  int rotor_count = 4;                    ///< [-] the vehicle's rotors, for the .plan's vehicleType
+  double fence_margin_m = 0.0;            ///< [m] inclusion fence keeping every flown point this far inside it
+                                          ///< (0: no inclusion fence), >= 0
+  double no_fly_margin_m = 0.0;           ///< [m] margin the straight legs between waypoints are checked
+                                          ///< against (0: not checked), >= 0
+};
+
 /// One waypoint of the mission in the local ENU frame, before conversion to WGS84.
 struct MissionWaypoint {
   geometry::Point position = geometry::Point::Zero();  ///< [m] ENU end of the leg flown into it
   double speed_mps = 0.0;          ///< [m/s] commanded ground speed on the leg into it (>= kMinCommandedSpeed)
   double planned_speed_mps = 0.0;  ///< [m/s] the planner's cruise speed of that leg
-  int leg = -1;                    ///< [-] index in the flown path's legs of the leg ending here
+  int leg = -1;                    ///< [-] index in the flown path's legs of the leg ending here (-1: a start)
+  double hold_s = 0.0;             ///< [s] hold here: MissionOptions::stop_hold_s at a planned stop, else 0
+  std::optional<double> camera_trigger_m;  ///< [m] camera command after this waypoint (0: photos stop)
 };
 
-/// The waypoints and speed commands of a flown path, with notes where they depart from the plan.
+/// The waypoints, speed commands, holds and camera commands of a flown path, with notes.
 struct MissionWaypoints {
   std::vector<MissionWaypoint> waypoints;  ///< [m], [m/s] in flight order
   std::vector<std::string> notes;          ///< sentences for the user (e.g. speeds raised to the floor)
+  int holds = 0;                           ///< [-] waypoints with a hold (planned stops)
+  int camera_runs = 0;                     ///< [-] stretches of sweep flown with the camera on
+  int photos = 0;                          ///< [-] photos the camera commands take (photosAlong per run)
+  double camera_length_m = 0.0;            ///< [m] length flown with the camera on
+  std::vector<int> camera_legs;            ///< [-] indices of the flown legs the camera is on along
 };
 
 /// Waypoints [m] and speed commands [m/s] of `flown`: the end of every line or arc (turns in place
 /// add none) at that leg's cruise speed, ends within kMinWaypointSpacing of the last waypoint
-/// merged into it, speeds held within kSpeedChangeTolerance and raised to kMinCommandedSpeed.
-MissionWaypoints missionWaypoints(const FlownPath& flown);
+/// merged into it, speeds held within kSpeedChangeTolerance and raised to kMinCommandedSpeed. A
+/// waypoint where the plan stops gets options.stop_hold_s (not the last one: the return follows).
+/// With a trigger distance, each run of sweep legs gets the camera on at the waypoint where it
+/// starts and off (0) at the waypoint where it ends, as QGC's survey does; transits and turns take
+/// no photos.
+MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& options = {});
 
 /// A planned coverage flight as the mission mission/'s writers take, with notes for the user.
 struct PlanMission {
   mission::PlannedMission mission;  ///< [deg], [m], [m/s] take-off, waypoints with speeds, geofence
   std::vector<std::string> notes;   ///< where the mission departs from the plan (from missionWaypoints)
+  int holds = 0;                    ///< [-] waypoints with a hold
+  int camera_runs = 0;              ///< [-] sweeps flown with the camera on
+  int photos = 0;                   ///< [-] photos the mission's camera commands take
+  double camera_length_m = 0.0;     ///< [m] length flown with the camera on
+  std::vector<int> camera_legs;     ///< [-] indices of the flown legs the camera is on along
+  double fence_distance_m = 0.0;    ///< [m] how far the inclusion fence lies outside the area (0: none)
+  int legs_within_margin = 0;       ///< [-] straight legs between waypoints (arcs written as chords) that
+                                    ///< come within options.no_fly_margin_m of a no-fly zone (each noted)
 };
 
 /// The mission of `flown` planned for `problem` [m, local frame `frame`]: take-off to
 /// problem.altitude [m] at problem.home, missionWaypoints at that altitude, cruise and hover speed
-/// the fastest command [m/s], and a geofence of the area's holes and the no-fly zones that did not
-/// become holes. `home_altitude_amsl_m` [m] is home's height above mean sea level.
+/// the fastest command [m/s], the vehicle type of options.rotor_count, and a geofence of the area's
+/// holes and the no-fly zones that did not become holes, with the inclusionFence (margin.hpp) when
+/// options.fence_margin_m > 0. With options.no_fly_margin_m > 0 the straight legs between the
+/// waypoints (what the autopilot flies; an arc is written as its chord) are checked against the
+/// no-fly zones and each one within the margin is noted. `home_altitude_amsl_m` [m] is home's
+/// height above mean sea level.
 PlanMission missionFromPlan(const FlownPath& flown, const SurveyProblem& problem, const geometry::LocalFrame& frame,
-                            double home_altitude_amsl_m);
+                            double home_altitude_amsl_m, const MissionOptions& options = {});
 
 }  // namespace wattswath::planner
