@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "log_inputs.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/mission/files.hpp"
 #include "report_data.hpp"
@@ -24,16 +25,6 @@ using nlohmann::json;
 namespace {
 
 constexpr const char* kPaperEffects = "hover,kinetic,parasitic_drag";
-
-// Reads each log with readFlightLog (canonical CSV, ArduPilot .bin or PX4 .ulg, by content).
-std::vector<calibration::PreparedLog> prepareAll(const std::vector<std::string>& paths, const logs::LogReadOptions& read) {
-  std::vector<calibration::PreparedLog> out;
-  for (const auto& p : paths) {
-    progress("reading " + p);
-    out.push_back(calibration::prepareLog(logs::readFlightLog(p, read)));
-  }
-  return out;
-}
 
 // Path length flown in a log [m] (sum of its legs).
 double loggedDistance(const calibration::PreparedLog& l) {
@@ -184,6 +175,7 @@ void registerReplay(CLI::App& app) {
     std::vector<std::string> logs, missions;
     logs::LogReadOptions read;
     calibration::PlanPredictionSettings plan_settings;
+    MeasurementReport measurement;
     bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
@@ -211,6 +203,7 @@ void registerReplay(CLI::App& app) {
       ->check(CLI::Range(0.0, 50.0))
       ->capture_default_str();
   addLogReadOptions(cmd, o->read);
+  addTrustPowerFlag(cmd, o->measurement.trust_power);
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o, effects_opt]() {
@@ -225,7 +218,7 @@ void registerReplay(CLI::App& app) {
     }
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto logs = prepareAll(o->logs, o->read);
+    const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     std::vector<calibration::LogReplay> reps;
     for (const auto& l : logs) reps.push_back(calibration::replay(model, l));
     const auto m = calibration::errorMetrics(reps);
@@ -272,9 +265,11 @@ void registerReplay(CLI::App& app) {
                  {"flights", flightsJson(reps)},
                  {"residuals", residualsJson(calibration::residualTables(reps))},
                  {"plan_prediction", o->plan.empty() ? json(nullptr) : plans},
-                 {"mission_prediction", missions}});
+                 {"mission_prediction", missions},
+                 {"measurement", o->measurement.toJson()}});
       return;
     }
+    o->measurement.print();
     if (!missions.is_null()) printMissionComparisons(missions);
     printMetrics("model " + o->effects, m);
     for (const auto& r : reps) {
@@ -295,6 +290,7 @@ void registerDiagnose(CLI::App& app) {
     std::vector<std::string> logs;
     logs::LogReadOptions read;
     int folds = 3;
+    MeasurementReport measurement;
     bool json = false;
     std::string report, report_svg;
     bool force = false;
@@ -311,6 +307,7 @@ void registerDiagnose(CLI::App& app) {
       ->check(CLI::Range(2, 10))
       ->capture_default_str();
   addLogReadOptions(cmd, o->read);
+  addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
   addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
@@ -319,7 +316,7 @@ void registerDiagnose(CLI::App& app) {
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto logs = prepareAll(o->logs, o->read);
+    const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     calibration::DiagnoseSettings s;
     s.folds = o->folds;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
@@ -371,9 +368,11 @@ void registerDiagnose(CLI::App& app) {
                  {"candidates", cands},
                  {"staircase", stair},
                  {"flights", flightsJson(d.physics_replay)},
-                 {"residuals", residualsJson(d.residuals)}});
+                 {"residuals", residualsJson(d.residuals)},
+                 {"measurement", o->measurement.toJson()}});
       return;
     }
+    o->measurement.print();
     std::cout << "validation: " << d.validation << "\n";
     printMetrics("model as given (vehicle physics)", d.physics);
     printMetrics("model refitted (held-out)", d.baseline);
@@ -394,6 +393,7 @@ void registerFit(CLI::App& app) {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs, test_logs;
     logs::LogReadOptions read;
+    MeasurementReport measurement;
     bool json = false;
     std::string report, report_svg;
     bool force = false;
@@ -406,6 +406,7 @@ void registerFit(CLI::App& app) {
   cmd->add_option("--log", o->logs, "Training log: CSV, .bin or .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
   addLogReadOptions(cmd, o->read);
+  addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
   addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
@@ -415,8 +416,8 @@ void registerFit(CLI::App& app) {
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto train = prepareAll(o->logs, o->read);
-    const auto test = prepareAll(o->test_logs, o->read);
+    const auto train = readCheckedLogs(o->logs, o->read, v, o->measurement);
+    const auto test = readCheckedLogs(o->test_logs, o->read, v, o->measurement);
     const auto r = calibration::fitAndCompare(model, train, test);
     if (!o->report.empty() || !o->report_svg.empty()) {
       // The fitted model on the test logs when there are any (an honest picture), else on training.
@@ -455,9 +456,11 @@ void registerFit(CLI::App& app) {
                  {"train", side(r.train_before, r.train_after)},
                  {"test", test.empty() ? json(nullptr) : side(r.test_before, r.test_after)},
                  {"train_flights", flightsJson(r.train_replay)},
-                 {"test_flights", flightsJson(r.test_replay)}});
+                 {"test_flights", flightsJson(r.test_replay)},
+                 {"measurement", o->measurement.toJson()}});
       return;
     }
+    o->measurement.print();
     for (const auto& e : model.effectNames()) std::cout << e << ": " << calibration::describeEffect(e, r.fit.coefficients) << "\n";
     for (const auto& n : r.fit.notes) std::cout << "note: " << n << "\n";
     printMetrics("train before", r.train_before);
