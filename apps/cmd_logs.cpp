@@ -8,6 +8,7 @@
 
 #include "cli.hpp"
 #include "log_inputs.hpp"
+#include "log_json.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/mission/files.hpp"
 #include "report_data.hpp"
@@ -31,71 +32,6 @@ double loggedDistance(const calibration::PreparedLog& l) {
   double d = 0.0;
   for (const auto& leg : l.legs) d += leg.distance;
   return d;
-}
-
-json metricsJson(const calibration::ErrorMetrics& m) {
-  json phases = json::object();
-  for (int k = 0; k < en::kPhaseCount; ++k) {
-    const auto& p = m.phases[k];
-    if (p.samples == 0) continue;
-    phases[en::toString(static_cast<en::Phase>(k))] = {{"samples", p.samples},
-                                                       {"rmse_w", p.rmse_w},
-                                                       {"measured_mean_w", p.measured_mean_w},
-                                                       {"modelled_mean_w", p.modelled_mean_w},
-                                                       {"energy_error_pct", p.energy_error_pct}};
-  }
-  return {{"samples", m.samples},
-          {"rmse_w", m.rmse_w},
-          {"energy_error_pct", m.energy_error_pct},
-          {"leg_energy_mape_pct", m.leg_energy_mape_pct},
-          {"phases", phases}};
-}
-
-json residualsJson(const std::vector<calibration::ResidualTable>& tables) {
-  json out = json::object();
-  for (const auto& t : tables) {
-    json bins = json::array();
-    for (const auto& b : t.bins) {
-      bins.push_back({{"lo", b.lo},
-                      {"hi", b.hi},
-                      {"count", b.count},
-                      {"measured_mean_w", b.measured_mean_w},
-                      {"modelled_mean_w", b.modelled_mean_w}});
-    }
-    out[t.quantity] = {{"unit", t.unit}, {"bins", bins}};
-  }
-  return out;
-}
-
-json flightsJson(const std::vector<calibration::LogReplay>& reps) {
-  json out = json::array();
-  for (const auto& r : reps) {
-    out.push_back({{"log", r.source},
-                   {"time_s", r.flight.time_s},
-                   {"measured_j", r.flight.measured_j},
-                   {"modelled_j", r.flight.modelled_j},
-                   {"energy_error_pct", r.flight.errorPct()},
-                   {"legs", r.legs.size()}});
-  }
-  return out;
-}
-
-// {"effect": {"coef": value}} and the same shape for sigma.
-json coefficientsJson(const std::vector<calibration::FittedCoefficient>& cs, bool sigma) {
-  json out = json::object();
-  for (const auto& c : cs) {
-    if (!sigma) {
-      out[c.effect][c.name] = c.value;
-    } else {
-      out[c.effect][c.name] = std::isfinite(c.sigma) ? json(c.sigma) : json(nullptr);
-    }
-  }
-  return out;
-}
-
-void printMetrics(const std::string& label, const calibration::ErrorMetrics& m) {
-  std::cout << label << ": sample RMSE " << m.rmse_w << " W, whole-flight energy error " << m.energy_error_pct
-            << " %, leg-energy MAPE " << m.leg_energy_mape_pct << " %\n";
 }
 
 json numOrNull(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
@@ -349,6 +285,7 @@ void registerDiagnose(CLI::App& app) {
                          {"coefficients", coeffs},
                          {"uncertainty", sig},
                          {"units", units},
+                         {"identifiability", identifiabilityJson(c.coefficients)[c.effect]},
                          {"summary", c.summary},
                          {"indistinct_from", c.indistinct_from},
                          {"notes", c.notes}});
@@ -451,6 +388,7 @@ void registerFit(CLI::App& app) {
       printJson({{"effects", model.effectNames()},
                  {"coefficients", coefficientsJson(r.fit.coefficients, false)},
                  {"uncertainty", coefficientsJson(r.fit.coefficients, true)},
+                 {"identifiability", identifiabilityJson(r.fit.coefficients)},
                  {"summary", summaries},
                  {"notes", r.fit.notes},
                  {"train", side(r.train_before, r.train_after)},
