@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "log_inputs.hpp"
+#include "log_json.hpp"
 #include "replay_mission.hpp"
 #include "report_data.hpp"
 #include "wattswath/calibration/diagnose.hpp"
@@ -24,86 +26,11 @@ namespace {
 
 constexpr const char* kPaperEffects = "hover,kinetic,parasitic_drag";
 
-// Reads each log with readFlightLog (canonical CSV, ArduPilot .bin or PX4 .ulg, by content).
-std::vector<calibration::PreparedLog> prepareAll(const std::vector<std::string>& paths, const logs::LogReadOptions& read) {
-  std::vector<calibration::PreparedLog> out;
-  for (const auto& p : paths) {
-    progress("reading " + p);
-    out.push_back(calibration::prepareLog(logs::readFlightLog(p, read)));
-  }
-  return out;
-}
-
 // Path length flown in a log [m] (sum of its legs).
 double loggedDistance(const calibration::PreparedLog& l) {
   double d = 0.0;
   for (const auto& leg : l.legs) d += leg.distance;
   return d;
-}
-
-json metricsJson(const calibration::ErrorMetrics& m) {
-  json phases = json::object();
-  for (int k = 0; k < en::kPhaseCount; ++k) {
-    const auto& p = m.phases[k];
-    if (p.samples == 0) continue;
-    phases[en::toString(static_cast<en::Phase>(k))] = {{"samples", p.samples},
-                                                       {"rmse_w", p.rmse_w},
-                                                       {"measured_mean_w", p.measured_mean_w},
-                                                       {"modelled_mean_w", p.modelled_mean_w},
-                                                       {"energy_error_pct", p.energy_error_pct}};
-  }
-  return {{"samples", m.samples},
-          {"rmse_w", m.rmse_w},
-          {"energy_error_pct", m.energy_error_pct},
-          {"leg_energy_mape_pct", m.leg_energy_mape_pct},
-          {"phases", phases}};
-}
-
-json residualsJson(const std::vector<calibration::ResidualTable>& tables) {
-  json out = json::object();
-  for (const auto& t : tables) {
-    json bins = json::array();
-    for (const auto& b : t.bins) {
-      bins.push_back({{"lo", b.lo},
-                      {"hi", b.hi},
-                      {"count", b.count},
-                      {"measured_mean_w", b.measured_mean_w},
-                      {"modelled_mean_w", b.modelled_mean_w}});
-    }
-    out[t.quantity] = {{"unit", t.unit}, {"bins", bins}};
-  }
-  return out;
-}
-
-json flightsJson(const std::vector<calibration::LogReplay>& reps) {
-  json out = json::array();
-  for (const auto& r : reps) {
-    out.push_back({{"log", r.source},
-                   {"time_s", r.flight.time_s},
-                   {"measured_j", r.flight.measured_j},
-                   {"modelled_j", r.flight.modelled_j},
-                   {"energy_error_pct", r.flight.errorPct()},
-                   {"legs", r.legs.size()}});
-  }
-  return out;
-}
-
-// {"effect": {"coef": value}} and the same shape for sigma.
-json coefficientsJson(const std::vector<calibration::FittedCoefficient>& cs, bool sigma) {
-  json out = json::object();
-  for (const auto& c : cs) {
-    if (!sigma) {
-      out[c.effect][c.name] = c.value;
-    } else {
-      out[c.effect][c.name] = std::isfinite(c.sigma) ? json(c.sigma) : json(nullptr);
-    }
-  }
-  return out;
-}
-
-void printMetrics(const std::string& label, const calibration::ErrorMetrics& m) {
-  std::cout << label << ": sample RMSE " << m.rmse_w << " W, whole-flight energy error " << m.energy_error_pct
-            << " %, leg-energy MAPE " << m.leg_energy_mape_pct << " %\n";
 }
 
 void registerReplay(CLI::App& app) {
@@ -112,6 +39,7 @@ void registerReplay(CLI::App& app) {
     std::vector<std::string> logs, missions;
     logs::LogReadOptions read;
     calibration::PlanPredictionSettings plan_settings;
+    MeasurementReport measurement;
     bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
@@ -139,6 +67,7 @@ void registerReplay(CLI::App& app) {
       ->check(CLI::Range(0.0, 50.0))
       ->capture_default_str();
   addLogReadOptions(cmd, o->read);
+  addTrustPowerFlag(cmd, o->measurement.trust_power);
   addReportOptions(cmd, o->report, o->report_svg, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o, effects_opt]() {
@@ -153,7 +82,7 @@ void registerReplay(CLI::App& app) {
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto logs = prepareAll(o->logs, o->read);
+    const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     std::vector<calibration::LogReplay> reps;
     for (const auto& l : logs) reps.push_back(calibration::replay(model, l));
     const auto m = calibration::errorMetrics(reps);
@@ -210,9 +139,11 @@ void registerReplay(CLI::App& app) {
                  {"flights", flightsJson(reps)},
                  {"residuals", residualsJson(calibration::residualTables(reps))},
                  {"plan_prediction", o->plan.empty() ? json(nullptr) : plans},
-                 {"mission_prediction", o->missions.empty() ? json(nullptr) : missions.json}});
+                 {"mission_prediction", o->missions.empty() ? json(nullptr) : missions.json},
+                 {"measurement", o->measurement.toJson()}});
       return;
     }
+    o->measurement.print();
     if (!o->missions.empty()) printMissionReplays(missions.json);
     printMetrics("model " + o->effects, m);
     for (const auto& r : reps) {
@@ -233,6 +164,7 @@ void registerDiagnose(CLI::App& app) {
     std::vector<std::string> logs;
     logs::LogReadOptions read;
     int folds = 3;
+    MeasurementReport measurement;
     bool json = false;
     std::string report, report_svg;
     bool force = false;
@@ -249,6 +181,7 @@ void registerDiagnose(CLI::App& app) {
       ->check(CLI::Range(2, 10))
       ->capture_default_str();
   addLogReadOptions(cmd, o->read);
+  addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
   addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
@@ -257,7 +190,7 @@ void registerDiagnose(CLI::App& app) {
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto logs = prepareAll(o->logs, o->read);
+    const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     calibration::DiagnoseSettings s;
     s.folds = o->folds;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
@@ -290,6 +223,7 @@ void registerDiagnose(CLI::App& app) {
                          {"coefficients", coeffs},
                          {"uncertainty", sig},
                          {"units", units},
+                         {"identifiability", identifiabilityJson(c.coefficients)[c.effect]},
                          {"summary", c.summary},
                          {"indistinct_from", c.indistinct_from},
                          {"notes", c.notes}});
@@ -309,9 +243,11 @@ void registerDiagnose(CLI::App& app) {
                  {"candidates", cands},
                  {"staircase", stair},
                  {"flights", flightsJson(d.physics_replay)},
-                 {"residuals", residualsJson(d.residuals)}});
+                 {"residuals", residualsJson(d.residuals)},
+                 {"measurement", o->measurement.toJson()}});
       return;
     }
+    o->measurement.print();
     std::cout << "validation: " << d.validation << "\n";
     printMetrics("model as given (vehicle physics)", d.physics);
     printMetrics("model refitted (held-out)", d.baseline);
@@ -332,6 +268,7 @@ void registerFit(CLI::App& app) {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs, test_logs;
     logs::LogReadOptions read;
+    MeasurementReport measurement;
     bool json = false;
     std::string report, report_svg;
     bool force = false;
@@ -344,6 +281,7 @@ void registerFit(CLI::App& app) {
   cmd->add_option("--log", o->logs, "Training log: CSV, .bin or .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
   addLogReadOptions(cmd, o->read);
+  addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
   addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
@@ -353,8 +291,8 @@ void registerFit(CLI::App& app) {
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = en::buildModel(v, en::splitEffectList(o->effects));
-    const auto train = prepareAll(o->logs, o->read);
-    const auto test = prepareAll(o->test_logs, o->read);
+    const auto train = readCheckedLogs(o->logs, o->read, v, o->measurement);
+    const auto test = readCheckedLogs(o->test_logs, o->read, v, o->measurement);
     const auto r = calibration::fitAndCompare(model, train, test);
     if (!o->report.empty() || !o->report_svg.empty()) {
       // The fitted model on the test logs when there are any (an honest picture), else on training.
@@ -388,14 +326,17 @@ void registerFit(CLI::App& app) {
       printJson({{"effects", model.effectNames()},
                  {"coefficients", coefficientsJson(r.fit.coefficients, false)},
                  {"uncertainty", coefficientsJson(r.fit.coefficients, true)},
+                 {"identifiability", identifiabilityJson(r.fit.coefficients)},
                  {"summary", summaries},
                  {"notes", r.fit.notes},
                  {"train", side(r.train_before, r.train_after)},
                  {"test", test.empty() ? json(nullptr) : side(r.test_before, r.test_after)},
                  {"train_flights", flightsJson(r.train_replay)},
-                 {"test_flights", flightsJson(r.test_replay)}});
+                 {"test_flights", flightsJson(r.test_replay)},
+                 {"measurement", o->measurement.toJson()}});
       return;
     }
+    o->measurement.print();
     for (const auto& e : model.effectNames()) std::cout << e << ": " << calibration::describeEffect(e, r.fit.coefficients) << "\n";
     for (const auto& n : r.fit.notes) std::cout << "note: " << n << "\n";
     printMetrics("train before", r.train_before);

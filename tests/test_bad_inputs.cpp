@@ -21,6 +21,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "bad_corpus.hpp"
 #include "test_util.hpp"
@@ -116,6 +117,42 @@ TEST(GoodVariants, LogWithBomAndCrlfReplays) {
       runCli({"replay", "--vehicle", "data/vehicles/iris.json", "--log", "tests/data/good/bom_crlf_geodetic.csv"});
   EXPECT_FALSE(r.signalled);
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+
+// A position estimate that diverges late is cut there, the cut stated in the text and JSON output (issue 19).
+TEST(GoodVariants, LateDivergenceIsCutWithTheReason) {
+  const std::string log = "tests/data/good/log_position_diverges_late.csv";
+  Outcome r = runCli({"replay", "--vehicle", "data/vehicles/iris.json", "--log", log});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("note: " + log + ": the position estimate is not a multirotor's at t = 29 s (vertical speed"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("the 11 samples from there on (10 s) are not used"), std::string::npos) << r.out;
+  r = runCli({"replay", "--vehicle", "data/vehicles/iris.json", "--log", log, "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["measurement"]["logs"][0]["position_cut_at_s"], 29.0) << r.out;
+}
+
+// --trust-power uses an implausible power and says so, in text and in JSON (issue 19).
+TEST(GoodVariants, TrustPowerOverridesAndSaysSo) {
+  const std::string log = "tests/data/bad/log_current_zero.csv";
+  Outcome r = runCli({"replay", "--vehicle", "data/vehicles/iris.json", "--log", log, "--trust-power"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("note: " + log + ": measured power used only because of --trust-power: the battery current reads 0 A"),
+            std::string::npos)
+      << r.out;
+  r = runCli({"fit", "--vehicle", "data/vehicles/iris.json", "--log", log, "--trust-power", "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  auto m = nlohmann::json::parse(r.out)["measurement"];
+  EXPECT_EQ(m["trust_power"], true);
+  EXPECT_EQ(m["logs"][0]["power"], "implausible, used because of --trust-power");
+  EXPECT_EQ(m["logs"][0]["median_current_a"], 0.0);
+  r = runCli({"replay", "--vehicle", "data/vehicles/iris.json", "--log", "tests/data/good/bom_crlf_geodetic.csv", "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  m = nlohmann::json::parse(r.out)["measurement"];
+  EXPECT_EQ(m["trust_power"], false);
+  EXPECT_EQ(m["logs"][0]["power"], "plausible");
 }
 
 }  // namespace

@@ -20,9 +20,9 @@ std::string pm(double v, double sigma, int digits = 3) {
   return s;
 }
 
-// Value of a fitted coefficient times `scale`, with its uncertainty, or "(not determined)".
+// Value of a fitted coefficient times `scale`, with its uncertainty when it is determined.
 std::string pm(const FittedCoefficient& c, double scale = 1.0, int digits = 3) {
-  if (!c.determined) return num(c.value * scale, digits) + " (not determined by the data)";
+  if (!c.determined) return num(c.value * scale, digits);  // describeEffect says why after the description
   return pm(c.value * scale, c.sigma * scale, digits);
 }
 
@@ -106,7 +106,9 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 }
 }  // namespace
 
-std::string describeEffect(const std::string& effect, const std::vector<FittedCoefficient>& c) {
+namespace {
+// describeEffect() without what is not determined.
+std::string describeValues(const std::string& effect, const std::vector<FittedCoefficient>& c) {
   auto get = [&](const std::string& n) -> const FittedCoefficient& {
     for (const auto& x : c)
       if (x.effect == effect && x.name == n) return x;
@@ -120,6 +122,7 @@ std::string describeEffect(const std::string& effect, const std::vector<FittedCo
     const auto &e = get("wind_east"), &n = get("wind_north"), &a = get("drag_area");
     const double speed = std::hypot(e.value, n.value);
     const double bearing = std::fmod(std::atan2(e.value, n.value) * 180.0 / M_PI + 360.0, 360.0);
+    if (!e.fitted || !n.fitted) return "wind not determined: these data have too little fast flight to show it";
     if (!e.determined || !n.determined) {
       return "wind not determined: with drag area " + pm(a) +
              " m^2 the air speed hardly changes the modelled power, so these data say nothing about the wind";
@@ -156,6 +159,17 @@ std::string describeEffect(const std::string& effect, const std::vector<FittedCo
   for (const auto& x : c) {
     if (x.effect != effect) continue;
     s += (s.empty() ? "" : ", ") + x.name + " " + pm(x) + " " + x.unit;
+  }
+  return s;
+}
+}  // namespace
+
+std::string describeEffect(const std::string& effect, const std::vector<FittedCoefficient>& c) {
+  std::string s = describeValues(effect, c);
+  for (const auto& x : c) {
+    if (x.effect != effect || x.determined) continue;
+    s += "; " + x.name + " NOT DETERMINED by the data" +
+         (x.fitted ? " (its value is arbitrary)" : " (not fitted: kept at its starting value)");
   }
   return s;
 }

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
+#include "excitation.hpp"
 #include "number_text.hpp"
 #include "wattswath/calibration/diagnose.hpp"
 
@@ -120,45 +122,86 @@ void checkSettings(const FitSettings& s) {
   if (!(s.huber_w >= 0.0 && s.huber_w <= 1e4)) {
     throw std::invalid_argument("FitSettings.huber_w = " + std::to_string(s.huber_w) + ", expected 0..1e4 W");
   }
+  detail::validate(s.excitation);
 }
 
-}  // namespace
+// Why each coefficient (effect by effect, in order) cannot be determined by the excitation of
+// `pts` (empty: it can), in words.
+std::vector<std::vector<std::string>> heldCoefficients(const EnergyModel& m, const Points& pts, const ExcitationSettings& s) {
+  std::vector<std::vector<std::string>> held;
+  for (const auto& e : m.effects()) {
+    held.emplace_back();
+    for (const auto& c : e->coefficients()) {
+      const auto x = detail::excitationOf(e->name(), c.name, pts.state, s);
+      held.back().push_back(x.enough() ? std::string()
+                                       : std::to_string(x.excited) + " of " + std::to_string(x.airborne) +
+                                             " airborne samples " + x.what + " (" + std::to_string(x.required) +
+                                             " needed): " + x.why);
+    }
+  }
+  return held;
+}
 
-FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data, const FitSettings& s) {
-  checkSettings(s);
-  const Points pts = gather(data, s.max_samples);
-  if (pts.state.size() < 3) throw std::invalid_argument("fitModel: fewer than 3 samples to fit");
-  FitResult out;
-  out.model = start;
-  initPayload(out.model, pts);
-  initTranslationalLift(out.model, pts);
+// Puts back the values `start` gave the held coefficients (the initialisers may have moved them).
+void restoreHeld(EnergyModel& m, const EnergyModel& start, const std::vector<std::vector<std::string>>& held) {
+  for (size_t k = 0; k < m.effects().size(); ++k) {
+    auto v = m.effects()[k]->coefficients();
+    std::vector<double> vals;
+    for (size_t c = 0; c < v.size(); ++c) {
+      vals.push_back(held[k][c].empty() ? v[c].value : start.effects()[k]->coefficients()[c].value);
+    }
+    if (!vals.empty()) m.effects()[k]->setCoefficientValues(vals);
+  }
+}
 
-  const auto& effects = out.model.effects();
-  std::vector<std::vector<double>> blocks;
-  std::vector<int> block_of(effects.size(), -1);
+// The Ceres problem of a fit: one parameter block per effect with coefficients, bounded, the
+// held coefficients constant.
+struct Blocks {
+  std::vector<std::vector<double>> values;
+  std::vector<int> block_of;  // per effect; -1 when the effect has no coefficients
+  std::vector<double*> ptrs;
+  bool any_free = false;
+};
+
+Blocks makeBlocks(const EnergyModel& m, const std::vector<std::vector<std::string>>& held) {
+  Blocks b;
+  const auto& effects = m.effects();
+  b.block_of.assign(effects.size(), -1);
   for (size_t k = 0; k < effects.size(); ++k) {
     if (effects[k]->coefficients().empty()) continue;
-    block_of[k] = static_cast<int>(blocks.size());
-    std::vector<double> b;
-    for (const auto& c : effects[k]->coefficients()) b.push_back(std::clamp(c.value, c.lower, c.upper));
-    blocks.push_back(b);
+    b.block_of[k] = static_cast<int>(b.values.size());
+    std::vector<double> v;
+    for (const auto& c : effects[k]->coefficients()) v.push_back(std::clamp(c.value, c.lower, c.upper));
+    b.values.push_back(v);
+    for (const auto& h : held[k]) b.any_free = b.any_free || h.empty();
   }
-  auto* functor = new PowerResiduals{out.model, block_of, &pts};
+  for (auto& v : b.values) b.ptrs.push_back(v.data());
+  return b;
+}
+
+// Fits the free coefficients of `out.model` to `pts`; returns the final cost.
+double solve(FitResult& out, Blocks& b, const std::vector<std::vector<std::string>>& held, const Points& pts,
+             const FitSettings& s, ceres::Problem& problem) {
+  const auto& effects = out.model.effects();
+  auto* functor = new PowerResiduals{out.model, b.block_of, &pts};
   auto* cost = new ceres::DynamicNumericDiffCostFunction<PowerResiduals, ceres::CENTRAL>(functor);
-  std::vector<double*> ptrs;
-  for (auto& b : blocks) {
-    cost->AddParameterBlock(static_cast<int>(b.size()));
-    ptrs.push_back(b.data());
-  }
+  for (auto& v : b.values) cost->AddParameterBlock(static_cast<int>(v.size()));
   cost->SetNumResiduals(static_cast<int>(pts.state.size()));
-  ceres::Problem problem;
-  problem.AddResidualBlock(cost, s.huber_w > 0.0 ? new ceres::HuberLoss(s.huber_w) : nullptr, ptrs);
+  problem.AddResidualBlock(cost, s.huber_w > 0.0 ? new ceres::HuberLoss(s.huber_w) : nullptr, b.ptrs);
   for (size_t k = 0; k < effects.size(); ++k) {
-    if (block_of[k] < 0) continue;
+    if (b.block_of[k] < 0) continue;
+    double* p = b.ptrs[b.block_of[k]];
     const auto& cs = effects[k]->coefficients();
+    std::vector<int> fixed;
     for (size_t c = 0; c < cs.size(); ++c) {
-      problem.SetParameterLowerBound(ptrs[block_of[k]], static_cast<int>(c), cs[c].lower);
-      problem.SetParameterUpperBound(ptrs[block_of[k]], static_cast<int>(c), cs[c].upper);
+      if (!held[k][c].empty()) fixed.push_back(static_cast<int>(c));
+      problem.SetParameterLowerBound(p, static_cast<int>(c), cs[c].lower);
+      problem.SetParameterUpperBound(p, static_cast<int>(c), cs[c].upper);
+    }
+    if (fixed.size() == cs.size()) {
+      problem.SetParameterBlockConstant(p);
+    } else if (!fixed.empty()) {
+      problem.SetManifold(p, new ceres::SubsetManifold(static_cast<int>(cs.size()), fixed));
     }
   }
   ceres::Solver::Options opt;
@@ -169,32 +212,19 @@ FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data,
   opt.function_tolerance = 1e-10;
   opt.parameter_tolerance = 1e-10;
   ceres::Solver::Summary summary;
-  ceres::Solve(opt, &problem, &summary);
-  functor->setParams(out.model, ptrs.data());
+  if (b.any_free) ceres::Solve(opt, &problem, &summary);
+  functor->setParams(out.model, b.ptrs.data());
+  double cost_value = 0.0;
+  for (size_t i = 0; i < pts.state.size(); ++i) {
+    const double r = out.model.power(*pts.state[i]) - pts.measured[i];
+    cost_value += 0.5 * r * r;
+  }
+  return b.any_free ? summary.final_cost : cost_value;
+}
 
-  std::vector<double> res(pts.state.size());
-  for (size_t i = 0; i < res.size(); ++i) res[i] = out.model.power(*pts.state[i]) - pts.measured[i];
-  out.train_rmse_w = rms(res);
-  out.samples = static_cast<int>(res.size());
-
-  // Formal uncertainty: covariance of the linearised problem times the residual variance.
-  size_t p = 0;
-  for (const auto& b : blocks) p += b.size();
-  const double s2 = res.size() > p ? 2.0 * summary.final_cost / (res.size() - p) : 0.0;
-  ceres::Covariance::Options copt;
-  copt.algorithm_type = ceres::DENSE_SVD;
-  copt.null_space_rank = -1;
-  copt.min_reciprocal_condition_number = 1e-14;
-  ceres::Covariance cov(copt);
-  std::vector<std::pair<const double*, const double*>> pairs;
-  for (size_t a = 0; a < ptrs.size(); ++a)
-    for (size_t b = a; b < ptrs.size(); ++b) pairs.emplace_back(ptrs[a], ptrs[b]);
-  const bool have_cov = !pairs.empty() && cov.Compute(pairs, &problem);
-  if (!have_cov && !pairs.empty()) out.notes.push_back("covariance is singular: some coefficients are not determined");
-  struct Ref {
-    size_t block, idx;
-  };
-  std::vector<Ref> refs;
+// The coefficients of `out.model` as FittedCoefficients (sigma NaN), the held ones not determined.
+void listCoefficients(FitResult& out, const std::vector<std::vector<std::string>>& held) {
+  const auto& effects = out.model.effects();
   for (size_t k = 0; k < effects.size(); ++k) {
     const auto& cs = effects[k]->coefficients();
     for (size_t c = 0; c < cs.size(); ++c) {
@@ -205,52 +235,111 @@ FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data,
       f.meaning = cs[c].meaning;
       f.value = cs[c].value;
       f.sigma = std::numeric_limits<double>::quiet_NaN();
-      const double span = std::max(1e-12, 1e-6 * (cs[c].upper - cs[c].lower));
-      f.at_bound = f.value <= cs[c].lower + span || f.value >= cs[c].upper - span;
-      out.coefficients.push_back(f);
-      refs.push_back({static_cast<size_t>(block_of[k]), c});
-    }
-  }
-  if (have_cov) {
-    auto covAt = [&](const Ref& a, const Ref& b) {
-      const size_t na = blocks[a.block].size(), nb = blocks[b.block].size();
-      std::vector<double> m(na * nb);
-      if (a.block <= b.block) {
-        cov.GetCovarianceBlock(ptrs[a.block], ptrs[b.block], m.data());
-        return m[a.idx * nb + b.idx];
-      }
-      cov.GetCovarianceBlock(ptrs[b.block], ptrs[a.block], m.data());
-      return m[b.idx * na + a.idx];
-    };
-    for (size_t i = 0; i < refs.size(); ++i) {
-      // DENSE_SVD with null_space_rank -1 is a pseudo-inverse: a coefficient the data do not
-      // constrain (its Jacobian column vanishes) comes back with variance 0, which is not "exact"
-      // but "unknown".
-      const double v = covAt(refs[i], refs[i]);
-      auto& c = out.coefficients[i];
-      if (v > 0.0) {
-        c.sigma = std::sqrt(v * s2);
+      if (!held[k][c].empty()) {
+        f.determined = false;
+        f.fitted = false;
+        f.why_not_determined = held[k][c] + "; kept at " + num(f.value) + " " + f.unit +
+                               ", its starting value (from the vehicle's physics for the model's own effects)";
+        out.notes.push_back(f.effect + "." + f.name + " is not determined by the data: " + f.why_not_determined);
       } else {
-        c.sigma = std::numeric_limits<double>::quiet_NaN();
-        c.determined = false;
-        out.notes.push_back(c.effect + "." + c.name + " is not determined by the data (the modelled power does not "
-                            "change with it at the fitted values); its value " + num(c.value) + " " + c.unit +
-                            " is arbitrary");
+        const double span = std::max(1e-12, 1e-6 * (cs[c].upper - cs[c].lower));
+        f.at_bound = f.value <= cs[c].lower + span || f.value >= cs[c].upper - span;
       }
+      out.coefficients.push_back(f);
     }
-    for (size_t i = 0; i < refs.size(); ++i) {
-      for (size_t j = i + 1; j < refs.size(); ++j) {
-        const double vi = covAt(refs[i], refs[i]), vj = covAt(refs[j], refs[j]);
-        if (!(vi > 0 && vj > 0)) continue;
-        const double r = covAt(refs[i], refs[j]) / std::sqrt(vi * vj);
-        if (std::abs(r) > 0.95) {
-          out.notes.push_back(out.coefficients[i].effect + "." + out.coefficients[i].name + " and " +
-                              out.coefficients[j].effect + "." + out.coefficients[j].name + " are correlated (r = " +
-                              num(r, 3) + "): the data constrain mainly a combination of them");
-        }
+  }
+}
+
+// Formal uncertainty of the free coefficients: covariance of the linearised problem times the
+// residual variance; a free coefficient the data do not constrain is marked not determined, and
+// strongly correlated pairs are noted.
+void addUncertainty(FitResult& out, const Blocks& b, ceres::Problem& problem, double final_cost, size_t n) {
+  size_t p = 0;
+  for (const auto& c : out.coefficients) p += c.determined ? 1 : 0;
+  const double s2 = n > p ? 2.0 * final_cost / (n - p) : 0.0;
+  ceres::Covariance::Options copt;
+  copt.algorithm_type = ceres::DENSE_SVD;
+  copt.null_space_rank = -1;
+  copt.min_reciprocal_condition_number = 1e-14;
+  ceres::Covariance cov(copt);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (size_t a = 0; a < b.ptrs.size(); ++a)
+    for (size_t c = a; c < b.ptrs.size(); ++c) pairs.emplace_back(b.ptrs[a], b.ptrs[c]);
+  if (pairs.empty()) return;
+  if (!cov.Compute(pairs, &problem)) {
+    out.notes.push_back("covariance is singular: some coefficients are not determined");
+    return;
+  }
+  struct Ref {
+    size_t block, idx;
+  };
+  std::vector<Ref> refs;
+  const auto& effects = out.model.effects();
+  for (size_t k = 0; k < effects.size(); ++k)
+    for (size_t c = 0; c < effects[k]->coefficients().size(); ++c) refs.push_back({static_cast<size_t>(b.block_of[k]), c});
+  auto covAt = [&](const Ref& x, const Ref& y) {
+    const size_t nx = b.values[x.block].size(), ny = b.values[y.block].size();
+    std::vector<double> m(nx * ny);
+    if (x.block <= y.block) {
+      cov.GetCovarianceBlock(b.ptrs[x.block], b.ptrs[y.block], m.data());
+      return m[x.idx * ny + y.idx];
+    }
+    cov.GetCovarianceBlock(b.ptrs[y.block], b.ptrs[x.block], m.data());
+    return m[y.idx * nx + x.idx];
+  };
+  for (size_t i = 0; i < refs.size(); ++i) {
+    auto& c = out.coefficients[i];
+    if (!c.determined) continue;  // held by its excitation: not fitted
+    // DENSE_SVD with null_space_rank -1 is a pseudo-inverse: a coefficient the data do not
+    // constrain (its Jacobian column vanishes) comes back with variance 0, which is not "exact"
+    // but "unknown".
+    const double v = covAt(refs[i], refs[i]);
+    if (v > 0.0) {
+      c.sigma = std::sqrt(v * s2);
+    } else {
+      c.determined = false;
+      c.why_not_determined = "the modelled power does not change with it at the fitted values; its value " + num(c.value) +
+                             " " + c.unit + " is arbitrary";
+      out.notes.push_back(c.effect + "." + c.name + " is not determined by the data (" + c.why_not_determined + ")");
+    }
+  }
+  for (size_t i = 0; i < refs.size(); ++i) {
+    for (size_t j = i + 1; j < refs.size(); ++j) {
+      if (!out.coefficients[i].determined || !out.coefficients[j].determined) continue;
+      const double vi = covAt(refs[i], refs[i]), vj = covAt(refs[j], refs[j]);
+      if (!(vi > 0 && vj > 0)) continue;
+      const double r = covAt(refs[i], refs[j]) / std::sqrt(vi * vj);
+      if (std::abs(r) > 0.95) {
+        out.notes.push_back(out.coefficients[i].effect + "." + out.coefficients[i].name + " and " +
+                            out.coefficients[j].effect + "." + out.coefficients[j].name + " are correlated (r = " +
+                            num(r, 3) + "): the data constrain mainly a combination of them");
       }
     }
   }
+}
+
+}  // namespace
+
+FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data, const FitSettings& s) {
+  checkSettings(s);
+  const Points pts = gather(data, s.max_samples);
+  if (pts.state.size() < 3) throw std::invalid_argument("fitModel: fewer than 3 samples to fit");
+  FitResult out;
+  out.model = start;
+  const auto held = heldCoefficients(start, pts, s.excitation);
+  initPayload(out.model, pts);
+  initTranslationalLift(out.model, pts);
+  restoreHeld(out.model, start, held);
+  Blocks b = makeBlocks(out.model, held);
+  ceres::Problem problem;
+  const double final_cost = solve(out, b, held, pts, s, problem);
+
+  std::vector<double> res(pts.state.size());
+  for (size_t i = 0; i < res.size(); ++i) res[i] = out.model.power(*pts.state[i]) - pts.measured[i];
+  out.train_rmse_w = rms(res);
+  out.samples = static_cast<int>(res.size());
+  listCoefficients(out, held);
+  if (b.any_free) addUncertainty(out, b, problem, final_cost, res.size());
   for (const auto& c : out.coefficients) {
     if (c.at_bound) out.notes.push_back(c.effect + "." + c.name + " stopped at a bound (" + num(c.value) + " " + c.unit + ")");
   }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -230,12 +231,32 @@ std::vector<TimeWindow> detectAirborne(const std::vector<double>& t, const std::
   return out;
 }
 
+namespace {
+// Why no airborne window was found, when the battery current explains it (a log without working
+// current sensing and without logged take-offs has none): " (...)" or empty.
+std::string noAirborneReason(const FlightLog& log, const LogReadOptions& opt) {
+  double largest = -std::numeric_limits<double>::infinity();
+  bool any = false;
+  for (const auto& s : log.samples) {
+    if (!std::isfinite(s.current)) continue;
+    any = true;
+    largest = std::max(largest, s.current);
+  }
+  if (!any) return " (the log has no battery current and no logged take-off; give the window with --from / --to)";
+  if (largest <= opt.airborne.current_threshold_a) {
+    return " (the battery current never exceeds " + num(opt.airborne.current_threshold_a) + " A, largest " + num(largest) +
+           " A, and no take-off is logged: is the current measured? --airborne-current sets the threshold)";
+  }
+  return "";
+}
+}  // namespace
+
 void applyTimeWindow(FlightLog& log, const LogReadOptions& opt) {
   double from = opt.from_s, to = opt.to_s;
   if (std::isnan(from) || std::isnan(to) || from > to)
     throw std::invalid_argument(log.source + ": time window from " + num(from) + " s to " + num(to) + " s is empty or invalid");
   if (opt.airborne_only) {
-    if (log.airborne.empty()) throw std::runtime_error(log.source + ": --airborne: no airborne window found");
+    if (log.airborne.empty()) throw std::runtime_error(log.source + ": --airborne: no airborne window found" + noAirborneReason(log, opt));
     from = std::max(from, log.airborne.front().begin);
     to = std::min(to, log.airborne.back().end);
   }

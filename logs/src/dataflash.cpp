@@ -68,6 +68,14 @@ void layout(Format& f) {
   f.decodable = true;
 }
 
+// ArduCopter <= 3.1 (and the ArduPilot of its time) describes FMT itself with 4 column names for
+// its 5 format characters, "Type,Length,Name,Format"; the fifth, the columns text, is unnamed.
+// pymavlink names it "Columns" the same way.
+bool isOldFmtOfFmt(const Format& f) {
+  return f.type == kFmtType && f.name == "FMT" && f.format == "BBnNZ" &&
+         f.columns == std::vector<std::string>{"Type", "Length", "Name", "Format"};
+}
+
 bool isText(char c) { return c == 'n' || c == 'N' || c == 'Z'; }
 
 double decode(char c, const std::uint8_t* p) {
@@ -178,6 +186,7 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
       f.name = text(p + 2, 4);
       f.format = text(p + 6, 16);
       f.columns = splitColumns(text(p + 22, 64));
+      if (isOldFmtOfFmt(f)) f.columns.push_back("Columns");
       layout(f);
       std::string bad;
       if (f.name.empty()) bad = "FMT defines type " + std::to_string(f.type) + " with an empty name";

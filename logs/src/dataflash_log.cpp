@@ -41,7 +41,9 @@ std::string logEventName(int id) {
 
 void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& raw) {
   std::vector<Battery> found;
+  std::string untimed;
   for (const std::string name : {"BAT", "BAT2", "CURR", "CURR2"}) {
+    if (L.has(name, "Volt") && L.has(name, "Curr") && !L.hasTime(name)) untimed += (untimed.empty() ? "" : ", ") + name;
     if (!L.has(name, "Volt") || !L.has(name, "Curr") || !L.hasTime(name)) continue;
     const auto t = L.times(name);
     auto v = L.column(name, "Volt"), i = L.column(name, "Curr");
@@ -69,6 +71,9 @@ void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& r
     }
   }
   raw.meta["battery_candidates"] = "BAT, BAT2, CURR, CURR2 with Volt and Curr";
+  if (!untimed.empty()) {
+    raw.meta["battery_candidates"] += " and a timestamp; " + untimed + " here without one (ArduCopter <= 3.1), which cannot be placed in time";
+  }
   bool chosen = false;
   for (auto& bb : found) {
     const bool ok = opt.battery_instance >= 0 ? bb.instance == opt.battery_instance : median(bb.v) > 1.0;

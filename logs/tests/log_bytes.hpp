@@ -26,8 +26,11 @@ inline void putText(Bytes& b, const std::string& s, std::size_t n) {
 /// A DataFlash file under construction: FMT records, then message headers and payloads.
 struct DataFlash {
   Bytes b;  ///< the file so far
-  /// Starts with the FMT record of FMT itself.
-  DataFlash() { fmt(128, 89, "FMT", "BBnNZ", "Type,Length,Name,Format,Columns"); }
+  /// Starts with the FMT record of FMT itself, naming its columns `fmt_columns` (ArduCopter <= 3.1
+  /// wrote "Type,Length,Name,Format": 4 names for 5 format characters).
+  explicit DataFlash(const std::string& fmt_columns = "Type,Length,Name,Format,Columns") {
+    fmt(128, 89, "FMT", "BBnNZ", fmt_columns);
+  }
   /// Appends an FMT record defining message `name`; `len` [B] includes the 3 header bytes.
   void fmt(std::uint8_t type, std::uint8_t len, const std::string& name, const std::string& format, const std::string& cols) {
     b.insert(b.end(), {0xA3, 0x95, 128, type, len});

@@ -11,6 +11,7 @@
 #include "log_bytes.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
 #include "wattswath/logs/dataflash.hpp"
+#include "wattswath/logs/parameters.hpp"
 #include "wattswath/logs/ulog.hpp"
 
 namespace {
@@ -132,6 +133,62 @@ TEST(DataFlash, UnknownFormatCharacterOnlyFailsWhenUsed) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("unknown format character 'w'"), std::string::npos) << e.what();
   }
+}
+
+// ArduCopter 3.1 as it logged (issue 19): FMT of FMT with 4 column names for 5 format characters,
+// CURR without a timestamp in centivolts, PARM, MSG. Read in strict mode; it used to fail at byte 0
+// with "FMT redefines FMT itself".
+Bytes arduCopter31() {
+  DataFlash d("Type,Length,Name,Format");
+  d.fmt(129, 3 + 16 + 4, "PARM", "Nf", "Name,Value");
+  d.fmt(130, 3 + 64, "MSG", "Z", "Message");
+  d.fmt(131, 3 + 2 + 4 + 2 + 2 + 2 + 4, "CURR", "hIhhhf", "Thr,ThrInt,Volt,Curr,Vcc,CurrTot");
+  d.head(130);
+  putText(d.b, "ArduCopter V3.1.5 (3c57e771)", 64);
+  for (auto [name, value] : {std::pair<const char*, float>{"FRAME", 1.0f}, {"WPNAV_SPEED", 500.0f}}) {
+    d.head(129);
+    putText(d.b, name, 16);
+    put<float>(d.b, value);
+  }
+  for (int k = 0; k < 5; ++k) {
+    d.head(131);
+    put<std::int16_t>(d.b, 400);
+    put<std::uint32_t>(d.b, 1000);
+    put<std::int16_t>(d.b, 1230);  // 12.30 V
+    put<std::int16_t>(d.b, 1500);  // 15.00 A
+    put<std::int16_t>(d.b, 5000);
+    put<float>(d.b, 10.0f * k);
+  }
+  return d.b;
+}
+
+TEST(DataFlash, ArduCopter31FmtOfFmtWithFourColumnNamesReadsStrictly) {
+  const auto log = wattswath::logs::dataflash::Log::parse(arduCopter31(), "ac31.bin", false);
+  EXPECT_TRUE(log.warnings().empty());
+  const auto* fmt = log.format("FMT");
+  ASSERT_NE(fmt, nullptr);
+  EXPECT_TRUE(fmt->decodable) << fmt->problem;
+  EXPECT_EQ(fmt->columns, (std::vector<std::string>{"Type", "Length", "Name", "Format", "Columns"}));
+  EXPECT_EQ(log.count("FMT"), 4u);
+  EXPECT_EQ(log.textColumn("FMT", "Name").at(3), "CURR");
+  EXPECT_EQ(log.textColumn("MSG", "Message").at(0), "ArduCopter V3.1.5 (3c57e771)");
+  EXPECT_EQ(log.count("CURR"), 5u);
+  EXPECT_EQ(log.column("CURR", "Volt").at(0), 1230.0);
+  const auto p = wattswath::logs::readAutopilotParametersBytes(arduCopter31(), "ac31.bin", {});
+  EXPECT_EQ(p.parameters.at("WPNAV_SPEED"), 500.0);
+  // The flight itself: 3.1 logs no EKF position, and the reader says that, not "FMT redefines FMT".
+  try {
+    wattswath::logs::readDataFlashBytes(arduCopter31(), "ac31.bin", {});
+    FAIL() << "read without a position source";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).find("FMT"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("CURR here without one (ArduCopter <= 3.1)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(DataFlash, OtherFmtOfFmtRedefinitionsStillFail) {
+  DataFlash d("Type,Length,Name");  // 3 names: not the old layout
+  EXPECT_THROW(wattswath::logs::dataflash::Log::parse(d.b, "bad.bin", false), std::runtime_error);
 }
 
 TEST(DataFlash, NotADataFlashFile) {

@@ -12,11 +12,26 @@
 
 namespace wattswath::calibration {
 
+/// The excitation a coefficient needs before the data can determine it (issue 19): a drag area
+/// fitted on hover data only, or an effective mass on steady flight, is noise extrapolated, not a
+/// measurement. An airborne sample offers the excitation when it is beyond these thresholds; a
+/// coefficient is determined only when at least max(min_samples, min_fraction x airborne samples)
+/// do. Otherwise it keeps the value it was given (the vehicle's physical value) and is not fitted.
+struct ExcitationSettings {
+  double drag_speed_mps = 3.0;        ///< [m/s] horizontal speed for drag area, wind, translational lift; 0..100
+  double kinetic_power_m2ps3 = 1.0;   ///< [m^2/s^3] |v . a| for the kinetic effective mass; 0..1e4
+  double climb_speed_mps = 0.5;       ///< [m/s] climb (descent) rate for climb_mass (descent_mass); 0..100
+  double yaw_rate_radps = 0.3;        ///< [rad/s] |yaw rate| for yaw power; 0..100
+  int min_samples = 20;               ///< [-] excited samples needed at least; >= 0
+  double min_fraction = 0.02;         ///< [-] share of the airborne samples that must be excited; 0..1
+};
+
 /// Settings of a coefficient fit.
 struct FitSettings {
   int max_samples = 4000;    ///< [samples] training samples used, evenly thinned above this; 100..1e6
   int max_iterations = 60;   ///< [-] Levenberg-Marquardt iterations; 1..1000
   double huber_w = 0.0;      ///< [W] Huber loss scale (0: plain least squares); 0..1e4
+  ExcitationSettings excitation;  ///< what the data must offer for each coefficient to be fitted
 };
 
 /// A fitted coefficient with its uncertainty.
@@ -28,10 +43,16 @@ struct FittedCoefficient {
   double value = 0.0;    ///< fitted value, in `unit`
   double sigma = 0.0;    ///< formal 1-sigma (Ceres covariance times residual variance; NaN if unknown)
   bool at_bound = false; ///< true when the fit stopped on a sign/range bound
-  /// False when the data do not constrain this coefficient at all (the modelled power does not
-  /// change with it at the fitted values, e.g. a wind speed once the drag area has gone to 0):
-  /// its value is arbitrary and its sigma is NaN, never a misleading 0.
+  /// False when the data do not determine this coefficient: they lack the excitation it needs
+  /// (ExcitationSettings; it then keeps the value it was given, the vehicle's physical value, and is
+  /// not fitted), or the modelled power does not change with it at the fitted values (e.g. a wind
+  /// speed once the drag area has gone to 0; its value is arbitrary). Its sigma is then NaN.
   bool determined = true;
+  /// Why it is not determined, in words (empty when it is), e.g. "0 of 412 airborne samples faster
+  /// than 3 m/s horizontally (20 needed): ...; kept at 0.0155 m^2, its starting value (...)".
+  std::string why_not_determined;
+  /// False when the coefficient was held at the value it was given for lack of excitation.
+  bool fitted = true;
 };
 
 /// Result of fitting a model's coefficients.

@@ -1,0 +1,59 @@
+// Flight logs read for replay, diagnose and fit, each checked as a measurement first (issue 19).
+#include "log_inputs.hpp"
+
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+
+#include "cli.hpp"
+#include "wattswath/calibration/measurement_check.hpp"
+
+namespace wattswath::apps {
+using nlohmann::json;
+
+json MeasurementReport::toJson() const { return {{"trust_power", trust_power}, {"logs", logs}}; }
+
+void MeasurementReport::print() const {
+  for (const auto& l : lines) std::cout << "note: " << l << "\n";
+}
+
+CLI::Option* addTrustPowerFlag(CLI::App* cmd, bool& trust) {
+  return cmd->add_flag("--trust-power", trust,
+                       "Use the measured power even when it cannot be a flying multirotor's (current stuck at 0 A or "
+                       "constant, median power below 0.25 or above 8 times the vehicle's hover power from physics); "
+                       "the output says so");
+}
+
+std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::string>& paths,
+                                                      const logs::LogReadOptions& read,
+                                                      const energy::Vehicle& vehicle, MeasurementReport& report) {
+  std::vector<calibration::PreparedLog> out;
+  for (const auto& p : paths) {
+    progress("reading " + p);
+    auto log = logs::readFlightLog(p, read);
+    const auto c = calibration::checkMeasurement(log, vehicle);
+    if (!c.position_problem.empty()) throw std::runtime_error(p + ": " + c.position_problem);
+    if (!c.power_problem.empty() && !report.trust_power) {
+      throw std::runtime_error(p + ": " + c.power_problem +
+                               ". Refused: a model compared with this power says nothing; use --trust-power to use it anyway");
+    }
+    for (const auto& n : c.notes) report.lines.push_back(p + ": " + n);
+    if (!c.power_problem.empty()) {
+      report.lines.push_back(p + ": measured power used only because of --trust-power: " + c.power_problem);
+    }
+    auto num = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    report.logs.push_back({{"log", p},
+                           {"power", c.power_problem.empty() ? "plausible" : "implausible, used because of --trust-power"},
+                           {"power_problem", c.power_problem},
+                           {"airborne_samples", c.airborne_samples},
+                           {"median_power_w", num(c.median_power_w)},
+                           {"median_current_a", num(c.median_current_a)},
+                           {"hover_power_w", num(c.hover_power_w)},
+                           {"position_cut_at_s", c.cut ? json(c.cut_at_s) : json(nullptr)},
+                           {"notes", c.notes}});
+    out.push_back(calibration::prepareLog(log));
+  }
+  return out;
+}
+
+}  // namespace wattswath::apps

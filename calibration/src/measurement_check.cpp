@@ -1,0 +1,186 @@
+// Plausibility of a log as a measurement of a flying multirotor (issue 19): the position estimate
+// (a diverged end cut off) and the measured power against the vehicle's physics hover power.
+#include "wattswath/calibration/measurement_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "number_text.hpp"
+#include "wattswath/energy/format.hpp"
+
+namespace wattswath::calibration {
+using detail::num;
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+void appendWarning(logs::FlightLog& log, const std::string& w) {
+  std::string& all = log.metadata["warnings"];
+  all += (all.empty() ? "" : " | ") + w;
+}
+
+// Why sample `s` cannot be a multirotor's state (empty: it can), against the first sample's height `z0`.
+std::string implausibleState(const logs::LogSample& s, double z0, double max_h, const MeasurementLimits& l) {
+  const double vz = s.velocity.z(), vh = s.velocity.head<2>().norm(), dz = s.position.z() - z0;
+  if (std::abs(vz) > l.max_vertical_speed) {
+    return "vertical speed " + num(vz, 4) + " m/s, expected at most " + num(l.max_vertical_speed) + " m/s up or down";
+  }
+  if (vh > max_h) return "horizontal speed " + num(vh, 4) + " m/s, expected at most " + num(max_h) + " m/s";
+  if (std::abs(dz) > l.max_altitude_change) {
+    return "altitude " + num(dz, 5) + " m from the first sample, expected within +-" + num(l.max_altitude_change) + " m";
+  }
+  return {};
+}
+
+// Cuts the samples from the first implausible one on; states why in `c`.
+void checkPosition(logs::FlightLog& log, const energy::Vehicle& v, const MeasurementLimits& l, MeasurementCheck& c) {
+  auto& S = log.samples;
+  if (S.empty()) return;
+  const double max_h = std::max(l.max_horizontal_speed, 2.0 * v.max_speed_mps);
+  const double z0 = S.front().position.z();
+  size_t bad = S.size();
+  std::string why;
+  for (size_t i = 0; i < S.size() && why.empty(); ++i) {
+    why = implausibleState(S[i], z0, max_h, l);
+    if (!why.empty()) bad = i;
+  }
+  if (why.empty()) return;
+  const std::string what = "the position estimate is not a multirotor's at t = " + num(S[bad].t, 7) + " s (" + why +
+                           "): the EKF diverged or the log is corrupt";
+  if (bad < 2 || S[bad - 1].t - S.front().t < l.min_kept_s) {
+    c.position_problem = what + "; less than " + num(l.min_kept_s) + " s before it, so the log cannot be used" +
+                         (bad < 2 ? "" : " (use --to to keep the part before it)");
+    return;
+  }
+  c.cut = true;
+  c.cut_at_s = S[bad].t;
+  const double dropped_s = S.back().t - S[bad].t;
+  c.notes.push_back(what + "; the " + std::to_string(S.size() - bad) + " samples from there on (" + num(dropped_s, 4) +
+                    " s) are not used");
+  appendWarning(log, c.notes.back());
+  S.resize(bad);
+  const double end = S.back().t;
+  std::vector<logs::TimeWindow> kept;
+  for (auto w : log.airborne) {
+    if (w.begin > end) continue;
+    w.end = std::min(w.end, end);
+    kept.push_back(w);
+  }
+  log.airborne = kept;
+}
+
+// Indices of the samples the power is checked on: inside the airborne windows, else higher than
+// airborne_height above the lowest sample, else all.
+std::vector<size_t> airborneSamples(const logs::FlightLog& log, const MeasurementLimits& l, MeasurementCheck& c) {
+  const auto& S = log.samples;
+  std::vector<size_t> idx;
+  for (size_t i = 0; i < S.size(); ++i) {
+    for (const auto& w : log.airborne) {
+      if (S[i].t >= w.begin && S[i].t <= w.end) {
+        idx.push_back(i);
+        break;
+      }
+    }
+  }
+  if (!idx.empty()) return idx;
+  double zmin = std::numeric_limits<double>::infinity();
+  for (const auto& s : S) zmin = std::min(zmin, s.position.z());
+  for (size_t i = 0; i < S.size(); ++i)
+    if (S[i].position.z() - zmin > l.airborne_height) idx.push_back(i);
+  if (!idx.empty()) return idx;
+  c.notes.push_back("no airborne window and no sample higher than " + num(l.airborne_height) +
+                    " m above the lowest: the power was checked on all samples");
+  for (size_t i = 0; i < S.size(); ++i) idx.push_back(i);
+  return idx;
+}
+
+// A reading that never changes: (max - min) <= constant_relative * max|x|.
+bool constantReading(const std::vector<double>& x, double relative, double& at) {
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  at = *lo;
+  return x.size() >= 3 && *hi - *lo <= relative * std::max(std::abs(*lo), std::abs(*hi));
+}
+
+// Why the measured power of the samples `idx` cannot be a flying multirotor's (empty: it can).
+std::string powerProblem(const logs::FlightLog& log, const std::vector<size_t>& idx, const energy::Vehicle& v,
+                         const MeasurementLimits& l, MeasurementCheck& c) {
+  std::vector<double> cur, pw;
+  for (size_t i : idx) {
+    const auto& s = log.samples[i];
+    if (std::isfinite(s.current)) cur.push_back(s.current);
+    pw.push_back(std::isfinite(s.power) ? s.power : s.voltage * s.current);
+  }
+  c.airborne_samples = static_cast<int>(idx.size());
+  c.median_power_w = median(pw);
+  c.median_current_a = cur.size() == idx.size() ? median(cur) : std::numeric_limits<double>::quiet_NaN();
+  c.hover_power_w = energy::marinsHoverPowerW(v);
+  const std::string n = std::to_string(idx.size()) + " airborne samples";
+  double at = 0.0;
+  if (cur.size() == idx.size() && !cur.empty()) {
+    const double largest = std::max(std::abs(*std::min_element(cur.begin(), cur.end())),
+                                    std::abs(*std::max_element(cur.begin(), cur.end())));
+    if (largest <= l.stuck_current_a) {
+      return "the battery current reads 0 A in all " + n + " (largest |current| " + num(largest, 3) +
+             " A): the current sensor is not measuring, so the measured power (voltage x current) is not the vehicle's";
+    }
+    if (constantReading(cur, l.constant_relative, at)) {
+      return "the battery current is constant at " + num(at, 6) + " A in all " + n +
+             ": a fixed value, not a measurement of the vehicle's power";
+    }
+  } else if (constantReading(pw, l.constant_relative, at)) {
+    return "the measured power is constant at " + num(at, 6) + " W in all " + n + ": a fixed value, not a measurement";
+  }
+  const std::string seen = "median " + num(c.median_power_w, 4) + " W" +
+                           (std::isfinite(c.median_current_a) ? " (battery current median " + num(c.median_current_a, 3) + " A)" : "");
+  const std::string physics = " against " + num(c.hover_power_w, 4) + " W that '" + v.name + "' needs to hover (physics, marinsHoverPowerW)";
+  if (c.median_power_w < l.min_hover_fraction * c.hover_power_w) {
+    return "the measured power while airborne is far below hover: " + seen + physics + ", expected at least " +
+           num(l.min_hover_fraction) + " x that = " + num(l.min_hover_fraction * c.hover_power_w, 4) +
+           " W (less than a perfect rotor needs): the current sensor is not measuring or is miscalibrated, or the "
+           "vehicle file is not the logged vehicle";
+  }
+  if (c.median_power_w > l.max_hover_multiple * c.hover_power_w) {
+    return "the measured power while airborne is far above hover: " + seen + physics + ", expected at most " +
+           num(l.max_hover_multiple) + " x that = " + num(l.max_hover_multiple * c.hover_power_w, 4) +
+           " W (full thrust at a thrust-to-weight ratio of 4): the current sensor is miscalibrated, or the vehicle "
+           "file is not the logged vehicle";
+  }
+  return {};
+}
+
+}  // namespace
+
+void validate(const MeasurementLimits& l) {
+  using energy::detail::checkSettingRange;
+  const double inf = std::numeric_limits<double>::infinity();
+  checkSettingRange("MeasurementLimits", "min_hover_fraction", l.min_hover_fraction, 0.0, 1.0);
+  checkSettingRange("MeasurementLimits", "max_hover_multiple", l.max_hover_multiple, 1.0, inf);
+  checkSettingRange("MeasurementLimits", "stuck_current_a", l.stuck_current_a, 0.0, inf);
+  checkSettingRange("MeasurementLimits", "constant_relative", l.constant_relative, 0.0, inf);
+  checkSettingRange("MeasurementLimits", "max_vertical_speed", l.max_vertical_speed, 1e-9, inf);
+  checkSettingRange("MeasurementLimits", "max_horizontal_speed", l.max_horizontal_speed, 1e-9, inf);
+  checkSettingRange("MeasurementLimits", "max_altitude_change", l.max_altitude_change, 1e-9, inf);
+  checkSettingRange("MeasurementLimits", "airborne_height", l.airborne_height, 0.0, inf);
+  checkSettingRange("MeasurementLimits", "min_kept_s", l.min_kept_s, 0.0, inf);
+}
+
+MeasurementCheck checkMeasurement(logs::FlightLog& log, const energy::Vehicle& v, const MeasurementLimits& l) {
+  validate(l);
+  MeasurementCheck c;
+  c.median_current_a = std::numeric_limits<double>::quiet_NaN();
+  c.hover_power_w = energy::marinsHoverPowerW(v);
+  checkPosition(log, v, l, c);
+  if (!c.position_problem.empty() || log.samples.empty()) return c;
+  const auto idx = airborneSamples(log, l, c);
+  c.power_problem = powerProblem(log, idx, v, l, c);
+  return c;
+}
+
+}  // namespace wattswath::calibration
