@@ -287,8 +287,7 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
 std::vector<Eigen::Vector3d> flownWaypoints(const std::vector<mission::NavStep>& steps) {
   std::vector<Eigen::Vector3d> out;
   for (const auto& s : steps)
-    if ((s.kind == mission::NavStep::Kind::Waypoint || s.kind == mission::NavStep::Kind::SplineWaypoint ||
-         s.kind == mission::NavStep::Kind::LoiterTime) && s.has_position)
+    if (mission::isFlownTo(s) && s.has_position)
       out.push_back(s.target);
   return out;
 }

@@ -52,6 +52,12 @@ class Recorder {
   }
   /// Adds a note on what the model assumed.
   void note(const std::string& n) { out_.notes.push_back(n); }
+  /// Starts the record at home on the ground and waits the take-off delay (FlightSettings, or the
+  /// autopilot's documented spool-up time `spool_s` [s] when the settings give none).
+  void startOnGround(double spool_s) {
+    start(Eigen::Vector3d::Zero());
+    hold(s_.takeoff_delay_s >= 0.0 ? s_.takeoff_delay_s : spool_s, FlightPhase::Takeoff, 0, false);
+  }
   /// Starts the record at `p` (the first sample, t = 0).
   void start(const Eigen::Vector3d& p) {
     pos_ = p;

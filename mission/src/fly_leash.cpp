@@ -167,10 +167,6 @@ struct Flyer {
   }
 };
 
-bool flownThrough(const NavStep& s) {
-  return s.kind == NavStep::Kind::Waypoint || s.kind == NavStep::Kind::SplineWaypoint || s.kind == NavStep::Kind::LoiterTime;
-}
-
 void land(Recorder& rec, const Params& P, int step, const FlightSettings& s) {
   const double alt_low = std::max(P.land_alt_low, 1.0);
   auto law = [&](double h) { return h > alt_low ? std::max(P.speed_dn, P.land_speed) : P.land_speed; };
@@ -182,8 +178,7 @@ void land(Recorder& rec, const Params& P, int step, const FlightSettings& s) {
 FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
   const Params P = readParams(ap);
   Recorder rec(s, steps.size());
-  rec.start(Eigen::Vector3d::Zero());
-  rec.hold(s.takeoff_delay_s >= 0.0 ? s.takeoff_delay_s : P.spool_s, FlightPhase::Takeoff, 0, false);
+  rec.startOnGround(P.spool_s);
   Flyer f{rec, P, {}};
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  // where the carrot is
   double speed = P.speed;  // DO_CHANGE_SPEED overwrites WPNAV_SPEED in memory (RTL inherits it)
@@ -195,7 +190,7 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
       const Eigen::Vector3d top(target.x(), target.y(), std::max(st.target.z(), 1.0));
       f.leg(target, top, speed, false, FlightPhase::Takeoff, ki);
       target = top;
-    } else if (flownThrough(st)) {
+    } else if (isFlownTo(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : target;
       const bool fast = st.kind != NavStep::Kind::LoiterTime && st.hold_s <= 0.0 && !s.stop_at_waypoints;
       f.leg(target, to, speed, fast, FlightPhase::Mission, ki);

@@ -122,8 +122,7 @@ double cornerSpeed(const Eigen::Vector3d& from, const Eigen::Vector3d& here, con
 FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
   const Params P = readParams(ap);
   Recorder rec(s, steps.size());
-  rec.start(Eigen::Vector3d::Zero());
-  rec.hold(s.takeoff_delay_s >= 0.0 ? s.takeoff_delay_s : P.spool, FlightPhase::Takeoff, 0, false);
+  rec.startOnGround(P.spool);
   Flyer f{rec, P};
   double cruise = P.cruise;
   for (std::size_t k = 0; k < steps.size(); ++k) {
@@ -133,8 +132,7 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
     if (st.kind == NavStep::Kind::Takeoff) {
       const double acc = P.tko_ramp > 0.0 ? std::min(P.acc_up, P.tko_speed / P.tko_ramp) : P.acc_up;
       f.vertical(std::max(st.target.z(), 0.5), P.tko_speed, acc, FlightPhase::Takeoff, ki);
-    } else if (st.kind == NavStep::Kind::Waypoint || st.kind == NavStep::Kind::SplineWaypoint ||
-               st.kind == NavStep::Kind::LoiterTime) {
+    } else if (isFlownTo(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : f.p;
       const double rad = st.accept_radius_m > 0.0 ? st.accept_radius_m : P.acc_rad;
       double v_exit = 0.0;

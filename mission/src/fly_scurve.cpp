@@ -164,10 +164,6 @@ Eigen::Vector3d flyChain(Recorder& rec, const std::vector<LegSpec>& legs, Eigen:
   }
 }
 
-bool flownThrough(const NavStep& s) {
-  return s.kind == NavStep::Kind::Waypoint || s.kind == NavStep::Kind::SplineWaypoint || s.kind == NavStep::Kind::LoiterTime;
-}
-
 LegSpec specOf(const NavStep& s, const Params& P, int k) {
   // DO_CHANGE_SPEED is capped at WPNAV_SPEED (the SITL logs never exceed it).
   return {s.target, s.speed_xy > 0 ? std::min(s.speed_xy, P.speed_xy) : P.speed_xy, s.speed_up > 0 ? s.speed_up : P.speed_up,
@@ -178,10 +174,10 @@ LegSpec specOf(const NavStep& s, const Params& P, int k) {
 std::vector<LegSpec> chainFrom(const std::vector<NavStep>& steps, std::size_t k, const Eigen::Vector3d& here,
                                const Params& P, bool stop_all) {
   std::vector<LegSpec> legs;
-  for (std::size_t j = k; j < steps.size() && flownThrough(steps[j]); ++j) {
+  for (std::size_t j = k; j < steps.size() && isFlownTo(steps[j]); ++j) {
     LegSpec spec = specOf(steps[j], P, static_cast<int>(j));
     if (!steps[j].has_position) spec.target = legs.empty() ? here : legs.back().target;
-    const bool next_flown = j + 1 < steps.size() && flownThrough(steps[j + 1]) && steps[j + 1].has_position;
+    const bool next_flown = j + 1 < steps.size() && isFlownTo(steps[j + 1]) && steps[j + 1].has_position;
     spec.fast = steps[j].kind != NavStep::Kind::LoiterTime && steps[j].hold_s <= 0.0 && next_flown && !stop_all;
     legs.push_back(spec);
     if (!spec.fast) break;
@@ -204,8 +200,7 @@ void land(Recorder& rec, const Params& P, double speed_dn, int step, const Fligh
 FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
   const Params P = readParams(ap);
   Recorder rec(s, steps.size());
-  rec.start(Eigen::Vector3d::Zero());
-  rec.hold(s.takeoff_delay_s >= 0.0 ? s.takeoff_delay_s : P.spool_s, FlightPhase::Takeoff, 0, false);
+  rec.startOnGround(P.spool_s);
   Eigen::Vector3d here = Eigen::Vector3d::Zero();
   FlightPhase phase = FlightPhase::Mission;
   for (std::size_t k = 0; k < steps.size();) {
@@ -216,7 +211,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       up.target = {here.x(), here.y(), std::max(st.target.z(), here.z() + 1.0)};
       here = flyChain(rec, {up}, here, P, FlightPhase::Takeoff, P.jerk_z);
       ++k;
-    } else if (flownThrough(st)) {
+    } else if (isFlownTo(st)) {
       const std::vector<LegSpec> legs = chainFrom(steps, k, here, P, s.stop_at_waypoints);
       here = flyChain(rec, legs, here, P, phase, P.jerk);
       k += legs.size();

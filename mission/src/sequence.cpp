@@ -131,6 +131,10 @@ const char* toString(FlightPhase p) {
   return "unknown";
 }
 
+bool isFlownTo(const NavStep& s) {
+  return s.kind == NavStep::Kind::Waypoint || s.kind == NavStep::Kind::SplineWaypoint || s.kind == NavStep::Kind::LoiterTime;
+}
+
 std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>* warnings, std::size_t max_steps) {
   Sequencer q{m, geometry::LocalFrame(m.home), warnings, {}};
   std::map<int, int> seq_to_index, jumps_done;

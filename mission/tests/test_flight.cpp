@@ -172,8 +172,11 @@ TEST(ArduCopterLeash, StopWaypointIsReachedWithinTheRadiusAndHoldsStill) {
   const double leg = e.reached_s - f.events[0].completed_s;
   EXPECT_GT(leg, 20.0);
   EXPECT_LT(leg, 35.0);
-  for (const auto& s : f.samples)
-    if (s.t > e.reached_s && s.t < e.completed_s) EXPECT_LT((s.position - Eigen::Vector3d(100, 0, 10)).norm(), 2.5);
+  for (const auto& s : f.samples) {
+    if (s.t > e.reached_s && s.t < e.completed_s) {
+      EXPECT_LT((s.position - Eigen::Vector3d(100, 0, 10)).norm(), 2.5);
+    }
+  }
 }
 
 TEST(ArduCopterLeash, ReturnFromAboveRtlAltFliesHomeAndLands) {

@@ -40,6 +40,9 @@ struct NavStep {
   int item = -1;                                           ///< index into Mission::items (-1: none)
 };
 
+/// True for the steps the vehicle flies to a position (waypoint, spline waypoint, loiter time).
+bool isFlownTo(const NavStep& s);
+
 /// Throws std::invalid_argument when the mission cannot be sequenced: no navigation item, a
 /// speed of 0 or below (other than -1 "no change"), a position not finite. Items after a
 /// NAV_RETURN_TO_LAUNCH or NAV_LAND are never reached and are ignored (listed in `warnings`).
