@@ -133,6 +133,14 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
     log.samples.push_back(s);
   }
   log.airborne = detectAirborne(b.t, b.i, raw.landed, opt.airborne);
+  const auto last_change = std::max_element(raw.landed.begin(), raw.landed.end(),
+                                            [](const LandedChange& x, const LandedChange& y) { return x.t < y.t; });
+  const bool landed_at_end = last_change != raw.landed.end() && last_change->landed;
+  if (!log.airborne.empty() && log.airborne.back().end >= b.t.back() && !landed_at_end) {
+    raw.warnings.push_back("the log ends while airborne (at " + num(b.t.back(), 10) + " s, airborne since " +
+                           num(log.airborne.back().begin, 10) + " s): the landing is not in the log");
+    raw.meta["ends_airborne"] = "yes";
+  }
   log.events = std::move(raw.events);
 
   auto& m = log.metadata;

@@ -62,6 +62,13 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
   raw.meta["ulog_version"] = std::to_string(L.version());
   raw.meta["ulog_start_s"] = num(static_cast<double>(L.startTimeUs()) * 1e-6, 10);
   if (L.appendedData()) raw.meta["appended_data"] = "yes";
+  if (!L.gaps().empty()) {
+    std::string g;
+    for (const auto& x : L.gaps())
+      g += (g.empty() ? "" : "; ") + std::string("byte offset ") + std::to_string(x.offset) + ", " + std::to_string(x.length) +
+           " bytes" + (x.to_end ? " to the end of the file" : "") + " (" + x.reason + ")";
+    raw.meta["gaps"] = std::to_string(L.gaps().size()) + " skipped: " + g;
+  }
   if (L.dropouts().first) raw.meta["dropouts"] = std::to_string(L.dropouts().first) + " totalling " + num(L.dropouts().second) + " s";
 
   // Vehicle: system type from vehicle_status, board from ver_hw.

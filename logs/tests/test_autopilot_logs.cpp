@@ -293,6 +293,44 @@ TEST_F(TempDir, TruncatedUlogNamesOffsetAndMessage) {
   EXPECT_NE(errorOf(write("header.ulg", b)).find("shorter than the 16-byte ULog header"), std::string::npos);
 }
 
+// Issue 19: a real ULog with a 12-byte zero-filled stretch in the middle of its flight. Strict mode
+// names it and --lenient; lenient mode resynchronises on the next valid message and reads to the
+// end (landing included), listing the gap.
+TEST_F(TempDir, UlogZeroGapIsSkippedToTheEnd) {
+  auto b = bytesOf(logPath(kPx115));
+  const auto whole = wattswath::logs::readFlightLog(logPath(kPx115));
+  // The start of a message near the middle: walk the messages from the end of the header section.
+  std::size_t pos = 16, mid = 0;
+  while (pos + 3 <= b.size() && pos < b.size() / 2) {
+    mid = pos;
+    pos += 3 + (b[pos] | (b[pos + 1] << 8));
+  }
+  b.insert(b.begin() + static_cast<std::ptrdiff_t>(mid), 12, 0);
+  const std::string p = write("gap.ulg", b);
+  const auto err = errorOf(p);
+  EXPECT_NE(err.find("byte offset " + std::to_string(mid)), std::string::npos) << err;
+  EXPECT_NE(err.find("use --lenient"), std::string::npos) << err;
+  wattswath::logs::LogReadOptions o;
+  o.lenient = true;
+  const auto log = wattswath::logs::readFlightLog(p, o);
+  EXPECT_DOUBLE_EQ(log.samples.back().t, whole.samples.back().t);
+  EXPECT_EQ(log.samples.size(), whole.samples.size());
+  EXPECT_NE(log.metadata.at("gaps").find("1 skipped: byte offset " + std::to_string(mid) + ", 12 bytes"), std::string::npos)
+      << log.metadata.at("gaps");
+  EXPECT_EQ(log.metadata.count("ends_airborne"), 0u);  // it lands
+}
+
+// The ArduCopter 3.3 log ends with the motors at hover output (README): the reader says so.
+TEST(AutopilotLogs, LogEndingInTheAirSaysSo) {
+  const auto ac33 = wattswath::logs::readFlightLog(logPath(kAc33));
+  EXPECT_EQ(ac33.metadata.at("ends_airborne"), "yes");
+  EXPECT_NE(ac33.metadata.at("warnings").find("the log ends while airborne (at 254.07"), std::string::npos)
+      << ac33.metadata.at("warnings");
+  for (const auto& name : {kAc35, kPx19, kPx115}) {
+    EXPECT_EQ(wattswath::logs::readFlightLog(logPath(name)).metadata.count("ends_airborne"), 0u) << name;
+  }
+}
+
 // Seeded random corruption: every outcome is a log or an exception with a message, never a crash.
 TEST_F(TempDir, RandomCorruptionNeverCrashes) {
   std::mt19937 rng(42);

@@ -293,6 +293,77 @@ TEST(ULog, AppendedDataAfterAnIncompleteMessage) {
   EXPECT_NE(L.warnings()[0].find("appended data"), std::string::npos) << L.warnings()[0];
 }
 
+// A 12-byte zero-filled stretch between two messages (issue 19): strict mode names it and --lenient;
+// lenient mode resynchronises on the next valid message header, as pyulog does, reads to the end,
+// lists the gap, and says the log ends in the air (current above 5 A to the last sample).
+TEST(ULog, LenientResynchronisesAfterAZeroGapAndListsIt) {
+  ULog u;
+  definitions(u);
+  samples(u, 1.0, 10.0);
+  const std::size_t gap_at = u.b.size();
+  u.b.insert(u.b.end(), 12, 0);
+  samples(u, 10.1, 20.0);
+  try {
+    wattswath::logs::ulog::Log::parse(u.b, "gap.ulg", false);
+    FAIL() << "strict mode read past the gap";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("gap.ulg: byte offset " + std::to_string(gap_at) + ": "), std::string::npos) << m;
+    EXPECT_NE(m.find("zero-filled"), std::string::npos) << m;
+    EXPECT_NE(m.find("use --lenient"), std::string::npos) << m;
+  }
+  const auto L = wattswath::logs::ulog::Log::parse(u.b, "gap.ulg", true);
+  ASSERT_EQ(L.gaps().size(), 1u);
+  EXPECT_EQ(L.gaps()[0].offset, gap_at);
+  EXPECT_EQ(L.gaps()[0].length, 12u);
+  EXPECT_FALSE(L.gaps()[0].to_end);
+  ULog whole;
+  definitions(whole);
+  samples(whole, 1.0, 10.0);
+  samples(whole, 10.1, 20.0);
+  EXPECT_EQ(L.count("battery_status", 1), wattswath::logs::ulog::Log::parse(whole.b, "w.ulg", false).count("battery_status", 1));
+
+  wattswath::logs::LogReadOptions o;
+  o.lenient = true;
+  const auto log = wattswath::logs::readUlogBytes(u.b, "gap.ulg", o);
+  EXPECT_NEAR(log.samples.back().t, 20.0, 0.05);  // read to the end, not stopped at 10 s
+  EXPECT_NE(log.metadata.at("gaps").find("1 skipped: byte offset " + std::to_string(gap_at) + ", 12 bytes"), std::string::npos)
+      << log.metadata.at("gaps");
+  EXPECT_NE(log.metadata.at("warnings").find("skipped 12 bytes to the next valid message"), std::string::npos);
+  EXPECT_EQ(log.metadata.at("ends_airborne"), "yes");
+  EXPECT_NE(log.metadata.at("warnings").find("the log ends while airborne"), std::string::npos) << log.metadata.at("warnings");
+}
+
+// Zeros over the start of a message and a corrupt stretch of random-looking bytes: each is skipped to
+// the next valid message and listed; a log that lands says nothing about ending in the air.
+TEST(ULog, LenientSkipsEachCorruptStretchToTheNextValidMessage) {
+  ULog u;
+  definitions(u);
+  samples(u, 1.0, 5.0);
+  const std::size_t zero_at = u.b.size();
+  samples(u, 5.1, 5.1);  // one round of messages, its first (a 22-byte battery message) zeroed below
+  std::fill(u.b.begin() + static_cast<std::ptrdiff_t>(zero_at), u.b.begin() + static_cast<std::ptrdiff_t>(zero_at) + 12, 0);
+  samples(u, 5.2, 8.0);
+  const std::size_t junk_at = u.b.size();
+  for (int k = 0; k < 40; ++k) u.b.push_back(static_cast<std::uint8_t>(0xE7 ^ (k * 37)));
+  samples(u, 8.1, 9.0);
+  Bytes landed;
+  put<std::uint64_t>(landed, 9000000);
+  landed.push_back(1);
+  u.data(5, landed);
+  const auto L = wattswath::logs::ulog::Log::parse(u.b, "corrupt.ulg", true);
+  ASSERT_EQ(L.gaps().size(), 2u) << (L.warnings().empty() ? "" : L.warnings()[0]);
+  EXPECT_EQ(L.gaps()[0].offset, zero_at);
+  EXPECT_EQ(L.gaps()[0].length, 22u);  // the zeroed battery message, to the next one
+  EXPECT_EQ(L.gaps()[1].offset, junk_at);
+  EXPECT_EQ(L.gaps()[1].length, 40u);
+  wattswath::logs::LogReadOptions o;
+  o.lenient = true;
+  const auto log = wattswath::logs::readUlogBytes(u.b, "corrupt.ulg", o);
+  EXPECT_NEAR(log.samples.back().t, 9.0, 0.05);
+  EXPECT_EQ(log.metadata.count("ends_airborne"), 0u);  // landed at the last sample
+}
+
 TEST(ULog, MalformedInputNamesOffsetAndMessage) {
   ULog u;
   definitions(u);

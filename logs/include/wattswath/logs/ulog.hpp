@@ -30,13 +30,23 @@ struct LoggedString {
   std::string text;     ///< the message
 };
 
+/// A stretch of a ULog file the lenient reader skipped (zero-filled, corrupt or cut off).
+struct Gap {
+  std::size_t offset = 0;  ///< [B] byte offset of the first byte skipped
+  std::size_t length = 0;  ///< [B] bytes skipped (to the next valid message, or to the end of the file)
+  bool to_end = false;     ///< true when no valid message follows: the rest of the file is not read
+  std::string reason;      ///< what was found at `offset`
+};
+
 /// A whole ULog file, parsed once; topic columns are decoded on demand.
 class Log {
  public:
   /// Parses `bytes` (the whole file). `source` names the file in messages. With `lenient` false
   /// any malformed or truncated message throws std::runtime_error naming the byte offset and the
-  /// message type; with `lenient` true the reader stops at (or, with appended data, skips to the
-  /// next appended offset after) the first bad message and records it in warnings().
+  /// message type (and --lenient); with `lenient` true a bad message is skipped: with appended
+  /// data to the next appended offset, else, as pyulog does, to the next byte offset where a
+  /// valid message header starts (its type, size and payload consistent with the definitions,
+  /// and the message after it too), each skip recorded in gaps() and warnings().
   static Log parse(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient);
 
   /// [us] start time from the file header.
@@ -60,6 +70,8 @@ class Log {
   std::pair<int, double> dropouts() const { return {dropout_count_, dropout_s_}; }
   /// Problems skipped in lenient mode, each naming the byte offset.
   const std::vector<std::string>& warnings() const { return warnings_; }
+  /// Stretches skipped in lenient mode, in file order.
+  const std::vector<Gap>& gaps() const { return gaps_; }
 
   /// Instances (multi_id) of topic `name` with at least one data message, ascending.
   std::vector<int> instances(const std::string& name) const;
@@ -94,6 +106,18 @@ class Log {
     std::vector<std::pair<std::size_t, std::size_t>> records;  // payload offset, payload size
   };
 
+  std::size_t step(std::size_t pos, bool lenient);
+  std::string readMessage(std::size_t pos, char type, std::size_t size);
+  std::string readFlagBits(std::size_t pos, const std::uint8_t* p, std::size_t size);
+  std::string readFormat(const std::uint8_t* p, std::size_t size);
+  std::string readKeyValue(char type, const std::uint8_t* p, std::size_t size);
+  std::string readSubscription(const std::uint8_t* p, std::size_t size);
+  std::string readData(std::size_t pos, const std::uint8_t* p, std::size_t size);
+  std::string readString(char type, const std::uint8_t* p, std::size_t size);
+  std::size_t bad(std::size_t at, char type, const std::string& what, bool lenient, bool resync);
+  std::string where(std::size_t at, char type) const;
+  bool plausibleAt(std::size_t q, int depth) const;
+  bool plausiblePayload(char type, const std::uint8_t* p, std::size_t size) const;
   const Resolved& resolve(const std::string& name) const;
   std::size_t resolveInto(const std::string& name, const std::string& prefix, std::size_t base,
                           Resolved& out, int depth) const;
@@ -115,6 +139,9 @@ class Log {
   int dropout_count_ = 0;
   double dropout_s_ = 0.0;
   std::vector<std::string> warnings_;
+  std::vector<Gap> gaps_;
+  std::vector<std::uint64_t> appended_offsets_;   // parse state: appended-data offsets
+  std::map<int, std::size_t> sub_by_msg_id_;      // parse state: msg_id -> index in subs_
 };
 
 /// Size in bytes of ULog base type `type`, or 0 when it is not a base type (a nested format).
