@@ -9,6 +9,7 @@
 
 #include "cli.hpp"
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/logs/airframe.hpp"
 #include "wattswath/logs/parameters.hpp"
 
 namespace wattswath::apps {
@@ -61,11 +62,32 @@ std::string readText(const std::string& path) {
 
 // BASE's JSON text (validated as a vehicle first, so every error names the file and field) with
 // its `autopilot` object replaced; the other fields keep their order and text.
-std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson& autopilot) {
+std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson& autopilot, const OrderedJson& airframe) {
   energy::loadVehicle(base_path);
   OrderedJson j = OrderedJson::parse(readText(base_path));
   j["autopilot"] = autopilot;
+  if (!airframe.is_null()) j["extensions"]["airframe"] = airframe;
   return j.dump(2) + "\n";
+}
+
+// The airframe's drag identified from the log (DataFlash only): the extension object, or null
+// when the log does not determine it (said in words).
+OrderedJson airframeObject(const logs::AirframeDragEstimate& d, const std::string& log) {
+  if (!d.determined) return nullptr;
+  return {{"drag_linear_per_s", d.drag_linear_per_s},
+          {"drag_quadratic_per_m", d.drag_quadratic_per_m},
+          {"source", "identified from " + log + " (" + std::to_string(d.samples) + " samples, R^2 " +
+                         std::to_string(d.r2).substr(0, 5) + ", velocity " + d.velocity_source + ")"}};
+}
+
+logs::AirframeDragEstimate identifyAirframe(const ParamsOptions& o) {
+  try {
+    return logs::estimateAirframeDrag(o.log, o.read);
+  } catch (const std::exception& e) {
+    logs::AirframeDragEstimate none;
+    none.reason = e.what();
+    return none;
+  }
 }
 
 void warnAbout(const logs::AutopilotParameters& p) {
@@ -88,7 +110,8 @@ void runParams(const ParamsOptions& o) {
   energy::loadVehicle(o.vehicle);  // a bad BASE fails before the (possibly large) log is read
   const auto p = logs::readAutopilotParameters(o.log, o.read);
   const auto kept = o.all ? p.parameters : logs::flightBehaviourParameters(p);
-  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept));
+  const auto drag = identifyAirframe(o);
+  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept), airframeObject(drag, o.log));
   energy::parseVehicle(text, o.out);  // what is written reads back
   writeTextFileAtomic(o.out, text);
   warnAbout(p);
@@ -103,11 +126,20 @@ void runParams(const ParamsOptions& o) {
                {"kept_count", kept.size()},
                {"selection", p.selection},
                {"changed_after_takeoff", p.changed_after_takeoff},
-               {"kept", parameterObject(kept)}});
+               {"kept", parameterObject(kept)},
+               {"airframe", {{"determined", drag.determined},
+                             {"reason", drag.reason},
+                             {"drag_linear_per_s", drag.determined ? OrderedJson(drag.drag_linear_per_s) : OrderedJson()},
+                             {"drag_quadratic_per_m", drag.determined ? OrderedJson(drag.drag_quadratic_per_m) : OrderedJson()},
+                             {"r2", drag.r2},
+                             {"samples", drag.samples}}}});
   } else {
     progress("wrote " + o.out + ": " + p.firmware.family + (p.firmware.version.empty() ? "" : " " + p.firmware.version) +
              ", " + std::to_string(kept.size()) + " of the log's " + std::to_string(p.parameters.size()) +
              " parameters (" + (o.all ? "all" : "flight behaviour") + ")");
+    progress(drag.determined ? "airframe drag (extensions.airframe): " + std::to_string(drag.drag_linear_per_s) + " 1/s x v + " +
+                                   std::to_string(drag.drag_quadratic_per_m) + " 1/m x v^2, R^2 " + std::to_string(drag.r2)
+                             : "airframe drag not determined by this log: " + drag.reason + " (predict uses the vehicle's drag area)");
   }
 }
 
@@ -119,11 +151,16 @@ parameters) and writes BASE, unchanged otherwise, with an `autopilot` object:
 Values are in the autopilot's own units (WPNAV_SPEED cm/s, RTL_ALT cm, MPC_XY_CRUISE m/s).
 A parameter logged several times keeps its last value before take-off (ArduPilot).
 Kept by default, the parameters that shape how the vehicle flies a mission:
-  ArduPilot: WPNAV_*, PSC_JERK_*, PSC_ANGLE_MAX, ANGLE_MAX, ATC_INPUT_TC, ATC_ACCEL_*_MAX,
+  ArduPilot: WPNAV_*, PSC_JERK_*, PSC_POSXY_*, PSC_VELXY_*, PSC_POSZ_*, PSC_ANGLE_MAX, ANGLE_MAX, ATC_INPUT_TC, ATC_ACCEL_*_MAX,
     ATC_RATE_*_MAX, ATC_SLEW_YAW, WP_YAW_BEHAVIOR, RTL_*, LAND_*, PILOT_SPEED_UP/DN,
     PILOT_TKOFF_ALT, TKOFF_*, WP_NAVALT_MIN, LOIT_* (3.x: RC_FEEL_RP, PILOT_VELZ_MAX, PILOT_ACCEL_Z)
   PX4: MPC_* (incl. MPC_TKO_*, MPC_LAND_*), NAV_ACC_RAD, NAV_MC_ALT_RAD, RTL_*, MIS_*
+    (3.x: POS_XY_P, POS_Z_P, VEL_XY_*)
 --all keeps every parameter. Parameters left out take the firmware's documented defaults.
+From a DataFlash log it also identifies the airframe's horizontal drag, c1 v + c2 v^2, from the
+lean angle (ATT) against the EKF velocity, and writes it as `extensions.airframe` when the log
+determines it (enough flight above 3 m/s, R^2 >= 0.8); the S-curve model's vehicle flies against
+it (docs/autopilots.md, "Tracking error"). Otherwise it says why and predict uses the drag area.
 Example: wattswath vehicle params flight.bin --vehicle data/vehicles/iris.json --out my-iris.json
 )";
 

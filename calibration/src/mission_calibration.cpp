@@ -328,6 +328,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     mission::AutopilotConfig ap = autopilot;
     mission::FlightSettings fs;
     fs.dt = s.sim_dt;
+    fs.airframe = mission::airframeOfVehicle(v, v.name);
     fs.stop_at_waypoints = variant & 1;
     fs.speed_change_late = variant & 2;
     apply(x, ap, fs.takeoff_delay_s);

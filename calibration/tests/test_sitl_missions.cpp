@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "wattswath/logs/airframe.hpp"
 #include "wattswath/logs/parameters.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/flight.hpp"
@@ -39,6 +40,7 @@ std::map<int, double> reachedTimes(const std::string& name) {
 
 struct SitlRun {
   double predicted_flight_s = 0.0, measured_flight_s = 0.0, worst_leg_error_s = 0.0, worst_item_error_s = 0.0;
+  double worst_item_error_fraction = 0.0;
   int legs = 0;
 };
 
@@ -51,7 +53,15 @@ SitlRun run(const std::string& name) {
   ap.parameters = wattswath::logs::flightBehaviourParameters(params);
   const ms::Mission m = ms::readMission(sitl(name + ".waypoints"));
   const auto steps = ms::sequenceMission(m);
-  const ms::FlownMission f = ms::flyMission(steps, ap);
+  // The airframe's drag identified from the same log (its lean angle against its speed).
+  const auto drag = wattswath::logs::estimateAirframeDrag(sitl(name + ".BIN"));
+  EXPECT_TRUE(drag.determined) << drag.reason;
+  std::printf("%s: airframe drag %.3f 1/s x v + %.4f 1/m x v^2 (R^2 %.3f, %zu samples from %s)\n", name.c_str(),
+              drag.drag_linear_per_s, drag.drag_quadratic_per_m, drag.r2, drag.samples, drag.velocity_source.c_str());
+  ms::FlightSettings fs;
+  fs.airframe.drag_linear_per_s = drag.drag_linear_per_s;
+  fs.airframe.drag_quadratic_per_m = drag.drag_quadratic_per_m;
+  const ms::FlownMission f = ms::flyMission(steps, ap, fs);
   // The SITL times count from lift-off; ours from the take-off command (MOT_SPOOL_TIME earlier).
   const double liftoff = ap.get("MOT_SPOOL_TIME");
   const auto reached = reachedTimes(name);
@@ -68,6 +78,8 @@ SitlRun run(const std::string& name) {
     // ArduCopter reports an item reached when it completes (after its hold).
     const double p = f.events[k].completed_s - liftoff;
     r.worst_item_error_s = std::max(r.worst_item_error_s, std::abs(p - it->second));
+    r.worst_item_error_fraction = std::max(r.worst_item_error_fraction, std::abs(p - it->second) / it->second);
+    std::printf("  item %d reached %.2f s predicted, %.2f s in SITL (%+.2f s)\n", m.items[steps[k].item].seq, p, it->second, p - it->second);
     if (std::isfinite(prev_m)) {
       r.worst_leg_error_s = std::max(r.worst_leg_error_s, std::abs((p - prev_p) - (it->second - prev_m)));
       ++r.legs;
@@ -83,29 +95,30 @@ SitlRun run(const std::string& name) {
 
 }  // namespace
 
-// Each leg's duration within 2 s (the per-item bound, applied to legs); the whole flight
-// within 7 %: the model ends 3.5 s early at RTL (the logged vehicle overshoots the last waypoint by
-// 0.4 m and flies it back as a short S-curve; we do not model tracking error) and loses up to 1 s
-// per long stop-to-stop leg (the autopilot stretches its S-curve when the vehicle lags).
-TEST(SitlMissions, SquareAt5mpsLegsWithin2sFlightWithin7Percent) {
+// The targets: take-off to landing within 3 %, each item reached within 3 % of its time,
+// each leg's duration within 2 s. Before the vehicle's tracking of its target was modelled
+// (position controller, airframe drag, the S-curve clock scaler, RTL from the stopping point) the
+// flights came out 3.6-6.2 % short (docs/validation.md 5.1).
+void expectTargets(const SitlRun& r) {
+  EXPECT_LT(r.worst_leg_error_s, 2.0);
+  EXPECT_LT(r.worst_item_error_fraction, 0.03);
+  EXPECT_NEAR(r.predicted_flight_s / r.measured_flight_s, 1.0, 0.03);
+}
+
+TEST(SitlMissions, SquareAt5mpsWithin3Percent) {
   const SitlRun r = run("square_5mps");
   EXPECT_EQ(r.legs, 3);
-  EXPECT_LT(r.worst_leg_error_s, 2.0);
-  EXPECT_LT(r.worst_item_error_s, 2.0);
-  EXPECT_NEAR(r.predicted_flight_s / r.measured_flight_s, 1.0, 0.07);
+  expectTargets(r);
 }
 
-TEST(SitlMissions, SquareAt10mpsLegsWithin2sFlightWithin7Percent) {
+TEST(SitlMissions, SquareAt10mpsWithin3Percent) {
   const SitlRun r = run("square_10mps");
   EXPECT_EQ(r.legs, 3);
-  EXPECT_LT(r.worst_leg_error_s, 2.0);
-  EXPECT_LT(r.worst_item_error_s, 2.5);
-  EXPECT_NEAR(r.predicted_flight_s / r.measured_flight_s, 1.0, 0.07);
+  expectTargets(r);
 }
 
-TEST(SitlMissions, PlannedMissionWithHoldsLegsWithin2sFlightWithin7Percent) {
+TEST(SitlMissions, PlannedMissionWithHoldsWithin3Percent) {
   const SitlRun r = run("plan_sharp_hold1s");
   EXPECT_GE(r.legs, 20);
-  EXPECT_LT(r.worst_leg_error_s, 2.0);
-  EXPECT_NEAR(r.predicted_flight_s / r.measured_flight_s, 1.0, 0.07);
+  expectTargets(r);
 }

@@ -236,7 +236,8 @@ bool matchesAny(const std::string& name, const std::vector<std::string>& prefixe
 }
 
 bool isArduPilotFlightParameter(const std::string& n) {
-  static const std::vector<std::string> prefixes = {"WPNAV_", "PSC_JERK_", "RTL_", "LAND_", "TKOFF_", "LOIT_"};
+  static const std::vector<std::string> prefixes = {"WPNAV_", "PSC_JERK_", "PSC_POSXY_", "PSC_VELXY_", "PSC_POSZ_",
+                                                           "RTL_", "LAND_", "TKOFF_", "LOIT_", "POS_XY_", "POS_Z_", "VEL_XY_"};
   static const std::vector<std::string> exact = {"PSC_ANGLE_MAX", "ANGLE_MAX", "ATC_INPUT_TC", "ATC_SLEW_YAW",
       "WP_YAW_BEHAVIOR", "PILOT_SPEED_UP", "PILOT_SPEED_DN", "PILOT_TKOFF_ALT", "WP_NAVALT_MIN", "RC_FEEL_RP",
       "PILOT_VELZ_MAX", "PILOT_ACCEL_Z"};

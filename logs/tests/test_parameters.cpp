@@ -226,9 +226,9 @@ TEST(Parameters, Px4ReleaseNumbers) {
 TEST(Parameters, FlightBehaviourSelection) {
   for (const char* n : {"WPNAV_SPEED", "WPNAV_JERK", "PSC_JERK_XY", "ATC_INPUT_TC", "ATC_ACCEL_R_MAX", "ATC_RATE_Y_MAX",
                         "ATC_SLEW_YAW", "WP_YAW_BEHAVIOR", "RTL_ALT", "LAND_SPEED_HIGH", "PILOT_SPEED_UP",
-                        "PILOT_TKOFF_ALT", "TKOFF_SLEW_TIME", "WP_NAVALT_MIN", "LOIT_SPEED", "ANGLE_MAX"})
+                        "PILOT_TKOFF_ALT", "TKOFF_SLEW_TIME", "WP_NAVALT_MIN", "LOIT_SPEED", "ANGLE_MAX", "PSC_VELXY_P", "PSC_POSXY_P"})
     EXPECT_TRUE(isFlightBehaviourParameter("ArduCopter", n)) << n;
-  for (const char* n : {"MOT_THST_HOVER", "STAT_FLTTIME", "ATC_RAT_RLL_P", "PSC_VELXY_P", "ATC_ACCEL_R_FILT", "MPC_XY_CRUISE"})
+  for (const char* n : {"MOT_THST_HOVER", "STAT_FLTTIME", "ATC_RAT_RLL_P", "PSC_ACCZ_P", "ATC_ACCEL_R_FILT", "MPC_XY_CRUISE"})
     EXPECT_FALSE(isFlightBehaviourParameter("ArduCopter", n)) << n;
   for (const char* n : {"MPC_XY_CRUISE", "MPC_ACC_HOR", "MPC_JERK_AUTO", "MPC_TKO_SPEED", "MPC_LAND_SPEED", "NAV_ACC_RAD",
                         "NAV_MC_ALT_RAD", "RTL_RETURN_ALT", "MIS_TAKEOFF_ALT"})

@@ -19,6 +19,8 @@ const std::map<std::string, double> kArduCopter4 = {
     {"WP_YAW_BEHAVIOR", 2},      {"RTL_ALT", 1500},       {"RTL_ALT_FINAL", 0},    {"RTL_CLIMB_MIN", 0},
     {"RTL_SPEED", 0},            {"RTL_LOIT_TIME", 5000}, {"RTL_CONE_SLOPE", 3.0}, {"LAND_SPEED", 50},
     {"LAND_SPEED_HIGH", 0},      {"LAND_ALT_LOW", 1000},  {"MOT_SPOOL_TIME", 0.5},
+    {"PSC_POSXY_P", 1.0},        {"PSC_VELXY_P", 2.0},    {"PSC_VELXY_I", 1.0},    {"PSC_VELXY_IMAX", 1000},
+    {"ANGLE_MAX", 3000},         {"PSC_ANGLE_MAX", 0},
 };
 
 // ArduCopter 3.x defaults (AC_WPNav.h of 3.2-3.6, AC_PosControl).

@@ -21,6 +21,13 @@ void validate(const FlightSettings& s) {
   if (!(s.landed_detect_s >= 0.0 && s.landed_detect_s <= 60.0)) {
     throw std::invalid_argument("FlightSettings.landed_detect_s = " + std::to_string(s.landed_detect_s) + " s, expected 0..60");
   }
+  const Airframe& a = s.airframe;
+  if (!(a.drag_linear_per_s >= 0.0 && a.drag_linear_per_s <= 10.0) || !(a.drag_quadratic_per_m >= 0.0 && a.drag_quadratic_per_m <= 1.0) ||
+      !(a.response_s >= 0.0 && a.response_s <= 2.0)) {
+    throw std::invalid_argument("FlightSettings.airframe: drag " + std::to_string(a.drag_linear_per_s) + " 1/s, " +
+                                std::to_string(a.drag_quadratic_per_m) + " 1/m, response " + std::to_string(a.response_s) +
+                                " s; expected 0..10 1/s, 0..1 1/m, 0..2 s");
+  }
   if (!(s.takeoff_delay_s <= 60.0)) {
     throw std::invalid_argument("FlightSettings.takeoff_delay_s = " + std::to_string(s.takeoff_delay_s) + " s, expected <= 60");
   }
@@ -46,6 +53,12 @@ energy::Phase energyPhase(const FlightSample& a, const FlightSample& b, double l
 }
 
 }  // namespace
+
+Airframe airframeOf(double drag_area_m2, double mass_kg, double air_density_kgpm3) {
+  Airframe a;
+  if (mass_kg > 0.0 && drag_area_m2 > 0.0 && air_density_kgpm3 > 0.0) a.drag_quadratic_per_m = 0.5 * air_density_kgpm3 * drag_area_m2 / mass_kg;
+  return a;
+}
 
 FlownMission flyMission(const std::vector<NavStep>& steps, const AutopilotConfig& autopilot, const FlightSettings& s) {
   validate(s);

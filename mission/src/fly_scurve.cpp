@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "flight_internal.hpp"
+#include "position_follower.hpp"
 #include "wattswath/mission/scurve.hpp"
 
 namespace wattswath::mission {
@@ -19,6 +20,7 @@ struct Params {
   double speed_xy, speed_up, speed_dn, accel_xy, accel_z, jerk, snap, radius, accel_corner;
   double jerk_z, rtl_alt, rtl_alt_final, rtl_climb_min, rtl_speed, rtl_loiter_s, land_speed, land_speed_high,
       land_alt_low, pos_z_p, spool_s, rtl_cone_slope;
+  detail::PositionGains gains;
 };
 
 Params readParams(const AutopilotConfig& ap) {
@@ -54,6 +56,15 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.pos_z_p = checkParameter("PSC_POSZ_P", ap.get("PSC_POSZ_P"), 0.1, 10, "1/s");
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
+  p.gains.pos_p = checkParameter("PSC_POSXY_P", ap.get("PSC_POSXY_P"), 0.1, 10, "1/s");
+  p.gains.vel_p = checkParameter("PSC_VELXY_P", ap.get("PSC_VELXY_P"), 0.1, 20, "1/s");
+  p.gains.vel_i = checkParameter("PSC_VELXY_I", ap.get("PSC_VELXY_I"), 0, 20, "1/s/s");
+  p.gains.vel_imax = checkParameter("PSC_VELXY_IMAX", ap.get("PSC_VELXY_IMAX"), 0, 10000, "cm/s/s") / 100.0;
+  p.gains.accel = p.accel_xy;
+  const double psc_angle = ap.get("PSC_ANGLE_MAX");  // [deg], 0: ANGLE_MAX
+  const double lean_deg = psc_angle > 0.0 ? psc_angle : checkParameter("ANGLE_MAX", ap.get("ANGLE_MAX"), 1000, 8000, "cdeg") / 100.0;
+  p.gains.lean_accel = kGravity * std::tan(std::clamp(lean_deg, 10.0, 80.0) * M_PI / 180.0);
+  p.gains.scaler_tc = p.accel_xy / p.jerk;
   return p;
 }
 
@@ -109,41 +120,64 @@ bool mayStartNext(const Leg& cur, const Leg& next, const Params& P) {
          std::hypot(a.x(), a.y()) < P.accel_corner && std::abs(a.z()) < std::min(cur.accz, next.accz);
 }
 
+// The recorder, the vehicle chasing the target and the S-curve clock scaler, across the flight.
+struct Flight {
+  Recorder& rec;
+  detail::PositionFollower veh;
+  double clock = 1.0;  // AC_WPNav's _track_scalar_dt
+  // One tick towards the target (p, v, a), recorded as the vehicle's state.
+  void tick(const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& a, FlightPhase phase, int step) {
+    clock = veh.step(p, v, a, rec.dt());
+    rec.tick(veh.position(), veh.velocity(), phase, step);
+  }
+  // Holds the target at `at` for `seconds` [s] while the vehicle settles on it.
+  void hold(const Eigen::Vector3d& at, double seconds, FlightPhase phase, int step) {
+    const long n = std::lround(std::max(0.0, seconds) / rec.dt());
+    for (long i = 0; i < n; ++i) tick(at, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), phase, step);
+  }
+};
+
 // Flies a chain of legs from `here`, blending corners into every leg marked fast; returns where
-// the vehicle stops (the last leg's target, after its hold).
-Eigen::Vector3d flyChain(Recorder& rec, const std::vector<LegSpec>& legs, Eigen::Vector3d here, const Params& P,
+// the vehicle stops (the last leg's target, after its hold). A waypoint without a following leg
+// is reached when the S-curve has ended there and the vehicle is within WPNAV_RADIUS of it.
+Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Vector3d here, const Params& P,
                          FlightPhase phase, double jerk) {
+  Recorder& rec = fl.rec;
   Leg prev, cur = makeLeg(here, legs[0].target, legs[0], P, jerk), next;
   std::size_t i = 0;
   auto prepareNext = [&] {
     next = Leg();
     if (legs[i].fast && i + 1 < legs.size()) next = makeLeg(legs[i].target, legs[i + 1].target, legs[i + 1], P, jerk);
   };
+  auto arrived = [&] {
+    const bool target_done = !next.started && cur.t >= cur.prof.duration() && prev.remaining() <= 0.0;
+    return target_done && (legs[i].fast || (fl.veh.position() - legs[i].target).norm() <= P.radius);
+  };
   prepareNext();
   while (true) {
     const bool blend = legs[i].fast && next.prof.duration() > 0.0 && cur.prof.duration() > 0.0;
-    if (cur.prof.duration() > 0.0 || prev.remaining() > 0.0 || next.started) {
-      prev.advance(rec.dt());
-      cur.advance(rec.dt());
+    if (!arrived()) {
+      const double dts = rec.dt() * fl.clock;
+      prev.advance(dts);
+      cur.advance(dts);
       if (blend && !next.started && cur.t >= cur.prof.decelStartTime() && cur.remaining() <= next.prof.accelEndTime() &&
           mayStartNext(cur, next, P)) {
         next.started = true;
       }
-      if (next.started) next.advance(rec.dt());
+      if (next.started) next.advance(dts);
       Eigen::Vector3d p, v, a, pp, vp, ap, pn, vn, an;
       cur.state(cur.t, p, v, a);
       prev.state(prev.t, pp, vp, ap);
       next.state(next.started ? next.t : 0.0, pn, vn, an);
       const Eigen::Vector3d prev_tail = prev.prof.duration() > 0.0 ? Eigen::Vector3d(pp - (prev.dest - prev.origin)) : Eigen::Vector3d::Zero();
-      const Eigen::Vector3d pos = cur.origin + p + prev_tail + (next.started ? pn : Eigen::Vector3d::Zero());
-      const Eigen::Vector3d vel = v + vp + (next.started ? vn : Eigen::Vector3d::Zero());
-      rec.tick(pos, vel, phase, legs[i].step);
+      const Eigen::Vector3d z = Eigen::Vector3d::Zero();
+      const Eigen::Vector3d pos = cur.origin + p + prev_tail + (next.started ? pn : z);
+      fl.tick(pos, v + vp + (next.started ? vn : z), a + ap + (next.started ? an : z), phase, legs[i].step);
     }
     const bool passed = next.started && next.t >= cur.remaining();
-    const bool stopped = !next.started && cur.t >= cur.prof.duration() && prev.remaining() <= 0.0;
-    if (passed || stopped || cur.prof.duration() <= 0.0) {
+    if (passed || arrived()) {
       rec.reached(legs[i].step);
-      if (passed || (cur.prof.duration() <= 0.0 && next.started)) {
+      if (passed) {
         rec.completed(legs[i].step);
         prev = cur;
         cur = next;
@@ -152,7 +186,7 @@ Eigen::Vector3d flyChain(Recorder& rec, const std::vector<LegSpec>& legs, Eigen:
         prepareNext();
         continue;
       }
-      rec.hold(legs[i].hold_s, phase, legs[i].step);
+      fl.hold(legs[i].target, legs[i].hold_s, phase, legs[i].step);
       rec.completed(legs[i].step);
       if (i + 1 >= legs.size()) return legs[i].target;
       here = legs[i].target;
@@ -201,6 +235,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
   const Params P = readParams(ap);
   Recorder rec(s, steps.size());
   rec.startOnGround(P.spool_s);
+  Flight fl{rec, detail::PositionFollower(P.gains, s.airframe)};
   Eigen::Vector3d here = Eigen::Vector3d::Zero();
   FlightPhase phase = FlightPhase::Mission;
   for (std::size_t k = 0; k < steps.size();) {
@@ -209,28 +244,31 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
     if (st.kind == NavStep::Kind::Takeoff) {
       LegSpec up = specOf(st, P, ki);
       up.target = {here.x(), here.y(), std::max(st.target.z(), here.z() + 1.0)};
-      here = flyChain(rec, {up}, here, P, FlightPhase::Takeoff, P.jerk_z);
+      here = flyChain(fl, {up}, here, P, FlightPhase::Takeoff, P.jerk_z);
       ++k;
     } else if (isFlownTo(st)) {
       const std::vector<LegSpec> legs = chainFrom(steps, k, here, P, s.stop_at_waypoints);
-      here = flyChain(rec, legs, here, P, phase, P.jerk);
+      here = flyChain(fl, legs, here, P, phase, P.jerk);
       k += legs.size();
     } else if (st.kind == NavStep::Kind::Delay) {
       rec.reached(ki);
-      rec.hold(st.hold_s, phase, ki);
+      fl.hold(here, st.hold_s, phase, ki);
       rec.completed(ki);
       ++k;
     } else if (st.kind == NavStep::Kind::ReturnToLaunch) {
       // Return altitude (ModeRTL::compute_return_target): RTL_ALT (at least RTL_CLIMB_MIN above
       // here), within the cone RTL_CONE_SLOPE x distance home (at least 2.5 m), never a descent.
+      // RTL starts from where the vehicle would stop now (it may still be moving or lagging).
+      const Eigen::Vector3d stop = fl.veh.stoppingPoint();
+      here = {stop.x(), stop.y(), here.z()};
       double alt = std::max(P.rtl_alt, here.z() + P.rtl_climb_min);
       if (P.rtl_cone_slope >= 0.5) alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, 2.5));
       alt = std::max(alt, here.z());
       LegSpec climb{{here.x(), here.y(), alt}, P.rtl_speed, P.speed_up, P.speed_dn, 0.0, ki, true};
       LegSpec home{{0.0, 0.0, alt}, P.rtl_speed, P.speed_up, P.speed_dn, P.rtl_loiter_s, ki, false};
-      here = flyChain(rec, {climb, home}, here, P, FlightPhase::Return, P.jerk);
+      here = flyChain(fl, {climb, home}, here, P, FlightPhase::Return, P.jerk);
       if (P.rtl_alt_final > 0.0) {
-        here = flyChain(rec, {{{0.0, 0.0, P.rtl_alt_final}, P.rtl_speed, P.speed_up, P.speed_dn, 0.0, ki, false}}, here, P,
+        here = flyChain(fl, {{{0.0, 0.0, P.rtl_alt_final}, P.rtl_speed, P.speed_up, P.speed_dn, 0.0, ki, false}}, here, P,
                         FlightPhase::Return, P.jerk_z);
         rec.note("RTL_ALT_FINAL > 0: the vehicle hovers at " + std::to_string(P.rtl_alt_final) + " m; the prediction ends there");
       } else {
@@ -242,7 +280,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       if (st.has_position) {
         LegSpec over = specOf(st, P, ki);
         over.target.z() = here.z();
-        here = flyChain(rec, {over}, here, P, FlightPhase::Landing, P.jerk);
+        here = flyChain(fl, {over}, here, P, FlightPhase::Landing, P.jerk);
       }
       land(rec, P, st.speed_down > 0 ? st.speed_down : P.speed_dn, ki, s);
       rec.reached(ki);

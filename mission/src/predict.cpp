@@ -54,7 +54,9 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   MissionPrediction p;
   p.warnings = m.warnings;
   const std::vector<NavStep> steps = sequenceMission(m, &p.warnings);
-  p.flight = flyMission(steps, autopilot, s.flight);
+  FlightSettings fs = s.flight;
+  if (s.airframe_from_vehicle) fs.airframe = airframeOfVehicle(v, v.name);
+  p.flight = flyMission(steps, autopilot, fs);
   p.pieces = toPieces(p.flight);
   p.breakdown = model.emptyBreakdown();
   p.piece_energy_j.resize(p.pieces.pieces.size());

@@ -115,12 +115,47 @@ TEST(ArduCopterSCurve, NinetyDegreeCornerIsBlendedNotStopped) {
 
 TEST(ArduCopterSCurve, HoldTimeStopsTheVehicle) {
   const Mission m = localMission({{100, 0, 10}, {100, 100, 10}}, 3.0);
-  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
+  FlightSettings exact;
+  exact.airframe.track = false;  // the autopilot's target alone: the hand-worked S-curve
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, exact);
   const StepEvent& e = f.events[1];
   ASSERT_NEAR(e.completed_s - e.reached_s, 3.0, 0.02);
   EXPECT_LT(minSpeedBetween(f, e.reached_s, e.completed_s), 1e-6);
   // A stop-to-stop 100 m leg at 10 m/s: 2 x 6.8 s + (100 - 68) / 10 = 16.8 s after the take-off.
   EXPECT_NEAR(e.reached_s - f.events[0].reached_s, 16.8, 0.05);
+}
+
+// The vehicle chasing the target: it lags, the autopilot slows its S-curve clock, the leg takes
+// longer than the target's 16.8 s, and during the hold the vehicle settles on the waypoint.
+TEST(ArduCopterSCurve, TrackingVehicleLagsThenSettlesDuringTheHold) {
+  const Mission m = localMission({{100, 0, 10}, {100, 100, 10}}, 3.0);
+  FlightSettings fs;
+  fs.airframe.drag_quadratic_per_m = 0.03;
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, fs);
+  const StepEvent& e = f.events[1];
+  const double leg = e.reached_s - f.events[0].reached_s;
+  EXPECT_GT(leg, 16.9);
+  EXPECT_LT(leg, 19.0);
+  const FlightSample* end = nullptr;
+  for (const auto& s : f.samples)
+    if (s.t <= e.completed_s) end = &s;
+  ASSERT_NE(end, nullptr);
+  EXPECT_LT(end->velocity.norm(), 0.2);
+  EXPECT_LT((end->position - Eigen::Vector3d(100, 0, 10)).norm(), 0.3);
+}
+
+// At the lean limit the drag caps the speed: g tan(ANGLE_MAX 30 deg) = c2 v^2 gives 9.91 m/s for
+// c2 = 0.0576 1/m, below the 15 m/s asked for.
+TEST(ArduCopterSCurve, LeanLimitAndDragCapTheSpeed) {
+  const Mission m = localMission({{600, 0, 10}});
+  AutopilotConfig ap;
+  ap.parameters["WPNAV_SPEED"] = 1500;
+  FlightSettings fs;
+  fs.airframe.drag_quadratic_per_m = 0.0576;
+  const FlownMission f = flyMission(sequenceMission(m), ap, fs);
+  double vmax = 0.0;
+  for (const auto& s : f.samples) vmax = std::max(vmax, std::hypot(s.velocity.x(), s.velocity.y()));
+  EXPECT_NEAR(vmax, std::sqrt(9.80665 * std::tan(M_PI / 6.0) / 0.0576), 0.1);
 }
 
 TEST(ArduCopterSCurve, TakeoffClimbsAtWpnavSpeedUpAndLandingEndsOnTheGround) {

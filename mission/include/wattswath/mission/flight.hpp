@@ -76,6 +76,24 @@ struct FlownMission {
   std::vector<std::string> notes;   ///< what the model assumed (e.g. "RTL speed = WPNAV_SPEED")
 };
 
+/// How the airframe follows the autopilot's acceleration commands (used by the ArduCopter S-curve
+/// model, whose position controller it closes the loop with): the horizontal drag deceleration
+/// c1 v + c2 v^2 that the lean angle must overcome (and that, at ANGLE_MAX, caps the speed), and
+/// the lag of the achieved acceleration behind the commanded one (docs/autopilots.md).
+struct Airframe {
+  double drag_linear_per_s = 0.0;     ///< [1/s] c1: rotor (momentum) drag per unit mass and speed
+  double drag_quadratic_per_m = 0.0;  ///< [1/m] c2: body drag 0.5 rho CdA / m
+  /// [s] first-order lag of the achieved acceleration behind the command (the attitude loop:
+  /// ATC_INPUT_TC 0.15 s shaping plus the rate loop; 0.25 s in ArduCopter 4.x SITL logs)
+  double response_s = 0.25;
+  /// false: the vehicle is taken to be exactly on the autopilot's target (no tracking error)
+  bool track = true;
+};
+
+/// The airframe of a vehicle: its body drag 0.5 rho CdA / m from the energy model's drag area,
+/// no rotor drag term (the energy model has none), the default response time.
+Airframe airframeOf(double drag_area_m2, double mass_kg, double air_density_kgpm3);
+
 /// Settings of the simulation.
 struct FlightSettings {
   double dt = 0.01;         ///< [s] simulation step (the autopilots run at 100-400 Hz); 0.001..0.05
@@ -91,6 +109,7 @@ struct FlightSettings {
   /// Apply each DO_CHANGE_SPEED one waypoint later than AP_Mission's order says (to the leg after
   /// the one it precedes): what the IRIS+ ArduCopter 3.x logs show (calibration decides)
   bool speed_change_late = false;
+  Airframe airframe;  ///< how the vehicle follows its autopilot (S-curve model)
 };
 
 /// Flies `steps` with the behaviour model of `autopilot`. Throws std::invalid_argument naming the

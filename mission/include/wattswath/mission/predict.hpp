@@ -20,7 +20,15 @@ namespace wattswath::mission {
 struct PredictSettings {
   FlightSettings flight;           ///< simulation settings of the behaviour model
   double reserve_fraction = 0.25;  ///< [-] share of the usable charge to keep on landing; 0..0.9
+  /// true: flight.airframe is taken from the vehicle (airframeOfVehicle); false: as given
+  bool airframe_from_vehicle = true;
 };
+
+/// The airframe of vehicle `v`: its file's `extensions.airframe` object ({"drag_linear_per_s",
+/// "drag_quadratic_per_m", "response_s"}, as `wattswath vehicle params` identifies them from a log)
+/// where given, else the body drag of its drag area (airframeOf). Throws std::invalid_argument
+/// naming `source` and the field for a value that is not a number in range.
+Airframe airframeOfVehicle(const energy::Vehicle& v, const std::string& source);
 
 /// Energy, time and distance of one part of the flight.
 struct Totals {
