@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "plan_flight.hpp"
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/path_profile.hpp"
@@ -21,6 +22,7 @@
 #include "wattswath/planner/camera.hpp"
 #include "wattswath/planner/coverage.hpp"
 #include "wattswath/planner/margin.hpp"
+#include "wattswath/planner/battery_use.hpp"
 #include "wattswath/planner/mission_from_plan.hpp"
 
 namespace wattswath::apps {
@@ -437,17 +439,28 @@ void runPlan(const PlanOpts& o) {
   ps.spirals = !o.no_spiral;
   const auto model = energy::marinsModel(vehicle);
   const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
-  const auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
-  if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
-  checkFlown(pr, r.plan.flown.path, o.no_fly_margin);
+  auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
 
   pl::MissionOptions mo;
   mo.trigger_distance_m = s.photos ? s.photos->trigger_distance_m : 0.0;
   mo.rotor_count = vehicle.rotor_count;
   mo.fence_margin_m = o.no_fly_margin > 0.0 ? o.no_fly_margin : pl::kDefaultNoFlyMargin;
   mo.no_fly_margin_m = o.no_fly_margin;
-  const auto pm = pl::missionFromPlan(r.plan.flown, pr, frame, s.area.home_alt_m.value_or(frame.origin().alt_m), mo);
+  pl::FlightScoring scoring;
+  scoring.problem = &pr;
+  scoring.frame = &frame;
+  scoring.home_altitude_amsl_m = s.area.home_alt_m.value_or(frame.origin().alt_m);
+  scoring.mission = mo;
+  scoring.vehicle = &vehicle;
+  std::vector<std::string> flight_notes;
+  progress("plan: flying the finalists' missions with the vehicle's autopilot model");
+  const PlanFlight flight = flyFinalists(r, scoring, o.vehicle, flight_notes);
+  if (vehicle.battery) r.battery = pl::predictBatteryUse(r.plan.flown, *vehicle.battery);
+  if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
+  checkFlown(pr, r.plan.flown.path, o.no_fly_margin);
+  const auto& pm = flight.mission;
   std::vector<std::string> notes = s.notes;
+  notes.insert(notes.end(), flight_notes.begin(), flight_notes.end());
   notes.insert(notes.end(), r.notes.begin(), r.notes.end());
   notes.insert(notes.end(), pm.notes.begin(), pm.notes.end());
   geo::PathGeoJsonOptions go;
@@ -479,11 +492,13 @@ void runPlan(const PlanOpts& o) {
     auto j = planJsonOf(r, pr, o, dir, notes);
     j["coverage_outside_zones_pct"] = whole_area_pct;
     j["mission"] = missionJson(s, pm, o.no_fly_margin, photo_pct);
+    j["flight"] = flightJson(flight);
     printJson(j);
     return;
   }
   printPlanText(r, whole_area_pct, o.no_fly_margin);
   printMission(s, pm, o.no_fly_margin, photo_pct, energy::marinsHoverPowerW(vehicle));
+  printFlight(flight);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
   std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
 }

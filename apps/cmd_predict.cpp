@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "prediction_setup.hpp"
 #include "report_data.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
@@ -145,22 +146,14 @@ void registerPredictCommand(CLI::App& app) {
     if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, {o->mission, o->vehicle});
     checkReportWritable(o->report, o->report_svg, o->force, {o->mission, o->vehicle, o->samples_out});
     const en::Vehicle v = en::loadVehicle(o->vehicle);
-    const auto calibrated = wattswath::calibration::calibratedModel(v);
-    const bool use_calibration = calibrated && o->effects.empty();
-    const en::EnergyModel model =
-        use_calibration ? calibrated->model
-                        : en::buildModel(v, en::splitEffectList(o->effects.empty() ? "hover,kinetic,parasitic_drag" : o->effects));
-    const ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, o->vehicle);
+    const PredictionSetup setup = predictionSetup(v, o->vehicle, o->effects, o->reserve_pct);
+    const en::EnergyModel& model = setup.model;
+    const bool use_calibration = setup.calibrated;
+    const ms::AutopilotConfig& ap = setup.autopilot;
     ms::ReadOptions ro;
     ro.lenient = o->lenient;
     const ms::Mission m = ms::readMission(o->mission, ro);
-    ms::PredictSettings ps;
-    ps.reserve_fraction = o->reserve_pct / 100.0;
-    if (use_calibration && calibrated->takeoff_delay_s >= 0.0) ps.flight.takeoff_delay_s = calibrated->takeoff_delay_s;
-    if (use_calibration) {
-      ps.flight.stop_at_waypoints = calibrated->stop_at_waypoints;
-      ps.flight.speed_change_late = calibrated->speed_change_late;
-    }
+    const ms::PredictSettings& ps = setup.settings;
     const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, ps);
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
     if (!o->report.empty() || !o->report_svg.empty()) {

@@ -1,0 +1,88 @@
+// `plan`'s finalists flown by the vehicle's autopilot model (plan_flight.hpp).
+#include "plan_flight.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "prediction_setup.hpp"
+
+namespace wattswath::apps {
+namespace {
+
+std::string minSec(double s) {
+  char buf[32];
+  const long t = std::lround(s);
+  std::snprintf(buf, sizeof buf, "%ld:%02ld", t / 60, t % 60);
+  return buf;
+}
+
+std::string kj(double j) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f kJ", j / 1000.0);
+  return buf;
+}
+
+}  // namespace
+
+PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, const std::string& vehicle_path,
+                        std::vector<std::string>& notes) {
+  const PredictionSetup setup = predictionSetup(*scoring.vehicle, vehicle_path, "", 25.0);
+  scoring.model = &setup.model;
+  scoring.autopilot = setup.autopilot;
+  scoring.settings = setup.settings;
+  std::vector<std::pair<std::string, const planner::PlanCandidate*>> cands = {{"plan", &r.plan}};
+  if (r.per_cell && r.per_cell->valid) cands.push_back({"per-cell", &*r.per_cell});
+  if (r.best_spiral && r.best_spiral->valid) cands.push_back({"best spiral", &*r.best_spiral});
+  cands.push_back({"shortest path", &r.shortest_path});
+  auto scores = planner::scoreByFlight(cands, scoring);
+  PlanFlight f;
+  for (const auto& s : scores) {
+    f.rows.push_back({s.label, s.closed_form_energy_j, s.prediction.total.energy_j, s.prediction.total.time_s,
+                      s.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].energy_j,
+                      s.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].time_s, s.candidate->coverage_pct});
+  }
+  f.chosen = planner::cheapestFlight(scores);
+  f.chosen_by_search = r.plan.pattern;
+  f.autopilot = setup.autopilot.firmware + " " + setup.autopilot.version + " (" + mission::toString(setup.autopilot.family) +
+                " model" + (setup.autopilot.from_file ? "" : ", firmware defaults") + (setup.calibrated ? ", calibrated" : "") + ")";
+  const auto& best = scores[f.chosen];
+  if (best.label != "plan") {
+    notes.push_back("flight model: the " + best.label + " candidate flies cheaper than the search's choice (" + kj(best.prediction.total.energy_j) +
+                    " against " + kj(scores[0].prediction.total.energy_j) + " take-off to landing as " + f.autopilot +
+                    " flies them); it is the plan written");
+    const planner::PlanCandidate chosen = *best.candidate;
+    r.plan = chosen;
+  }
+  f.mission = best.mission;
+  f.prediction = best.prediction;
+  return f;
+}
+
+void printFlight(const PlanFlight& f) {
+  const auto& p = f.prediction;
+  const auto& m = p.phases[static_cast<int>(mission::FlightPhase::Mission)];
+  std::cout << "flown by " << f.autopilot << ": " << kj(p.total.energy_j) << ", " << minSec(p.total.time_s)
+            << " min:s from take-off to landing (survey part " << kj(m.energy_j) << ", " << minSec(m.time_s)
+            << "); `wattswath predict` on mission.plan gives these numbers\n";
+  std::cout << "finalists as flown:";
+  for (std::size_t i = 0; i < f.rows.size(); ++i)
+    std::cout << (i ? "; " : " ") << f.rows[i].label << " " << kj(f.rows[i].energy_j) << (i == f.chosen ? " (written)" : "");
+  std::cout << "\n";
+}
+
+nlohmann::json flightJson(const PlanFlight& f) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : f.rows)
+    rows.push_back({{"label", r.label}, {"closed_form_energy_j", r.closed_form_j}, {"energy_j", r.energy_j}, {"time_s", r.time_s},
+                    {"mission_energy_j", r.mission_energy_j}, {"mission_time_s", r.mission_time_s}, {"coverage_pct", r.coverage_pct}});
+  const auto& p = f.prediction;
+  nlohmann::json phases = nlohmann::json::object();
+  for (int i = 0; i < mission::kFlightPhaseCount; ++i)
+    phases[mission::toString(static_cast<mission::FlightPhase>(i))] = {{"energy_j", p.phases[i].energy_j}, {"time_s", p.phases[i].time_s},
+                                                                       {"distance_m", p.phases[i].distance_m}};
+  return {{"autopilot", f.autopilot}, {"energy_j", p.total.energy_j}, {"time_s", p.total.time_s},
+          {"distance_m", p.total.distance_m}, {"phases", phases}, {"written", f.rows[f.chosen].label}, {"finalists", rows}};
+}
+
+}  // namespace wattswath::apps

@@ -1,0 +1,26 @@
+#pragma once
+// How `predict` and `plan` fly a mission for a vehicle file: the energy model (the file's
+// calibration when it has one and no --effects is given, else the listed effects), its autopilot
+// and the calibrated flight behaviour. One place, so plan and predict agree.
+#include <string>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/mission/predict.hpp"
+
+namespace wattswath::apps {
+
+/// The model, autopilot and settings a prediction for a vehicle uses.
+struct PredictionSetup {
+  energy::EnergyModel model;            ///< calibrated or built from the effects
+  mission::AutopilotConfig autopilot;   ///< the vehicle file's `autopilot` (or firmware defaults)
+  mission::PredictSettings settings;    ///< take-off delay and behaviour from the calibration
+  bool calibrated = false;              ///< true when the file's calibration is used
+};
+
+/// The prediction setup of vehicle `v` read from `vehicle_path`; `effects` (comma list, empty: the
+/// calibration or "hover,kinetic,parasitic_drag"); `reserve_pct` [%] the landing reserve.
+PredictionSetup predictionSetup(const energy::Vehicle& v, const std::string& vehicle_path, const std::string& effects,
+                                double reserve_pct);
+
+}  // namespace wattswath::apps

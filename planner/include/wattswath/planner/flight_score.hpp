@@ -1,0 +1,51 @@
+#pragma once
+/// @file flight_score.hpp
+/// One flight model for planning and prediction: the planner's finalists written as the missions
+/// the autopilot is told (missionFromPlan, then the `.plan` text `predict` would read) and flown
+/// by the vehicle's autopilot model (mission/predict.hpp), so the plan's reported energy and time
+/// are what `wattswath predict` gives for the mission it writes, and the finalist the autopilot
+/// flies cheapest is the one chosen. The search itself keeps the fast closed forms.
+
+#include <string>
+#include <vector>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/frame.hpp"
+#include "wattswath/mission/predict.hpp"
+#include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/mission_from_plan.hpp"
+
+namespace wattswath::planner {
+
+/// What the flight model needs besides the candidate.
+struct FlightScoring {
+  const SurveyProblem* problem = nullptr;            ///< the problem the candidates cover
+  const geometry::LocalFrame* frame = nullptr;       ///< the area's local frame
+  double home_altitude_amsl_m = 0.0;                 ///< [m] home above mean sea level
+  MissionOptions mission;                            ///< how missions are written
+  const energy::Vehicle* vehicle = nullptr;          ///< the vehicle
+  const energy::EnergyModel* model = nullptr;        ///< the energy model predict uses
+  mission::AutopilotConfig autopilot;                ///< the vehicle's autopilot
+  mission::PredictSettings settings;                 ///< as predict sets them (calibrated behaviour)
+};
+
+/// One candidate flown by the autopilot model.
+struct FlightScore {
+  std::string label;                      ///< "plan", "per-cell", "shortest path", "best spiral", ...
+  const PlanCandidate* candidate = nullptr;  ///< the candidate scored (not owned)
+  double closed_form_energy_j = 0.0;      ///< [J] the search's closed-form energy of the coverage route
+  PlanMission mission;                    ///< the mission written for it
+  mission::MissionPrediction prediction;  ///< its flight, take-off to landing
+};
+
+/// Flies each labelled candidate's mission (in order). Throws what missionFromPlan, parseQgcPlan
+/// and predictMission throw.
+std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,
+                                       const FlightScoring& scoring);
+
+/// Index of the cheapest flight among those whose coverage is at least the first's (the search's
+/// choice) less `coverage_slack_pct` [%], so a cheaper flight never buys its saving with coverage.
+std::size_t cheapestFlight(const std::vector<FlightScore>& scores, double coverage_slack_pct = 0.1);
+
+}  // namespace wattswath::planner

@@ -1,0 +1,47 @@
+// The planner's finalists flown by the autopilot model (flight_score.hpp).
+#include "wattswath/planner/flight_score.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "wattswath/mission/files.hpp"
+#include "wattswath/mission/planned_mission.hpp"
+
+namespace wattswath::planner {
+
+std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,
+                                       const FlightScoring& s) {
+  if (!s.problem || !s.frame || !s.vehicle || !s.model) throw std::invalid_argument("scoreByFlight: FlightScoring is incomplete");
+  std::vector<FlightScore> out;
+  for (const auto& [label, c] : candidates) {
+    if (!c || !c->valid) continue;
+    FlightScore f;
+    f.label = label;
+    f.candidate = c;
+    f.closed_form_energy_j = c->flown.energy;
+    f.mission = missionFromPlan(c->flown, *s.problem, *s.frame, s.home_altitude_amsl_m, s.mission);
+    // The very text `wattswath predict mission.plan` reads.
+    const mission::Mission m = mission::parseQgcPlan(mission::toQgcPlan(f.mission.mission), label + " mission.plan");
+    f.prediction = mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+std::size_t cheapestFlight(const std::vector<FlightScore>& scores, double coverage_slack_pct) {
+  if (scores.empty()) throw std::invalid_argument("cheapestFlight: no flight scored");
+  const double best_cov = scores.front().candidate->coverage_pct;  // the search's choice
+  std::size_t best = scores.size();
+  double best_e = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    if (scores[i].candidate->coverage_pct < best_cov - coverage_slack_pct) continue;
+    if (scores[i].prediction.total.energy_j < best_e) {
+      best_e = scores[i].prediction.total.energy_j;
+      best = i;
+    }
+  }
+  return best;
+}
+
+}  // namespace wattswath::planner
