@@ -41,7 +41,7 @@ TEST(CliEndurance, BadInputGivesClearErrors) {
   EXPECT_NE(r.output.find("--speed '5:1:1'"), std::string::npos) << r.output;
   r = run(cliBinary() + " endurance --vehicle " + v + " --battery 2X 2>&1");
   EXPECT_NE(r.output.find("'2X'"), std::string::npos) << r.output;
-  r = run(cliBinary() + " endurance --vehicle " + sourcePath("data/vehicles/iris.json") + " 2>&1");
+  r = run(cliBinary() + " endurance --vehicle " + sourcePath("tests/data/iris-no-battery.json") + " 2>&1");
   EXPECT_NE(r.output.find("no 'battery'"), std::string::npos) << r.output;
 }
 

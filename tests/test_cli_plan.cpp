@@ -297,10 +297,11 @@ TEST(CliPlan, BatteryWhenTheVehicleHasOne) {
   EXPECT_EQ(b.at("fits").get<bool>(), b.at("warning").is_null());
   // A hexacopter is written as one (MAV_TYPE_HEXAROTOR), not as a quadrotor.
   EXPECT_EQ(nlohmann::json::parse(slurp(out + "/mission.plan")).at("mission").at("vehicleType"), 13);
-  // The IRIS vehicle file has no battery: null, not a guess.
-  EXPECT_TRUE(planJson(sourcePath("data/areas/espiral_rectangle.geojson"), outDir("battery2"), "--spacing 30")
-                  .at("battery")
-                  .is_null());
+  // A vehicle file without a battery: null, not a guess.
+  const auto rb = run(cliBinary() + " plan " + sourcePath("data/areas/espiral_rectangle.geojson") + " --vehicle " +
+                      sourcePath("tests/data/iris-no-battery.json") + " --out " + outDir("battery2") + " --spacing 30 --json 2>/dev/null");
+  ASSERT_EQ(rb.status, 0) << rb.output;
+  EXPECT_TRUE(nlohmann::json::parse(rb.output).at("battery").is_null());
 }
 
 // One flight model for planning and prediction (issue 17): `predict` on the mission.plan and the

@@ -46,7 +46,7 @@ TEST(CliPredict, SurveyPlanGivesTheJsonContractAndABatteryVerdict) {
 
 TEST(CliPredict, VehicleWithoutBatterySaysSoInsteadOfANumber) {
   const json j = runJson("predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
-                         sourcePath("data/vehicles/iris.json") + " --json");
+                         sourcePath("tests/data/iris-no-battery.json") + " --json");
   EXPECT_FALSE(j["battery"]["known"].get<bool>());
   EXPECT_FALSE(j["battery"].contains("usable_left_at_landing"));
   EXPECT_EQ(j["autopilot"]["model"], "arducopter-scurve");  // no autopilot object: ArduCopter 4.x defaults
