@@ -1,6 +1,7 @@
 // `plan`'s finalists flown by the vehicle's autopilot model (plan_flight.hpp).
 #include "plan_flight.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -47,13 +48,20 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   f.autopilot = setup.autopilot.firmware + " " + setup.autopilot.version + " (" + mission::toString(setup.autopilot.family) +
                 " model" + (setup.autopilot.from_file ? "" : ", firmware defaults") + (setup.calibrated ? ", calibrated" : "") + ")";
   const auto& best = scores[f.chosen];
-  if (best.label != "plan") {
+  double search_best = 1e300;
+  for (const auto& s : scores)
+    if (s.candidate == &r.plan) search_best = std::min(search_best, s.prediction.total.energy_j);
+  if (best.candidate != &r.plan) {
     notes.push_back("flight model: the " + best.label + " candidate flies cheaper than the search's choice (" + kj(best.prediction.total.energy_j) +
-                    " against " + kj(scores[0].prediction.total.energy_j) + " take-off to landing as " + f.autopilot +
+                    " against " + kj(search_best) + " take-off to landing as " + f.autopilot +
                     " flies them); it is the plan written");
     const planner::PlanCandidate chosen = *best.candidate;
     r.plan = chosen;
   }
+  f.arc_waypoints = best.arc_waypoints;
+  for (const auto& l : best.candidate->flown.path.legs)
+    if (l.kind == geometry::PrimitiveKind::Arc)
+      f.max_chord_offset_m = std::max(f.max_chord_offset_m, l.radius * (1.0 - std::cos(0.5 * std::abs(l.turn_angle))));
   f.mission = best.mission;
   f.prediction = best.prediction;
   return f;
@@ -65,6 +73,13 @@ void printFlight(const PlanFlight& f) {
   std::cout << "flown by " << f.autopilot << ": " << kj(p.total.energy_j) << ", " << minSec(p.total.time_s)
             << " min:s from take-off to landing (survey part " << kj(m.energy_j) << ", " << minSec(m.time_s)
             << "); `wattswath predict` on mission.plan gives these numbers\n";
+  if (f.max_chord_offset_m > 0.0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, f.arc_waypoints ? "arcs: written as waypoints along them (every chord within %.1f m of the arc)\n"
+                                                   : "arcs: one waypoint at each end, flown by the autopilot's own cornering (the chord passes up to %.1f m inside the planned arc; the no-fly margin holds)\n",
+                  f.arc_waypoints ? 0.5 : f.max_chord_offset_m);
+    std::cout << buf;
+  }
   std::cout << "finalists as flown:";
   for (std::size_t i = 0; i < f.rows.size(); ++i)
     std::cout << (i ? "; " : " ") << f.rows[i].label << " " << kj(f.rows[i].energy_j) << (i == f.chosen ? " (written)" : "");
@@ -82,7 +97,10 @@ nlohmann::json flightJson(const PlanFlight& f) {
     phases[mission::toString(static_cast<mission::FlightPhase>(i))] = {{"energy_j", p.phases[i].energy_j}, {"time_s", p.phases[i].time_s},
                                                                        {"distance_m", p.phases[i].distance_m}};
   return {{"autopilot", f.autopilot}, {"energy_j", p.total.energy_j}, {"time_s", p.total.time_s},
-          {"distance_m", p.total.distance_m}, {"phases", phases}, {"written", f.rows[f.chosen].label}, {"finalists", rows}};
+          {"distance_m", p.total.distance_m}, {"phases", phases}, {"written", f.rows[f.chosen].label},
+          {"arcs", f.arc_waypoints ? "waypoints along each arc (within 0.5 m)" : "chords flown by the autopilot's cornering"},
+          {"max_chord_offset_m", f.arc_waypoints ? std::min(0.5, f.max_chord_offset_m) : f.max_chord_offset_m},
+          {"finalists", rows}};
 }
 
 }  // namespace wattswath::apps

@@ -29,6 +29,8 @@ struct PlanFlight {
   std::size_t chosen = 0;              ///< index of the flight written
   std::string chosen_by_search;        ///< what the closed-form search chose ("plan" row's pattern)
   planner::PlanMission mission;        ///< the mission of the chosen flight
+  bool arc_waypoints = false;          ///< its arcs written as waypoints along them (else chords)
+  double max_chord_offset_m = 0.0;     ///< [m] largest arc-to-chord distance of the chosen candidate's arcs
   mission::MissionPrediction prediction;  ///< its flight
   std::string autopilot;               ///< "ArduCopter 4.5 (arducopter-scurve model, ...)"
 };

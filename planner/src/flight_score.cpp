@@ -16,15 +16,25 @@ std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, 
   std::vector<FlightScore> out;
   for (const auto& [label, c] : candidates) {
     if (!c || !c->valid) continue;
-    FlightScore f;
-    f.label = label;
-    f.candidate = c;
-    f.closed_form_energy_j = c->flown.energy;
-    f.mission = missionFromPlan(c->flown, *s.problem, *s.frame, s.home_altitude_amsl_m, s.mission);
-    // The very text `wattswath predict mission.plan` reads.
-    const mission::Mission m = mission::parseQgcPlan(mission::toQgcPlan(f.mission.mission), label + " mission.plan");
-    f.prediction = mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
-    out.push_back(std::move(f));
+    const bool has_arcs = std::any_of(c->flown.path.legs.begin(), c->flown.path.legs.end(),
+                                      [](const geometry::PathLeg& l) { return l.kind == geometry::PrimitiveKind::Arc; });
+    for (const bool arc_waypoints : {false, true}) {
+      if (arc_waypoints && !has_arcs) continue;  // the same mission
+      FlightScore f;
+      f.label = has_arcs ? label + (arc_waypoints ? " (arcs as waypoints)" : " (arcs as chords)") : label;
+      f.candidate = c;
+      f.arc_waypoints = arc_waypoints;
+      f.closed_form_energy_j = c->flown.energy;
+      MissionOptions mo = s.mission;
+      mo.arc_waypoints = arc_waypoints;
+      f.mission = missionFromPlan(c->flown, *s.problem, *s.frame, s.home_altitude_amsl_m, mo);
+      // A chord that comes within the no-fly margin is not offered (the waypoints along the arc are).
+      if (!arc_waypoints && has_arcs && f.mission.legs_within_margin > 0) continue;
+      // The very text `wattswath predict mission.plan` reads.
+      const mission::Mission m = mission::parseQgcPlan(mission::toQgcPlan(f.mission.mission), label + " mission.plan");
+      f.prediction = mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+      out.push_back(std::move(f));
+    }
   }
   return out;
 }

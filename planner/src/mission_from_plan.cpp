@@ -94,6 +94,22 @@ struct Builder {
   }
 };
 
+/// The points strictly inside arc `leg` at which it is cut into chords that each stay within
+/// kArcChordSagitta of the arc (none when the whole chord does).
+std::vector<geo::Point> arcWaypoints(const geo::PathLeg& leg) {
+  const double r = leg.radius, turn = std::abs(leg.turn_angle);
+  if (!(r > kArcChordSagitta) || !(turn > 0.0)) return {};
+  const double max_step = 2.0 * std::acos(1.0 - kArcChordSagitta / r);  // [rad] chord angle at the sagitta
+  const int n = static_cast<int>(std::ceil(turn / max_step - 1e-9));
+  std::vector<geo::Point> out;
+  const geo::Point v0 = leg.start - leg.center;
+  for (int k = 1; k < n; ++k) {
+    const double a = leg.turn_angle * k / n;
+    out.push_back(leg.center + geo::Point(std::cos(a) * v0.x() - std::sin(a) * v0.y(), std::sin(a) * v0.x() + std::cos(a) * v0.y()));
+  }
+  return out;
+}
+
 /// Camera runs, their length and photos as the written commands make them: from a waypoint that
 /// switches the camera on to the next that switches it off, along the flown legs between them.
 void countPhotos(const FlownPath& flown, double trigger_m, MissionWaypoints& out) {
@@ -160,6 +176,10 @@ MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& 
         b.out.waypoints.back().camera_trigger_m = 0.0;
       }
       camera_on = sweep;
+    }
+    if (options.arc_waypoints && leg.kind == geo::PrimitiveKind::Arc) {  // densified: every chord within kArcChordSagitta of the arc
+      for (const auto& p : arcWaypoints(leg))
+        if (b.out.waypoints.empty() || (p - b.out.waypoints.back().position).norm() >= kMinWaypointSpacing) b.add(p, planned, -1);
     }
     const bool merged = !b.out.waypoints.empty() && (leg.end - b.out.waypoints.back().position).norm() < kMinWaypointSpacing;
     if (leg.kind != geo::PrimitiveKind::TurnInPlace && !merged) b.add(leg.end, planned, static_cast<int>(i));

@@ -145,3 +145,29 @@ TEST(MissionFromPlan, ReferenceAreaMissionsKeepTheRules) {
     }
   }
 }
+
+// An arc written as waypoints along it: every chord within kArcChordSagitta of the arc; as
+// chords (the default) one waypoint at its end, the autopilot's cornering doing the rest.
+TEST(MissionFromPlan, ArcsAsWaypointsKeepEveryChordWithinTheSagitta) {
+  geometry::PathLeg arc;
+  arc.kind = geometry::PrimitiveKind::Arc;
+  arc.role = LegRole::Turn;
+  arc.center = {100, 7.5};
+  arc.radius = 7.5;
+  arc.start = {100, 0};
+  arc.end = {100, 15};
+  arc.turn_angle = M_PI;  // a U-turn of 7.5 m radius: a single chord would pass 7.5 m inside it
+  const auto f = flown({line({0, 0}, {100, 0}), arc, line({100, 15}, {0, 15})}, {8.0, 3.0, 8.0});
+  MissionOptions o;
+  EXPECT_EQ(missionWaypoints(f, o).waypoints.size(), 3u);
+  o.arc_waypoints = true;
+  const auto m = missionWaypoints(f, o);
+  ASSERT_GT(m.waypoints.size(), 4u);
+  for (size_t k = 1; k < m.waypoints.size(); ++k) {
+    const geometry::Point a = m.waypoints[k - 1].position, b = m.waypoints[k].position;
+    if ((a - arc.center).norm() > arc.radius + 1e-6 || (b - arc.center).norm() > arc.radius + 1e-6) continue;  // sweep legs
+    EXPECT_NEAR((a - arc.center).norm(), arc.radius, 1e-6);
+    EXPECT_LE(arc.radius - (0.5 * (a + b) - arc.center).norm(), kArcChordSagitta + 1e-9) << "chord " << k;
+    EXPECT_GE((b - a).norm(), kMinWaypointSpacing);
+  }
+}

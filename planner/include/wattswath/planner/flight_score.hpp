@@ -34,13 +34,16 @@ struct FlightScoring {
 struct FlightScore {
   std::string label;                      ///< "plan", "per-cell", "shortest path", "best spiral", ...
   const PlanCandidate* candidate = nullptr;  ///< the candidate scored (not owned)
+  bool arc_waypoints = false;             ///< how its arcs are written (MissionOptions::arc_waypoints)
   double closed_form_energy_j = 0.0;      ///< [J] the search's closed-form energy of the coverage route
   PlanMission mission;                    ///< the mission written for it
   mission::MissionPrediction prediction;  ///< its flight, take-off to landing
 };
 
-/// Flies each labelled candidate's mission (in order). Throws what missionFromPlan, parseQgcPlan
-/// and predictMission throw.
+/// Flies each labelled candidate's mission (in order); a candidate with arcs twice: its arcs as
+/// chords flown by the autopilot's own cornering (unless a chord comes within the no-fly margin)
+/// and as waypoints along them (MissionOptions::arc_waypoints). Throws what missionFromPlan,
+/// parseQgcPlan and predictMission throw.
 std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,
                                        const FlightScoring& scoring);
 

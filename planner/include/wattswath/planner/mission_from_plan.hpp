@@ -21,6 +21,12 @@ namespace wattswath::planner {
 /// becoming one, so no waypoint pair is degenerate; every leg end stays within this of a waypoint.
 inline constexpr double kMinWaypointSpacing = 0.5;
 
+/// [m] Largest distance between a planned arc and the straight legs the mission flies instead when
+/// arcs are written as waypoints (MissionOptions::arc_waypoints): as many as keep every chord within this of the arc
+/// (ArduCopter and PX4 fly straight legs between waypoints; a chord of a whole 90 degree arc of
+/// 15 m radius would pass 4.4 m inside it).
+inline constexpr double kArcChordSagitta = 0.5;
+
 /// [m/s] A waypoint gets a new speed command (DO_CHANGE_SPEED) only when its leg's speed differs
 /// from the speed in force by more than this; smaller changes keep the speed in force.
 inline constexpr double kSpeedChangeTolerance = 0.05;
@@ -46,6 +52,9 @@ struct MissionOptions {
   int rotor_count = 4;                    ///< [-] the vehicle's rotors, for the .plan's vehicleType
   double fence_margin_m = 0.0;            ///< [m] inclusion fence keeping every flown point this far inside it
                                           ///< (0: no inclusion fence), >= 0
+  bool arc_waypoints = false;             ///< true: arcs written as waypoints along them (kArcChordSagitta);
+                                          ///< false: an arc is one waypoint at its end, flown by the autopilot's
+                                          ///< own cornering along the chord
   double no_fly_margin_m = 0.0;           ///< [m] margin the straight legs between waypoints are checked
                                           ///< against (0: not checked), >= 0
 };
