@@ -44,6 +44,12 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
                       s.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].time_s, s.candidate->coverage_pct});
   }
   f.chosen = planner::cheapestFlight(scores);
+  // The ground-station default flown too, as a baseline (never written).
+  for (const auto& g : planner::scoreByFlight({{"ground-station default", &r.ground_station_default}}, scoring)) {
+    f.rows.push_back({g.label, g.closed_form_energy_j, g.prediction.total.energy_j, g.prediction.total.time_s,
+                      g.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].energy_j,
+                      g.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].time_s, g.candidate->coverage_pct, true});
+  }
   f.chosen_by_search = r.plan.pattern;
   f.autopilot = setup.autopilot.firmware + " " + setup.autopilot.version + " (" + mission::toString(setup.autopilot.family) +
                 " model" + (setup.autopilot.from_file ? "" : ", firmware defaults") + (setup.calibrated ? ", calibrated" : "") + ")";
@@ -82,14 +88,15 @@ void printFlight(const PlanFlight& f) {
   }
   std::cout << "finalists as flown:";
   for (std::size_t i = 0; i < f.rows.size(); ++i)
-    std::cout << (i ? "; " : " ") << f.rows[i].label << " " << kj(f.rows[i].energy_j) << (i == f.chosen ? " (written)" : "");
+    std::cout << (i ? "; " : " ") << f.rows[i].label << " " << kj(f.rows[i].energy_j)
+              << (i == f.chosen ? " (written)" : f.rows[i].baseline ? " (baseline)" : "");
   std::cout << "\n";
 }
 
 nlohmann::json flightJson(const PlanFlight& f) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& r : f.rows)
-    rows.push_back({{"label", r.label}, {"closed_form_energy_j", r.closed_form_j}, {"energy_j", r.energy_j}, {"time_s", r.time_s},
+    rows.push_back({{"label", r.label}, {"baseline", r.baseline}, {"closed_form_energy_j", r.closed_form_j}, {"energy_j", r.energy_j}, {"time_s", r.time_s},
                     {"mission_energy_j", r.mission_energy_j}, {"mission_time_s", r.mission_time_s}, {"coverage_pct", r.coverage_pct}});
   const auto& p = f.prediction;
   nlohmann::json phases = nlohmann::json::object();

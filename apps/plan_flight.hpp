@@ -21,6 +21,7 @@ struct FlightRow {
   double mission_energy_j = 0.0; ///< [J] the mission phase only
   double mission_time_s = 0.0;   ///< [s] the mission phase only
   double coverage_pct = 0.0;     ///< [%] coverage of the candidate
+  bool baseline = false;         ///< flown for comparison only (the ground-station default), never written
 };
 
 /// The finalists flown and the choice.

@@ -31,9 +31,9 @@ CASES = [
      for name in ("rectangle", "rectangle02", "area01", "polygon", "spiral_concave", "spiral_polygon")]
 
 
-def plan(area, extra, no_spiral=False):
+def plan(area, extra, no_spiral=False, vehicle=IRIS):
     with tempfile.TemporaryDirectory() as out:
-        cmd = [CLI, "plan", area, "--vehicle", IRIS, "--out", out, "--no-report", "--json"] + extra
+        cmd = [CLI, "plan", area, "--vehicle", vehicle, "--out", out, "--no-report", "--json"] + extra
         if no_spiral:
             cmd.append("--no-spiral")
         t0 = time.monotonic()
@@ -42,6 +42,31 @@ def plan(area, extra, no_spiral=False):
         if res.returncode != 0:
             sys.exit("plan failed for %s:\n%s" % (area, res.stderr))
         return json.loads(res.stdout), wall
+
+
+def px4_vehicle(folder):
+    """The IRIS vehicle flown by PX4 1.15 with its documented defaults (an `autopilot` object)."""
+    with open(IRIS) as f:
+        v = json.load(f)
+    v["autopilot"] = {"firmware": "PX4", "version": "1.15"}
+    path = os.path.join(folder, "iris-px4.json")
+    with open(path, "w") as f:
+        json.dump(v, f, indent=2)
+    return path
+
+
+def flown_row(label, j):
+    """One row of the autopilot table: the written flight and the savings against the flown baselines."""
+    fl = j["flight"]
+    def best(prefix):
+        es = [r["energy_j"] for r in fl["finalists"] if r["label"].startswith(prefix)]
+        return min(es) if es else None
+    e = fl["energy_j"]
+    def pct(b):
+        return "-" if b is None else "%.1f" % (100.0 * (b - e) / b)
+    t = fl["time_s"]
+    return "| %s | %s | %.1f | %d:%02d | %s | %s |" % (label, fl["written"], e / 1000, int(t) // 60, int(round(t)) % 60,
+                                                   pct(best("shortest path")), pct(best("ground-station default")))
 
 
 def saving(base, plan_e):
@@ -54,7 +79,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "plans.md"))
     args = ap.parse_args()
-    rows, lines_rows = [], []
+    rows, lines_rows, ac_rows, px4_rows = [], [], [], []
+    tmp = tempfile.TemporaryDirectory()
+    px4 = px4_vehicle(tmp.name)
     for label, area, extra in CASES:
         if not os.path.exists(area):
             sys.exit("missing %s (../shared/data beside the checkout?)" % area)
@@ -71,6 +98,8 @@ def main():
             label, pattern, j["energy_j"] / 1000, j["coverage_pct"], j["time_s"], j["length_m"],
             saving(b["shortest_path"], j["energy_j"]), saving(b["ground_station_default"], j["energy_j"]),
             saving(b["best_spiral"], j["energy_j"]), j["energy_j"] / j["lower_bound_j"], wall))
+        ac_rows.append(flown_row(label, j))
+        px4_rows.append(flown_row(label, plan(area, extra, vehicle=px4)[0]))
         lines_rows.append("| %s | %.1f | %.1f | %s |" % (
             label, jl["energy_j"] / 1000, j["energy_j"] / 1000, saving(jl, j["energy_j"])))
     with open(args.out, "w") as f:
@@ -114,6 +143,28 @@ cell order chosen for length), flown with our optimal speeds and corners, so the
 is what the energy objective itself buys. A saving of 0.0 means the energy search and the length
 search found the same route.
 
+## As the autopilot flies them
+
+Since 2026-11-24 (issue 17) `plan` also writes each finalist (the search's choice, the per-cell
+plan, the best spiral, the shortest path; arcs as chords and as waypoints along the arc) as the
+mission the autopilot is told and flies it with the vehicle's autopilot model from take-off to
+landing, exactly as `wattswath predict` does for the written file; the cheapest flight is written.
+The ground-station default is flown too, as a baseline. Energies below are those flights (take-off,
+survey, return, landing), so they are larger than the closed-form coverage energies above, and the
+savings are against the flown baselines (the shortest path's cheaper arc variant).
+
+ArduCopter 4.x firmware defaults (S-curve model; the IRIS vehicle file has no `autopilot` object):
+
+| area | written | flown [kJ] | flown [min:s] | saving vs shortest path [%%] | vs ground-station default [%%] |
+|---|---|---:|---:|---:|---:|
+%s
+
+PX4 1.15 firmware defaults (jerk-limited trajectories, MPC_XY_CRUISE 5 m/s as the default speed):
+
+| area | written | flown [kJ] | flown [min:s] | saving vs shortest path [%%] | vs ground-station default [%%] |
+|---|---|---:|---:|---:|---:|
+%s
+
 ## Straight lines only
 
 `--no-spiral` (straight parallel lines, as photogrammetry often wants) against the full search:
@@ -121,7 +172,7 @@ search found the same route.
 | area | lines only [kJ] | full search [kJ] | what spirals save [%%] |
 |---|---:|---:|---:|
 %s
-""" % (datetime.date.today().isoformat(), "\n".join(rows), "\n".join(lines_rows)))
+""" % (datetime.date.today().isoformat(), "\n".join(rows), "\n".join(ac_rows), "\n".join(px4_rows), "\n".join(lines_rows)))
     print("plan_table: wrote " + args.out, file=sys.stderr)
 
 
