@@ -10,6 +10,7 @@
 
 #include "cli.hpp"
 #include "plan_flight.hpp"
+#include "plan_sorties.hpp"
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/path_profile.hpp"
@@ -39,6 +40,7 @@ struct PlanOpts {
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
   double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
   double no_fly_margin = pl::kDefaultNoFlyMargin;
+  SortieRequest sorties;
   bool force = false, json = false, no_report = false, no_spiral = false;
   std::string report_svg;
 };
@@ -472,6 +474,14 @@ void runPlan(const PlanOpts& o) {
   writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
   writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
+  nlohmann::json sorties;
+  if (!o.sorties.sorties.empty()) {
+    progress("plan: splitting into sorties for the battery (" + o.sorties.sorties + ", reserve " + fixedText(o.sorties.reserve_pct, 0) + " %)");
+    const auto& ph = flight.prediction.phases;
+    const double overhead = ph[static_cast<int>(ms::FlightPhase::Takeoff)].energy_j + ph[static_cast<int>(ms::FlightPhase::Landing)].energy_j;
+    scoring.mission.arc_waypoints = flight.arc_waypoints;
+    sorties = planSorties(r.plan, flight.prediction.total.energy_j, overhead, scoring, o.vehicle, o.sorties, dir);
+  }
   if (!o.no_report || !o.report_svg.empty()) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
     data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
@@ -493,12 +503,14 @@ void runPlan(const PlanOpts& o) {
     j["coverage_outside_zones_pct"] = whole_area_pct;
     j["mission"] = missionJson(s, pm, o.no_fly_margin, photo_pct);
     j["flight"] = flightJson(flight);
+    j["sorties"] = sorties;
     printJson(j);
     return;
   }
   printPlanText(r, whole_area_pct, o.no_fly_margin);
   printMission(s, pm, o.no_fly_margin, photo_pct, energy::marinsHoverPowerW(vehicle));
   printFlight(flight);
+  if (!sorties.is_null()) printSorties(sorties);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
   std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
 }
@@ -528,6 +540,11 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--no-fly-margin", o->no_fly_margin,
                   "distance every flown point keeps from the no-fly zones, for GPS and tracking error [m] (default 2; 0: none)")
       ->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--sorties", o->sorties.sorties,
+                  "split the survey into sorties that each land with the battery reserve: 'auto' (as many as the least "
+                  "total energy needs) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
+  cmd->add_option("--reserve", o->sorties.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
+      ->check(CLI::Range(0.0, 90.0));
   cmd->add_option("--camera-max-speed", o->camera_max_speed, "largest ground speed on sweep legs the camera allows [m/s] (0: none)")
       ->check(CLI::Range(0.0, 200.0));
   cmd->add_option("--corner-strategy", o->corners, "sharp, rounded or auto (cheapest per corner)")

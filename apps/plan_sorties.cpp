@@ -1,0 +1,163 @@
+// `plan --sorties`: the plan split into battery-sized sorties, each checked by the flight model.
+#include "plan_sorties.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <stdexcept>
+
+#include "cli.hpp"
+#include "prediction_setup.hpp"
+#include "wattswath/mission/files.hpp"
+#include "wattswath/mission/planned_mission.hpp"
+#include "wattswath/planner/battery_use.hpp"
+#include "wattswath/planner/sorties.hpp"
+
+namespace wattswath::apps {
+namespace {
+
+namespace pl = wattswath::planner;
+
+struct FlownSortie {
+  pl::Sortie sortie;
+  pl::PlanMission mission;
+  mission::MissionPrediction prediction;
+};
+
+// Every sortie of `split` written and flown; `fits` false when one does not keep the reserve.
+std::vector<FlownSortie> flySorties(const pl::SortieSplit& split, const pl::FlightScoring& s, bool& fits) {
+  std::vector<FlownSortie> out;
+  fits = true;
+  for (const auto& so : split.sorties) {
+    FlownSortie f{so, pl::missionFromPlan(so.flown, *s.problem, *s.frame, s.home_altitude_amsl_m, s.mission), {}};
+    const auto m = mission::parseQgcPlan(mission::toQgcPlan(f.mission.mission), "sortie mission.plan");
+    f.prediction = mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+    fits = fits && f.prediction.battery.fits;
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+double total(const std::vector<FlownSortie>& v) {
+  double e = 0.0;
+  for (const auto& f : v) e += f.prediction.total.energy_j;
+  return e;
+}
+
+int parseCount(const std::string& text) {
+  if (text == "auto") return 0;
+  try {
+    std::size_t used = 0;
+    const int n = std::stoi(text, &used);
+    if (used == text.size() && n >= 1 && n <= 1000) return n;
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument("--sorties '" + text + "': expected 'auto' or a count 1..1000");
+}
+
+std::string name(std::size_t k, const char* ext) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "sortie_%02zu.%s", k + 1, ext);
+  return buf;
+}
+
+}  // namespace
+
+// The split at the largest budget at which every sortie, flown by the autopilot model, lands with
+// the reserve: the usable energy as predict's battery model discharges it (the first split's
+// sorties tell: energy / (1 - usable left)), then the budget shrunk 2 % at a time while one does not.
+std::vector<FlownSortie> splitThatFits(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
+                                       pl::SortieSettings ss, double reserve_pct, bool& fits) {
+  std::vector<FlownSortie> flown;
+  fits = false;
+  bool calibrated = false;
+  for (int attempt = 0; attempt < 30; ++attempt) {
+    if (ss.budget_j <= ss.overhead_j) break;
+    try {
+      flown = flySorties(pl::splitIntoSorties(plan.flown, *scoring.problem, scorer, ss), scoring, fits);
+    } catch (const std::runtime_error&) {
+      if (calibrated) break;  // no split at this budget: none at a smaller one
+      fits = false;
+      return flown;
+    }
+    if (!calibrated) {
+      calibrated = true;
+      std::vector<double> usable_j;
+      for (const auto& f : flown)
+        if (f.prediction.battery.usable_left_end < 0.95) usable_j.push_back(f.prediction.total.energy_j / (1.0 - f.prediction.battery.usable_left_end));
+      if (!usable_j.empty()) {
+        std::nth_element(usable_j.begin(), usable_j.begin() + usable_j.size() / 2, usable_j.end());
+        ss.budget_j = usable_j[usable_j.size() / 2] * (1.0 - reserve_pct / 100.0);
+        continue;
+      }
+    }
+    if (fits) break;
+    ss.budget_j *= 0.98;
+  }
+  return flown;
+}
+
+nlohmann::json planSorties(const pl::PlanCandidate& plan, double single_flight_j, double overhead_j, pl::FlightScoring scoring,
+                           const std::string& vehicle_path, const SortieRequest& req, const std::filesystem::path& dir) {
+  const int count = parseCount(req.sorties);
+  if (!(req.reserve_pct >= 0.0 && req.reserve_pct <= 90.0))
+    throw std::invalid_argument("--reserve " + std::to_string(req.reserve_pct) + ": expected 0..90 %");
+  const auto& v = *scoring.vehicle;
+  if (!v.battery) throw std::runtime_error(vehicle_path + ": --sorties needs the vehicle's battery (a 'battery' object)");
+  const PredictionSetup setup = predictionSetup(v, vehicle_path, "", req.reserve_pct);
+  scoring.model = &setup.model;
+  scoring.autopilot = setup.autopilot;
+  scoring.settings = setup.settings;
+  pl::RouteScorer scorer(setup.model, pl::SpeedSettings::fromVehicle(v));
+  const double usable = pl::predictBatteryUse(plan.flown, *v.battery).usable_energy_j;
+  pl::SortieSettings ss;
+  ss.count = count;
+  ss.overhead_j = overhead_j;
+  ss.budget_j = usable * (1.0 - req.reserve_pct / 100.0);
+  // The closed form against the flight model on the whole plan (take-off and landing apart).
+  if (plan.flown.energy > 0.0) ss.scale = std::clamp((single_flight_j - overhead_j) / plan.flown.energy, 0.5, 2.0);
+  const double budget0 = ss.budget_j;
+  bool fits = false;
+  const std::vector<FlownSortie> flown = splitThatFits(plan, scoring, scorer, ss, req.reserve_pct, fits);
+  if (!fits)
+    throw std::runtime_error("no split into " + (count ? std::to_string(count) : std::string("sorties")) + " lands every sortie with the " +
+                             std::to_string(req.reserve_pct).substr(0, 4) + " % reserve (the battery is too small for a single sweep, or --sorties too few)");
+  pl::SortieSettings naive = ss;
+  naive.naive = true;
+  naive.count = 0;
+  naive.budget_j = budget0;
+  bool naive_fits = false;
+  const auto naive_flown = splitThatFits(plan, scoring, scorer, naive, req.reserve_pct, naive_fits);
+  nlohmann::json list = nlohmann::json::array();
+  for (std::size_t k = 0; k < flown.size(); ++k) {
+    const auto& f = flown[k];
+    writeTextFileAtomic((dir / name(k, "plan")).string(), mission::toQgcPlan(f.mission.mission));
+    writeTextFileAtomic((dir / name(k, "waypoints")).string(), mission::toQgcWpl(f.mission.mission));
+    list.push_back({{"file", name(k, "plan")}, {"energy_j", f.prediction.total.energy_j}, {"time_s", f.prediction.total.time_s},
+                    {"usable_left_pct", 100.0 * f.prediction.battery.usable_left_end}, {"fits", f.prediction.battery.fits},
+                    {"photos", f.mission.photos}, {"first_sweep", f.sortie.first_sweep + 1}, {"last_sweep", f.sortie.last_sweep + 1}});
+  }
+  const double e = total(flown), e_naive = total(naive_flown);
+  nlohmann::json j = {{"count", flown.size()}, {"reserve_pct", req.reserve_pct}, {"total_energy_j", e},
+                      {"single_flight_energy_j", single_flight_j}, {"price_of_splitting_pct", 100.0 * (e / single_flight_j - 1.0)},
+                      {"naive", {{"count", naive_flown.size()}, {"total_energy_j", e_naive}, {"all_fit", naive_fits}}},
+                      {"sorties", list}};
+  return j;
+}
+
+void printSorties(const nlohmann::json& j) {
+  const double e = j["total_energy_j"], one = j["single_flight_energy_j"], en = j["naive"]["total_energy_j"];
+  std::printf("sorties: %d, %.1f kJ flown in all (one flight with an unlimited battery: %.1f kJ, +%.1f %%); naive split: %d sorties, %.1f kJ%s\n",
+              j["count"].get<int>(), e / 1000.0, one / 1000.0, 100.0 * (e / one - 1.0), j["naive"]["count"].get<int>(), en / 1000.0,
+              j["naive"]["all_fit"].get<bool>() ? "" : " (not all keep the reserve)");
+  for (const auto& s : j["sorties"]) {
+    const long t = std::lround(s["time_s"].get<double>());
+    std::printf("  %s: sweeps %d-%d, %.1f kJ, %ld:%02ld min:s, lands with %.0f %% of the usable charge, %d photos\n",
+                s["file"].get<std::string>().c_str(), s["first_sweep"].get<int>(), s["last_sweep"].get<int>(),
+                s["energy_j"].get<double>() / 1000.0, t / 60, t % 60, s["usable_left_pct"].get<double>(), s["photos"].get<int>());
+  }
+}
+
+}  // namespace wattswath::apps
