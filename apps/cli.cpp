@@ -1,10 +1,12 @@
 #include "cli.hpp"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -59,6 +61,41 @@ namespace {
 // [-] tries at a fresh random temporary name before giving up (each collides with p = 2^-64).
 constexpr int kTemporaryTries = 16;
 
+// The temporary being written, for the signal handler (a fixed buffer: a handler may not allocate).
+char g_temporary[4096];
+volatile std::sig_atomic_t g_temporary_open = 0;
+constexpr int kCleanedSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
+
+extern "C" void removeTemporaryAndReraise(int sig) {
+  if (g_temporary_open) ::unlink(g_temporary);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+// While alive, Ctrl-C, termination, hang-up or the file-size limit (SIGXFSZ) remove the temporary
+// before the process dies as the signal says. Signals the program ignores stay ignored.
+class TemporaryGuard {
+ public:
+  TemporaryGuard() {
+    for (std::size_t k = 0; k < std::size(kCleanedSignals); ++k) {
+      struct sigaction a {};
+      a.sa_handler = removeTemporaryAndReraise;
+      sigemptyset(&a.sa_mask);
+      ::sigaction(kCleanedSignals[k], nullptr, &old_[k]);
+      if (old_[k].sa_handler == SIG_DFL) ::sigaction(kCleanedSignals[k], &a, nullptr);
+    }
+  }
+  ~TemporaryGuard() {
+    g_temporary_open = 0;
+    for (std::size_t k = 0; k < std::size(kCleanedSignals); ++k) ::sigaction(kCleanedSignals[k], &old_[k], nullptr);
+  }
+  TemporaryGuard(const TemporaryGuard&) = delete;
+  TemporaryGuard& operator=(const TemporaryGuard&) = delete;
+
+ private:
+  struct sigaction old_[std::size(kCleanedSignals)] {};
+};
+
 // Creates `<target>.tmp.<16 random hex digits>` exclusively (O_CREAT | O_EXCL: never an existing
 // file, never through a planted symlink), mode 0666 less the umask. Returns its descriptor.
 int createTemporary(const std::filesystem::path& target, std::filesystem::path& tmp) {
@@ -67,8 +104,13 @@ int createTemporary(const std::filesystem::path& target, std::filesystem::path& 
     char suffix[17];
     std::snprintf(suffix, sizeof suffix, "%08x%08x", rd(), rd());
     tmp = target.string() + ".tmp." + suffix;
+    const bool named = tmp.native().size() < sizeof g_temporary;  // else no cleanup on signals
+    if (named) std::memcpy(g_temporary, tmp.c_str(), tmp.native().size() + 1);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd >= 0) return fd;
+    if (fd >= 0) {
+      g_temporary_open = named;
+      return fd;
+    }
     if (errno != EEXIST) {
       throw std::runtime_error(target.string() + ": cannot write (" + tmp.string() + " could not be created: " +
                                std::strerror(errno) + ")");
@@ -103,11 +145,13 @@ void writeTextFileAtomic(const std::string& path, const std::string& text) {
   }
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
   fs::path tmp;
+  const TemporaryGuard guard;
   const int fd = createTemporary(target, tmp);
   std::string error = writeAll(fd, text);
   if (::close(fd) != 0 && error.empty()) error = std::strerror(errno);
   if (error.empty()) {
     fs::rename(tmp, target, ec);  // replaces the name itself: a symlink there is not followed
+    if (!ec) g_temporary_open = 0;
     if (ec) error = "cannot rename " + tmp.string() + " into place: " + ec.message();
   }
   if (!error.empty()) {

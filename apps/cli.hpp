@@ -36,7 +36,8 @@ void progress(const std::string& message);
 /// Writes `text` to `path` through a temporary file and a rename, so an interrupted run never
 /// leaves a half-written file; creates parent folders. The temporary `<path>.tmp.<16 random hex
 /// digits>` is created exclusively (O_CREAT | O_EXCL | O_NOFOLLOW: never an existing file or a
-/// planted symlink), fsync'ed, and removed when anything fails. Throws std::runtime_error naming the path.
+/// planted symlink), fsync'ed, and removed when anything fails or SIGINT, SIGTERM, SIGHUP or
+/// SIGXFSZ ends the program during the write. Throws std::runtime_error naming the path.
 void writeTextFileAtomic(const std::string& path, const std::string& text);
 
 /// Adds the common `--report FILE.html` option (self-contained HTML report) and `--report-svg DIR`

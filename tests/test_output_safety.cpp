@@ -9,6 +9,7 @@
 #include <string>
 
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -227,6 +228,33 @@ TEST_F(OutputSafety, AtomicWriteAFailedWriteKeepsTheOldFileAndLeavesNoTemporary)
   ::setrlimit(RLIMIT_FSIZE, &old);
   std::signal(SIGXFSZ, handler);
   EXPECT_NE(message.find(out.string() + ": write failed"), std::string::npos) << message;
+  EXPECT_EQ(readAll(out), "old\n");
+  EXPECT_EQ(temporaries(dir_), 0);
+}
+
+TEST_F(OutputSafety, AtomicWriteASignalDuringTheWriteLeavesNoTemporary) {
+  // A child process writes 1 MB under a 4 KiB file-size limit with SIGXFSZ at its default (the
+  // process dies part way, as on Ctrl-C): the handler removes the temporary before it dies.
+  const fs::path out = dir_ / "out.txt";
+  std::ofstream(out) << "old\n";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGXFSZ, SIG_DFL);
+    rlimit small{};
+    ::getrlimit(RLIMIT_FSIZE, &small);
+    small.rlim_cur = 4096;
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    try {
+      writeTextFileAtomic(out.string(), std::string(1 << 20, 'x'));
+    } catch (...) {
+    }
+    ::_exit(0);  // not reached: SIGXFSZ ends the child
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "exit status " << status;
+  EXPECT_EQ(WTERMSIG(status), SIGXFSZ);
   EXPECT_EQ(readAll(out), "old\n");
   EXPECT_EQ(temporaries(dir_), 0);
 }
