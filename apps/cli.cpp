@@ -1,11 +1,17 @@
 #include "cli.hpp"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <iterator>
+#include <random>
 #include <sstream>
 #include <stdexcept>
+
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace wattswath::apps {
@@ -43,9 +49,91 @@ void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& o) {
   cmd->add_option("--airborne-current", o.airborne.current_threshold_a,
                   "Current above which the vehicle counts as flying where no take-off/landing is logged [A]")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-gap", o.max_gap_s,
+                  "Longest time between two samples; a longer gap (logger stopped, two flights) is refused [s]")
+      ->check(CLI::Range(1e-3, 1e7));
 }
 
 void progress(const std::string& message) { std::cerr << message << std::endl; }
+
+namespace {
+
+// [-] tries at a fresh random temporary name before giving up (each collides with p = 2^-64).
+constexpr int kTemporaryTries = 16;
+
+// The temporary being written, for the signal handler (a fixed buffer: a handler may not allocate).
+char g_temporary[4096];
+volatile std::sig_atomic_t g_temporary_open = 0;
+constexpr int kCleanedSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
+
+extern "C" void removeTemporaryAndReraise(int sig) {
+  if (g_temporary_open) ::unlink(g_temporary);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+// While alive, Ctrl-C, termination, hang-up or the file-size limit (SIGXFSZ) remove the temporary
+// before the process dies as the signal says. Signals the program ignores stay ignored.
+class TemporaryGuard {
+ public:
+  TemporaryGuard() {
+    for (std::size_t k = 0; k < std::size(kCleanedSignals); ++k) {
+      struct sigaction a {};
+      a.sa_handler = removeTemporaryAndReraise;
+      sigemptyset(&a.sa_mask);
+      ::sigaction(kCleanedSignals[k], nullptr, &old_[k]);
+      if (old_[k].sa_handler == SIG_DFL) ::sigaction(kCleanedSignals[k], &a, nullptr);
+    }
+  }
+  ~TemporaryGuard() {
+    g_temporary_open = 0;
+    for (std::size_t k = 0; k < std::size(kCleanedSignals); ++k) ::sigaction(kCleanedSignals[k], &old_[k], nullptr);
+  }
+  TemporaryGuard(const TemporaryGuard&) = delete;
+  TemporaryGuard& operator=(const TemporaryGuard&) = delete;
+
+ private:
+  struct sigaction old_[std::size(kCleanedSignals)] {};
+};
+
+// Creates `<target>.tmp.<16 random hex digits>` exclusively (O_CREAT | O_EXCL: never an existing
+// file, never through a planted symlink), mode 0666 less the umask. Returns its descriptor.
+int createTemporary(const std::filesystem::path& target, std::filesystem::path& tmp) {
+  std::random_device rd;  // the kernel's getrandom: names nobody can predict
+  for (int attempt = 0; attempt < kTemporaryTries; ++attempt) {
+    char suffix[17];
+    std::snprintf(suffix, sizeof suffix, "%08x%08x", rd(), rd());
+    tmp = target.string() + ".tmp." + suffix;
+    const bool named = tmp.native().size() < sizeof g_temporary;  // else no cleanup on signals
+    if (named) std::memcpy(g_temporary, tmp.c_str(), tmp.native().size() + 1);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      g_temporary_open = named;
+      return fd;
+    }
+    if (errno != EEXIST) {
+      throw std::runtime_error(target.string() + ": cannot write (" + tmp.string() + " could not be created: " +
+                               std::strerror(errno) + ")");
+    }
+  }
+  throw std::runtime_error(target.string() + ": cannot write (" + std::to_string(kTemporaryTries) +
+                           " fresh temporary names beside it already existed)");
+}
+
+// Writes all of `text` to `fd` and flushes it to the disk; returns an error text (empty: done).
+std::string writeAll(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return std::strerror(errno);
+    done += static_cast<std::size_t>(w);
+  }
+  if (::fsync(fd) != 0) return std::strerror(errno);
+  return {};
+}
+
+}  // namespace
 
 void writeTextFileAtomic(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
@@ -56,22 +144,19 @@ void writeTextFileAtomic(const std::string& path, const std::string& text) {
     throw std::runtime_error(path + ": exists and is not a regular file; expected a file path to write");
   }
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  const fs::path tmp = target.string() + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot write (" + tmp.string() + " could not be created)");
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      fs::remove(tmp, ec);
-      throw std::runtime_error(path + ": write failed");
-    }
+  fs::path tmp;
+  const TemporaryGuard guard;
+  const int fd = createTemporary(target, tmp);
+  std::string error = writeAll(fd, text);
+  if (::close(fd) != 0 && error.empty()) error = std::strerror(errno);
+  if (error.empty()) {
+    fs::rename(tmp, target, ec);  // replaces the name itself: a symlink there is not followed
+    if (!ec) g_temporary_open = 0;
+    if (ec) error = "cannot rename " + tmp.string() + " into place: " + ec.message();
   }
-  fs::rename(tmp, target, ec);
-  if (ec) {
+  if (!error.empty()) {
     fs::remove(tmp, ec);
-    throw std::runtime_error(path + ": cannot rename temporary file into place");
+    throw std::runtime_error(path + ": write failed (" + error + ")");
   }
 }
 

@@ -34,7 +34,10 @@ std::string formatNumber(double x);
 void progress(const std::string& message);
 
 /// Writes `text` to `path` through a temporary file and a rename, so an interrupted run never
-/// leaves a half-written file; creates parent folders. Throws std::runtime_error naming the path.
+/// leaves a half-written file; creates parent folders. The temporary `<path>.tmp.<16 random hex
+/// digits>` is created exclusively (O_CREAT | O_EXCL | O_NOFOLLOW: never an existing file or a
+/// planted symlink), fsync'ed, and removed when anything fails or SIGINT, SIGTERM, SIGHUP or
+/// SIGXFSZ ends the program during the write. Throws std::runtime_error naming the path.
 void writeTextFileAtomic(const std::string& path, const std::string& text);
 
 /// Adds the common `--report FILE.html` option (self-contained HTML report) and `--report-svg DIR`
@@ -52,7 +55,7 @@ void writeReport(const report::HtmlReport& report, const std::string& html_path,
                  bool force = false);
 
 /// Adds the flight-log reading options (--from, --to, --airborne, --lenient, --battery-instance,
-/// --position-source) to `cmd`, storing into `options`. Use with logs::readFlightLog().
+/// --position-source, --airborne-current, --max-gap) to `cmd`, storing into `options`. Use with logs::readFlightLog().
 void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& options);
 
 /// Adds the common `--force` flag (allow replacing existing output files) to `cmd`.

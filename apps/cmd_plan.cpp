@@ -431,9 +431,10 @@ void runPlan(const PlanOpts& o) {
   const auto& frame = *s.area.frame;
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
   if (!o.no_report) files.push_back("report.html");
-  for (const auto& f : files)
-    if (fs::exists(fs::path(o.out) / f) && !o.force)
-      throw std::runtime_error((fs::path(o.out) / f).string() + " exists; pass --force to overwrite it");
+  // An input in --out under an output's name is refused even with --force (checkWritable).
+  std::vector<std::string> inputs = {o.area, o.vehicle};
+  inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
+  for (const auto& f : files) checkWritable((fs::path(o.out) / f).string(), o.force, inputs);
 
   pl::PlannerSettings ps;
   ps.corners = pl::cornerStrategyFromString(o.corners);

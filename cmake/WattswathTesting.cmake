@@ -13,8 +13,10 @@ else()
   message(STATUS "wattswath: ${WATTSWATH_SHARED_DATA_DIR} not found; tests on the reference data are skipped")
 endif()
 
+# TIMEOUT s: a hang watchdog for each of the program's tests (regression tests of inputs that used
+# to spin or run in quadratic time); none by default.
 function(wattswath_test name)
-  cmake_parse_arguments(T "" "" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
   target_include_directories(${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests)
@@ -23,5 +25,9 @@ function(wattswath_test name)
     WATTSWATH_SHARED_DATA_DIR="${WATTSWATH_SHARED_DATA_DIR}"
     WATTSWATH_BINARY="$<TARGET_FILE:wattswath>")
   wattswath_warnings(${name})
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS unit)
+  if(T_TIMEOUT)
+    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS unit TIMEOUT ${T_TIMEOUT})
+  else()
+    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS unit)
+  endif()
 endfunction()

@@ -1,17 +1,27 @@
 // Output files (issue 8): every command that writes a file refuses to replace an existing one
 // without --force, never overwrites one of its inputs (even with --force), checks this before any
 // work, and writes through a temporary file and a rename (no partial file, no temporary left).
+// Issue 20: `plan --force` never overwrites an input in --out; the temporary is created
+// exclusively under an unpredictable name (writeTextFileAtomic, linked in from apps/cli.cpp).
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
+
+#include "../apps/cli.hpp"
 
 #include "test_util.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using wattswath::apps::writeTextFileAtomic;
 using wattswath::test::fingerprint;
 using wattswath::test::Outcome;
 using wattswath::test::readAll;
@@ -147,6 +157,116 @@ TEST_F(OutputSafety, ReportRefusesExistingHtmlWithoutForceAndNeverTheVehicle) {
   r = runCli({"vopt", "--vehicle", kVehicle, "--distance", "100", "--report", html, "--force"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(readAll(html).find("<svg"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 20: `plan --force` overwrote its own area file when it sat in --out under an output's name.
+TEST_F(OutputSafety, PlanNeverOverwritesItsAreaInOutEvenWithForce) {
+  // The E-Spiral rectangle (data/areas/espiral_rectangle.geojson) as a QGC WPL area.
+  const std::string wpl =
+      "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t43.718699\t10.432632\t20\t1\n"
+      "1\t0\t0\t16\t0\t0\t0\t0\t43.717946\t10.430821\t10\t1\n2\t0\t0\t16\t0\t0\t0\t0\t43.717931\t10.433954\t10\t1\n"
+      "3\t0\t0\t16\t0\t0\t0\t0\t43.718985\t10.433954\t10\t1\n4\t0\t0\t16\t0\t0\t0\t0\t43.718993\t10.430843\t10\t1\n";
+  for (const char* name : {"path.geojson", "mission.waypoints"}) {
+    const std::string area = path(name);
+    if (std::string(name) == "path.geojson") {
+      fs::copy_file(wattswath::test::sourcePath("data/areas/espiral_rectangle.geojson"), area);
+    } else {
+      write(name, wpl);
+    }
+    const auto before = fingerprint(area);
+    const Outcome r = runCli({"plan", area, "--vehicle", kVehicle, "--spacing", "20", "--out", dir_.string(), "--force"});
+    EXPECT_NE(r.status, 0) << name;
+    EXPECT_NE(r.err.find(area + ": is also an input file"), std::string::npos) << r.err;
+    EXPECT_EQ(fingerprint(area), before) << name;
+    EXPECT_FALSE(fs::exists(path("mission.plan"))) << "refused after writing: " << name;
+    fs::remove(area);
+  }
+}
+
+// Issue 20: the CLI's atomic writer (apps/cli.cpp writeTextFileAtomic, linked in here) creates its
+// temporary with an unpredictable name and exclusively, so a symlink planted at the old predictable
+// name `<out>.tmp.<pid>` is never followed; a failed write leaves the old file and no temporary.
+int temporaries(const fs::path& dir) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".tmp.") != std::string::npos;
+  return n;
+}
+
+TEST_F(OutputSafety, AtomicWriteAPlantedSymlinkAtThePredictableNameIsNeverFollowed) {
+  const fs::path victim = dir_ / "victim.txt", out = dir_ / "out.txt";
+  std::ofstream(victim) << "unrelated file\n";
+  const fs::path trap = out.string() + ".tmp." + std::to_string(::getpid());
+  fs::create_symlink(victim, trap);
+  writeTextFileAtomic(out.string(), "new text\n");
+  EXPECT_EQ(readAll(victim), "unrelated file\n");
+  EXPECT_EQ(readAll(out), "new text\n");
+  EXPECT_FALSE(fs::is_symlink(out));
+  EXPECT_TRUE(fs::is_symlink(trap));  // the planted link is left alone
+  EXPECT_EQ(temporaries(dir_), 1);        // ... and is the only ".tmp." name there
+}
+
+TEST_F(OutputSafety, AtomicWriteAFailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
+  const fs::path out = dir_ / "out.txt";
+  std::ofstream(out) << "old\n";
+  // A 4 KiB file-size limit makes the 1 MB write fail part way (EFBIG; SIGXFSZ ignored).
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+  const auto handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = old;
+  small.rlim_cur = 4096;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    writeTextFileAtomic(out.string(), std::string(1 << 20, 'x'));
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, handler);
+  EXPECT_NE(message.find(out.string() + ": write failed"), std::string::npos) << message;
+  EXPECT_EQ(readAll(out), "old\n");
+  EXPECT_EQ(temporaries(dir_), 0);
+}
+
+TEST_F(OutputSafety, AtomicWriteASignalDuringTheWriteLeavesNoTemporary) {
+  // A child process writes 1 MB under a 4 KiB file-size limit with SIGXFSZ at its default (the
+  // process dies part way, as on Ctrl-C): the handler removes the temporary before it dies.
+  const fs::path out = dir_ / "out.txt";
+  std::ofstream(out) << "old\n";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGXFSZ, SIG_DFL);
+    rlimit small{};
+    ::getrlimit(RLIMIT_FSIZE, &small);
+    small.rlim_cur = 4096;
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    try {
+      writeTextFileAtomic(out.string(), std::string(1 << 20, 'x'));
+    } catch (...) {
+    }
+    ::_exit(0);  // not reached: SIGXFSZ ends the child
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "exit status " << status;
+  EXPECT_EQ(WTERMSIG(status), SIGXFSZ);
+  EXPECT_EQ(readAll(out), "old\n");
+  EXPECT_EQ(temporaries(dir_), 0);
+}
+
+TEST_F(OutputSafety, AtomicWriteReplacesASymlinkedTargetNameRatherThanWritingThroughIt) {
+  // rename() replaces the name: a symlink at the output path is refused up front (not a regular file).
+  const fs::path victim = dir_ / "victim.txt", out = dir_ / "out.txt";
+  std::ofstream(victim) << "unrelated file\n";
+  fs::create_symlink(victim, out);
+  EXPECT_THROW(writeTextFileAtomic(out.string(), "new\n"), std::runtime_error);
+  EXPECT_EQ(readAll(victim), "unrelated file\n");
+  EXPECT_EQ(temporaries(dir_), 0);
 }
 
 }  // namespace

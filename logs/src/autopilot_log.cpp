@@ -89,6 +89,7 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
   // Drop non-increasing times first: the interpolation below needs two position samples left.
   const std::size_t bd = keepIncreasing(b.t, b.v, b.i);
   const std::size_t pd = keepIncreasing(raw.pt, raw.pos, raw.vel, raw.acc, raw.yaw);
+  validateRaw(raw, source, opt.lenient);  // the CSV reader's bounds: the log converts and reads back
   auto dropped = [](std::size_t d) {
     return d ? ", " + std::to_string(d) + " more with non-increasing or non-finite time not used" : std::string();
   };
@@ -103,6 +104,7 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
   if (bd) raw.warnings.push_back(std::to_string(bd) + " battery samples with non-increasing time not used");
   if (pd) raw.warnings.push_back(std::to_string(pd) + " position samples with non-increasing time not used");
   if (!raw.has_acc) raw.acc = accelerationFrom(raw.pt, raw.vel);
+  validateDerivedAcceleration(raw, source);
   const std::vector<double> yaw = unwrap(raw.yaw);
 
   FlightLog log;
@@ -178,6 +180,7 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
                              num(b.t.front()) + "-" + num(b.t.back()) + " s, position " + num(raw.pt.front()) + "-" +
                              num(raw.pt.back()) + " s)");
   applyTimeWindow(log, opt);
+  checkSampleGaps(log, opt.max_gap_s);
   return log;
 }
 
@@ -327,6 +330,7 @@ FlightLog readFlightLog(const std::string& path, const LogReadOptions& options) 
     log.airborne = detectAirborne(t, i, {}, options.airborne);
   }
   applyTimeWindow(log, options);
+  checkSampleGaps(log, options.max_gap_s);
   return log;
 }
 

@@ -67,6 +67,8 @@ void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& r
     for (auto& [n, bb] : by) {
       bb.instance = n;
       bb.label = name + " instance " + std::to_string(n) + " (" + std::to_string(bb.t.size()) + " samples" + unit_note + ")";
+      bb.voltage_field = name + "[" + std::to_string(n) + "].Volt";
+      bb.current_field = name + "[" + std::to_string(n) + "].Curr";
       found.push_back(bb);
     }
   }
@@ -119,6 +121,10 @@ void dataflashPosition(const dataflash::Log& L, const LogReadOptions& opt, Raw& 
     raw.yaw.push_back(headingDegToEnuYaw(yaw[k]));
   }
   raw.acc.assign(raw.pt.size(), Eigen::Vector3d::Zero());
+  raw.position_message = name + (L.has(name, "C") ? "[core " + num(use_core) + "]" : "");
+  raw.pos_fields = {"PE", "PN", "PD"};
+  raw.vel_fields = {"VE", "VN", "VD"};
+  raw.acc_fields = {"VE", "VN", "VD"};  // never logged: derived from the velocities
   raw.position_source = name + (L.has(name, "C") ? " core " + num(use_core) : "") +
                         " (PN, PE, PD, VN, VE, VD; NED from the EKF origin; acceleration: quadratic least-squares derivative of VN, VE, VD)";
 }

@@ -289,6 +289,10 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
     s.yaw = num("yaw_rad");
     s.voltage = num("voltage_v");
     s.current = num("current_a");
+    if (s.current < tol::kLogMinCurrent) {
+      fail(source, ln, "column 'current_a': value " + fmt(s.current) + " A is below " + fmt(tol::kLogMinCurrent) +
+                           " A (a multirotor draws current: is the current sensor's sign or offset wrong?)");
+    }
     s.power = have_power ? num("power_w") : s.voltage * s.current;
     if (!have_power && !(std::abs(s.power) <= tol::kLogMaxMagnitude)) {
       // Written back as power_w, which is bounded like every value: the log would not read back.

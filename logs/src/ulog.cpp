@@ -15,6 +15,7 @@ constexpr std::uint8_t kMagic[7] = {'U', 'L', 'o', 'g', 0x01, 0x12, 0x35};
 constexpr std::size_t kHeaderSize = 16;
 constexpr std::size_t kMaxFormatSize = 65535;  // a message payload cannot be larger
 constexpr int kMaxNesting = 16;
+constexpr std::size_t kMaxFormatName = 256;  // [B] longest 'name:' prefix a resynchronisation accepts
 constexpr std::uint8_t kSync[8] = {0x2F, 0x73, 0x13, 0x20, 0x25, 0x0C, 0xBB, 0x12};  // the 'S' payload
 
 // Message types of the definitions and data sections after the flag bits ('B' only comes first).
@@ -220,8 +221,10 @@ std::string Log::readFormat(const std::uint8_t* p, std::size_t size) {
     fields.push_back(f);
   }
   if (fields.empty()) return "format " + name + " has no fields";
+  // Resolved layouts only hold names all defined before, so only a redefinition can change one.
+  if (formats_.count(name)) resolved_.clear();
+  unresolved_.clear();  // the new definition may be what a failed layout lacked
   formats_[name] = fields;
-  resolved_.clear();
   return {};
 }
 
@@ -240,7 +243,8 @@ std::string Log::readKeyValue(char type, const std::uint8_t* p, std::size_t size
   double number = 0.0;
   const std::string value = infoValue(vtype, v, vn, &number);
   if (type == 'I') info_[name] = value;
-  else if (type == 'M') info_[name] = (p[0] ? info_[name] : std::string()) + value;
+  else if (type == 'M' && p[0]) info_[name] += value;  // a continuation: appended in place (linear)
+  else if (type == 'M') info_[name] = value;
   else if (type == 'P') params_[name] = number;
   if (type == 'Q' && (p[0] & 1)) defaults_[name] = number;                // system-wide default
   if (type == 'Q' && (p[0] & 2)) configuration_defaults_[name] = number;  // airframe default
@@ -351,7 +355,13 @@ bool Log::plausiblePayload(char type, const std::uint8_t* p, std::size_t size) c
       }
     }
     case 'A': return size >= 4 && formats_.count(str(p + 3, size - 3)) > 0;
-    case 'F': return printable(p, size) && str(p, size).find(':') != std::string::npos;
+    case 'F': {
+      // The 'name:' prefix comes first: looking only there keeps a resynchronisation scan over
+      // printable garbage linear (a whole-payload check at every byte was 18 KB per byte).
+      const std::size_t head = std::min(size, kMaxFormatName);
+      const void* colon = std::memchr(p, ':', head);
+      return colon != nullptr && printable(p, static_cast<const std::uint8_t*>(colon) - p + 1);
+    }
     case 'I': case 'P': case 'M': case 'Q': {
       const std::size_t skip = (type == 'M' || type == 'Q') ? 1 : 0;
       if (size < skip + 1) return false;
@@ -387,7 +397,12 @@ std::size_t Log::resolveInto(const std::string& name, const std::string& prefix,
         }
         off += s;
       } else {
-        off += resolveInto(f.type, leaf + ".", base + off, out, depth + 1);
+        const std::size_t element = resolveInto(f.type, leaf + ".", base + off, out, depth + 1);
+        // Every element must take at least one byte, so the work is bounded by the 65535-byte size.
+        if (element == 0)
+          throw std::runtime_error(source_ + ": format " + name + " field " + f.name + ": type " + f.type +
+                                   " takes 0 bytes (only zero-size fields); a nested type needs at least 1 byte");
+        off += element;
       }
       if (base + off > kMaxFormatSize)
         throw std::runtime_error(source_ + ": format " + name + " is larger than a ULog message can be (" +
@@ -400,8 +415,16 @@ std::size_t Log::resolveInto(const std::string& name, const std::string& prefix,
 const Log::Resolved& Log::resolve(const std::string& name) const {
   auto it = resolved_.find(name);
   if (it != resolved_.end()) return it->second;
+  // A failure is remembered too: lenient resynchronisation may ask for the same layout at every byte.
+  auto failed = unresolved_.find(name);
+  if (failed != unresolved_.end()) throw std::runtime_error(failed->second);
   Resolved r;
-  r.size = resolveInto(name, "", 0, r, 0);
+  try {
+    r.size = resolveInto(name, "", 0, r, 0);
+  } catch (const std::exception& e) {
+    unresolved_[name] = e.what();
+    throw;
+  }
   return resolved_.emplace(name, std::move(r)).first->second;
 }
 

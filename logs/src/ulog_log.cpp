@@ -102,6 +102,8 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
       bb.i.push_back(no_current ? kNaN : i[k]);
     }
     bb.label = "battery_status[" + std::to_string(inst) + "] (" + std::to_string(bb.t.size()) + " samples";
+    bb.voltage_field = "battery_status[" + std::to_string(inst) + "].voltage_v";
+    bb.current_field = "battery_status[" + std::to_string(inst) + "].current_a";
     if (skipped) bb.label += "; " + std::to_string(skipped) + " not connected or without voltage, not used";
     if (unmeasured) bb.label += "; " + std::to_string(unmeasured) + " with current_a = -1 (not measured) read as NaN";
     bb.label += ")";
@@ -139,6 +141,10 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
       raw.acc.emplace_back(ay[k], ax[k], -az[k]);
       raw.yaw.push_back(std::remainder(kPi / 2 - heading[k], 2 * kPi));
     }
+    raw.position_message = lp + "[0]";
+    raw.pos_fields = {"y", "x", "z"};  // ENU from NED
+    raw.vel_fields = {"vy", "vx", "vz"};
+    raw.acc_fields = {"ay", "ax", "az"};
     raw.position_source = lp + "[0] (x, y, z, vx, vy, vz" + std::string(raw.has_acc ? ", ax, ay, az" : "") +
                           "; NED from the EKF reference)";
     if (invalid) {

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "wattswath/mission/files.hpp"
+
 namespace wattswath::mission {
 namespace {
 
@@ -101,6 +103,7 @@ std::vector<Item> items(const PlannedMission& m) {
   rtl.command = kCmdReturnToLaunch;
   rtl.frame = kFrameMission;
   out.push_back(rtl);
+  checkMissionItemCount(out.size());  // before either writer produces any text
   return out;
 }
 

@@ -25,6 +25,7 @@ void checkWritable(const MissionItem& it) {
 /// The items renumbered 1..n in order; each DO_JUMP's target follows its item (the first item
 /// numbered at or after the old target, as the readers resolve it).
 std::vector<MissionItem> renumbered(const Mission& m) {
+  checkMissionItemCount(m.items.size());
   std::vector<MissionItem> out = m.items;
   for (std::size_t k = 0; k < out.size(); ++k) {
     checkWritable(out[k]);
@@ -74,6 +75,14 @@ json planItem(const MissionItem& it) {
 }
 
 }  // namespace
+
+void checkMissionItemCount(std::size_t items) {
+  if (items <= kMaxMissionItems) return;
+  throw std::invalid_argument("mission: " + std::to_string(items) + " items after home, more than the " +
+                              std::to_string(kMaxMissionItems) +
+                              " a MAVLink mission can hold (MISSION_COUNT is 16-bit and home is item 0); nothing "
+                              "written: widen the line spacing or split the area into several missions");
+}
 
 std::string toQgcPlan(const Mission& m) {
   json items = json::array();

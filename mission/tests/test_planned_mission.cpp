@@ -229,3 +229,39 @@ TEST(PlannedMission, InvalidHoldsTriggersVehicleTypesAndFencesAreRejected) {
   m.fence_inclusion.resize(2);
   expectThrowNaming(m, "inclusion fence has 2 vertices");
 }
+
+// Issue 20: MAVLink counts a mission's items in 16 bits and ArduPilot uploads home as item 0, so
+// a written mission holds at most 65,534 items after home; more is refused before any text.
+TEST(MissionItemLimit, WritersRefuseMoreItemsThanMavlinkCanCount) {
+  Mission m;
+  m.home = {43.72, 10.42, 3.0};
+  m.home_known = true;
+  MissionItem wp;
+  wp.command = 16;
+  wp.lat_deg = 43.7201;
+  wp.lon_deg = 10.4201;
+  wp.alt_m = 10.0;
+  m.items.assign(kMaxMissionItems, wp);
+  for (std::size_t k = 0; k < m.items.size(); ++k) m.items[k].seq = static_cast<int>(k) + 1;
+  EXPECT_NO_THROW(toQgcWpl(m));  // the largest mission that fits
+  m.items.push_back(wp);
+  m.items.back().seq = static_cast<int>(m.items.size());
+  using Writer = std::string (*)(const Mission&);
+  for (Writer write : {static_cast<Writer>(toQgcPlan), static_cast<Writer>(toQgcWpl)}) {
+    try {
+      write(m);
+      ADD_FAILURE() << "65,535 items after home written";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("mission: 65535 items after home, more than the 65534 a MAVLink mission can hold"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  // The planner's writer: take-off, a speed command, the waypoints and RTL count too.
+  PlannedMission p = sample();
+  p.waypoints.assign(kMaxMissionItems - 2, p.waypoints.front());
+  EXPECT_THROW(toQgcPlan(p), std::invalid_argument);
+  EXPECT_THROW(toQgcWpl(p), std::invalid_argument);
+  p.waypoints.resize(kMaxMissionItems - 3);  // + take-off, speed, RTL = 65,534
+  EXPECT_NO_THROW(toQgcWpl(p));
+}

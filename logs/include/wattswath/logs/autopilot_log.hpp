@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "wattswath/logs/flight_log.hpp"
+#include "wattswath/logs/tolerances.hpp"
 
 namespace wattswath::logs {
 
@@ -38,6 +39,7 @@ struct LogReadOptions {
   int battery_instance = -1;   ///< [-] battery instance to use; -1: the first one with a plausible voltage (> 1 V)
   std::string position_source; ///< force a position source ("XKF1", "NKF1", "NKF6", "EKF1", "vehicle_local_position"); empty: automatic
   AirborneSettings airborne;   ///< airborne detection settings
+  double max_gap_s = tol::kLogMaxSampleGap;  ///< [s] longest time allowed between two samples (after the window); > 0
 };
 
 /// A landed-state change the autopilot logged (take-off or landing event).
@@ -79,5 +81,11 @@ FlightLog readFlightLog(const std::string& path, const LogReadOptions& options =
 /// options.airborne_only), clips log.airborne and log.events to it and records the window in
 /// metadata `window`. Throws when fewer than two samples remain, naming the window and the span.
 void applyTimeWindow(FlightLog& log, const LogReadOptions& options);
+
+/// Throws std::runtime_error naming log.source, the two times and the limit when consecutive
+/// samples of `log` are more than `max_gap_s` [s] apart: the energy over such a gap (the logger
+/// stopped, or two flights in one log) was not measured and must not be integrated. The readers
+/// call it after the time window, so --from / --to can pick one part of such a log.
+void checkSampleGaps(const FlightLog& log, double max_gap_s);
 
 }  // namespace wattswath::logs

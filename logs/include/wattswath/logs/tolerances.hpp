@@ -15,4 +15,13 @@ inline constexpr double kLogMaxAltitude = 1e5;
 /// velocities meaningless.
 inline constexpr double kLogMinTimeStep = 1e-6;
 
+/// [A] most negative battery current a flight-log sample may have: a current sensor's offset at
+/// idle reads a few tenths of an ampere below zero, a multirotor never charges its battery in
+/// flight; below this the sensor's sign or offset is wrong and the energy would come out negative.
+inline constexpr double kLogMinCurrent = -1.0;
+/// [s] default longest time between two consecutive flight-log samples (LogReadOptions::max_gap_s):
+/// a longer gap is the logger stopping or two flights in one log, whose energy must not be
+/// counted as if measured.
+inline constexpr double kLogMaxSampleGap = 60.0;
+
 }  // namespace wattswath::logs::tol

@@ -130,6 +130,7 @@ class Log {
   bool appended_ = false;
   std::map<std::string, std::vector<Field>> formats_;
   mutable std::map<std::string, Resolved> resolved_;
+  mutable std::map<std::string, std::string> unresolved_;  // names whose layout failed: why (until the next 'F')
   std::map<std::string, std::string> info_;
   std::map<std::string, double> params_;
   std::map<std::string, double> defaults_;

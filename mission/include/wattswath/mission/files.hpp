@@ -20,6 +20,14 @@ class MissionError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// [-] Most items a written mission may hold after its home: MAVLink's MISSION_COUNT.count and
+/// item seq are 16-bit (65,535 at most) and ArduPilot uploads home as item 0.
+inline constexpr std::size_t kMaxMissionItems = 65534;
+
+/// Throws std::invalid_argument when `items` (the items after home) exceed kMaxMissionItems,
+/// naming the count, the limit and what to change. Every mission writer calls it before writing.
+void checkMissionItemCount(std::size_t items);
+
 /// How missions are read and checked.
 struct ReadOptions {
   bool lenient = false;                      ///< an unsupported command becomes a warning and its item is dropped
