@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "diagnose_output.hpp"
 #include "log_inputs.hpp"
 #include "log_json.hpp"
 #include "replay_mission.hpp"
@@ -163,22 +164,28 @@ void registerDiagnose(CLI::App& app) {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs;
     logs::LogReadOptions read;
-    int folds = 3;
+    int folds = 5;
+    double p_value = 1e-3;
     MeasurementReport measurement;
     bool json = false;
     std::string report, report_svg;
     bool force = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("diagnose", "Rank the physical effects missing from a model by the held-out error "
-                                             "reduction they bring, with fitted coefficients in physical terms");
+  auto* cmd = app.add_subcommand("diagnose", "Say which physical effect a model is missing (kept only when its held-out "
+                                             "improvement is significant against the data's noise), that nothing is, "
+                                             "or that no candidate explains the residual and which signals carry it");
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--effects", o->effects, "Comma-separated effects of the model to diagnose")->capture_default_str();
   cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable; 2+ logs: leave-one-flight-out)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--folds", o->folds, "Time-block folds when only one log is given")
+  cmd->add_option("--folds", o->folds, "Contiguous time blocks held out in turn when only one log is given")
       ->check(CLI::Range(2, 10))
+      ->capture_default_str();
+  cmd->add_option("--p-value", o->p_value,
+                  "False-alarm probability of keeping a candidate (held-out likelihood ratio on effective samples)")
+      ->check(CLI::Range(1e-9, 0.1))
       ->capture_default_str();
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
@@ -193,6 +200,7 @@ void registerDiagnose(CLI::App& app) {
     const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     calibration::DiagnoseSettings s;
     s.folds = o->folds;
+    s.p_value = o->p_value;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
     const auto d = calibration::diagnose(model, v, logs, s);
     if (!o->report.empty() || !o->report_svg.empty()) {
@@ -200,66 +208,31 @@ void registerDiagnose(CLI::App& app) {
       data.title = "wattswath diagnosis";
       data.facts.insert(data.facts.begin(), {{"vehicle", v.name},
                                              {"model", o->effects + " (as given by the vehicle's physics)"},
-                                             {"validation", d.validation}});
+                                             {"validation", d.validation},
+                                             {"verdict", d.verdict + ": " + d.conclusion}});
       for (const auto& st : d.staircase) data.staircase.push_back({st.label, st.metrics.rmse_w});
       data.error_label = "held-out sample RMSE";
       data.diagnosis = diagnosisRows(d);
       writeReport(report::validationReport(data), o->report, o->report_svg, o->force);
     }
     if (o->json) {
-      json cands = json::array();
-      for (const auto& c : d.candidates) {
-        json coeffs = json::object(), sig = json::object(), units = json::object();
-        for (const auto& x : c.coefficients) {
-          coeffs[x.name] = x.value;
-          sig[x.name] = std::isfinite(x.sigma) ? json(x.sigma) : json(nullptr);
-          units[x.name] = x.unit;
-        }
-        cands.push_back({{"effect", c.effect},
-                         {"rmse_w", c.rmse_w},
-                         {"improvement_pct", c.improvement_pct},
-                         {"energy_error_pct", c.energy_error_pct},
-                         {"leg_energy_mape_pct", c.leg_energy_mape_pct},
-                         {"coefficients", coeffs},
-                         {"uncertainty", sig},
-                         {"units", units},
-                         {"identifiability", identifiabilityJson(c.coefficients)[c.effect]},
-                         {"summary", c.summary},
-                         {"indistinct_from", c.indistinct_from},
-                         {"notes", c.notes}});
-      }
-      json stair = json::array();
-      for (const auto& st : d.staircase) {
-        stair.push_back({{"label", st.label},
-                         {"rmse_w", st.metrics.rmse_w},
-                         {"energy_error_pct", st.metrics.energy_error_pct},
-                         {"leg_energy_mape_pct", st.metrics.leg_energy_mape_pct}});
-      }
       json base = metricsJson(d.baseline);
       base["validation"] = d.validation;
-      printJson({{"effects", model.effectNames()},
-                 {"physics", metricsJson(d.physics)},
-                 {"baseline", base},
-                 {"candidates", cands},
-                 {"staircase", stair},
-                 {"flights", flightsJson(d.physics_replay)},
-                 {"residuals", residualsJson(d.residuals)},
-                 {"measurement", o->measurement.toJson()}});
+      json out = diagnosisJson(d);
+      out.update({{"effects", model.effectNames()},
+                  {"physics", metricsJson(d.physics)},
+                  {"baseline", base},
+                  {"flights", flightsJson(d.physics_replay)},
+                  {"residuals", residualsJson(d.residuals)},
+                  {"measurement", o->measurement.toJson()}});
+      printJson(out);
       return;
     }
     o->measurement.print();
     std::cout << "validation: " << d.validation << "\n";
     printMetrics("model as given (vehicle physics)", d.physics);
     printMetrics("model refitted (held-out)", d.baseline);
-    std::cout << "candidates, best first (held-out RMSE after adding the effect):\n";
-    for (const auto& c : d.candidates) {
-      std::cout << "  " << c.effect << ": " << c.rmse_w << " W (" << c.improvement_pct << " %) - " << c.summary << "\n";
-      if (!c.indistinct_from.empty()) {
-        std::cout << "    cannot be told apart from:";
-        for (const auto& n : c.indistinct_from) std::cout << " " << n;
-        std::cout << "\n";
-      }
-    }
+    printDiagnosis(d);
   });
 }
 
