@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
               r.flight.modelled_j, r.flight.errorPct(), before.rmse_w, prepared.legs.size());
 
   // Diagnose: try candidate effects, each fitted with the model's own coefficients, ranked by
-  // held-out error (interleaved time blocks of this one log).
+  // held-out error (contiguous time blocks of this one log).
   cal::DiagnoseSettings ds;
   ds.candidates = {"wind", "translational_lift", "climb", "payload_mass"};
   const cal::Diagnosis d = cal::diagnose(model, v, {prepared}, ds);
