@@ -15,6 +15,7 @@
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/logs/log_io.hpp"
 #include "wattswath/calibration/plan_prediction.hpp"
+#include "wattswath/calibration/user_effect.hpp"
 #include "wattswath/energy/tolerances.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -159,6 +160,21 @@ void registerReplay(CLI::App& app) {
   });
 }
 
+// --effect-file FILE (repeatable): user-defined effects (calibration/user_effect.hpp).
+void addEffectFileOption(CLI::App* cmd, std::vector<std::string>& files, const std::string& what) {
+  cmd->add_option("--effect-file", files, "JSON model file of " + what + " (repeatable; README, user-defined effects)")
+      ->check(CLI::ExistingFile);
+}
+
+std::vector<calibration::FormulaEffectSpec> readEffectFiles(const std::vector<std::string>& files) {
+  std::vector<calibration::FormulaEffectSpec> out;
+  for (const auto& f : files) {
+    const auto specs = calibration::readEffectFile(f);
+    out.insert(out.end(), specs.begin(), specs.end());
+  }
+  return out;
+}
+
 void registerDiagnose(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
@@ -166,6 +182,7 @@ void registerDiagnose(CLI::App& app) {
     logs::LogReadOptions read;
     int folds = 5;
     double p_value = 1e-3;
+    std::vector<std::string> effect_files;
     MeasurementReport measurement;
     bool json = false;
     std::string report, report_svg;
@@ -187,6 +204,7 @@ void registerDiagnose(CLI::App& app) {
                   "False-alarm probability of keeping a candidate (held-out likelihood ratio on effective samples)")
       ->check(CLI::Range(1e-9, 0.1))
       ->capture_default_str();
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects (JSON model file) tried as candidates too");
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
@@ -194,11 +212,15 @@ void registerDiagnose(CLI::App& app) {
   cmd->callback([o]() {
     auto inputs = o->logs;
     inputs.push_back(o->vehicle);
+    inputs.insert(inputs.end(), o->effect_files.begin(), o->effect_files.end());
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
-    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto user = readEffectFiles(o->effect_files);
+    const auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), user);
     const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     calibration::DiagnoseSettings s;
+    for (const auto& u : user)
+      if (!model.has(u.name)) s.extra_candidates.push_back(calibration::makeFormulaEffect(u, v));
     s.folds = o->folds;
     s.p_value = o->p_value;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
@@ -239,7 +261,7 @@ void registerDiagnose(CLI::App& app) {
 void registerFit(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
-    std::vector<std::string> logs, test_logs;
+    std::vector<std::string> logs, test_logs, effect_files;
     logs::LogReadOptions read;
     MeasurementReport measurement;
     bool json = false;
@@ -253,6 +275,7 @@ void registerFit(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Comma-separated effects to fit")->capture_default_str();
   cmd->add_option("--log", o->logs, "Training log: CSV, .bin or .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects (JSON model file) that --effects may name");
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
@@ -261,9 +284,10 @@ void registerFit(CLI::App& app) {
     auto inputs = o->logs;
     inputs.insert(inputs.end(), o->test_logs.begin(), o->test_logs.end());
     inputs.push_back(o->vehicle);
+    inputs.insert(inputs.end(), o->effect_files.begin(), o->effect_files.end());
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
-    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), readEffectFiles(o->effect_files));
     const auto train = readCheckedLogs(o->logs, o->read, v, o->measurement);
     const auto test = readCheckedLogs(o->test_logs, o->read, v, o->measurement);
     const auto r = calibration::fitAndCompare(model, train, test);
@@ -324,7 +348,7 @@ void registerFit(CLI::App& app) {
 void registerSimulate(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects, out, path;
-    std::vector<std::string> sets;
+    std::vector<std::string> sets, effect_files;
     calibration::SimulationSettings sim;
     bool json = false, force = false;
   };
@@ -335,6 +359,7 @@ void registerSimulate(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Effects of the true model (hidden ones included)")->capture_default_str();
   cmd->add_option("--set", o->sets, "Coefficient of the true model, effect.coefficient=value (repeatable), "
                                     "e.g. wind.wind_east=3");
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects (JSON model file) that --effects may name");
   cmd->add_option("--path", o->path, "Waypoints x y z [m] per line (default: a 160 m x 50 m lawnmower at 15 m)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--rate", o->sim.rate_hz, "Sample rate [Hz]")->check(CLI::Range(0.1, 1000.0))->capture_default_str();
@@ -347,9 +372,11 @@ void registerSimulate(CLI::App& app) {
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
-    checkWritable(o->out, o->force, {o->vehicle, o->path});
+    auto inputs = o->effect_files;
+    inputs.insert(inputs.end(), {o->vehicle, o->path});
+    checkWritable(o->out, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
-    auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), readEffectFiles(o->effect_files));
     for (const auto& s : o->sets) {
       const auto dot = s.find('.'), eq = s.find('=');
       if (dot == std::string::npos || eq == std::string::npos || eq < dot) {

@@ -80,9 +80,17 @@ double likelihoodRatio(const Evaluation& base, const Evaluation& better, double*
   return a > 0.0 && b > 0.0 ? n * std::log(a / b) : 0.0;
 }
 
-EnergyModel withEffects(const EnergyModel& model, const std::vector<std::string>& added, const Vehicle& v) {
+EnergyModel withEffects(const EnergyModel& model, const std::vector<std::string>& added, const Vehicle& v,
+                        const std::vector<std::shared_ptr<const energy::Effect>>& extra) {
   EnergyModel m = model;
-  for (const auto& n : added) m = withCandidate(m, n, v);
+  for (const auto& n : added) {
+    const auto user = std::find_if(extra.begin(), extra.end(), [&](const auto& e) { return e && e->name() == n; });
+    if (user != extra.end()) {
+      m.add((*user)->clone());
+    } else {
+      m = withCandidate(m, n, v);
+    }
+  }
   return m;
 }
 
@@ -209,7 +217,7 @@ Tried tryRound(const SearchContext& c, const Evaluation& cur, const std::vector<
     if (inModel(cur.start, n) || dropped.count(n)) continue;
     auto next = cur.added;
     next.push_back(n);
-    t.evals.push_back(evaluate(withEffects(c.model, next, c.v), next, c.logs, c.folds, c.s.fit));
+    t.evals.push_back(evaluate(withEffects(c.model, next, c.v, c.s.extra_candidates), next, c.logs, c.folds, c.s.fit));
     t.results.push_back(score(cur, t.evals.back(), n, c.noise_w, c.logs, c.s));
   }
   return t;
@@ -240,7 +248,7 @@ void revisit(const SearchContext& c, Evaluation& cur, std::set<std::string>& dro
     auto without = cur.added;
     const std::string f = without[k];
     without.erase(without.begin() + static_cast<long>(k));
-    Evaluation ev = evaluate(withEffects(c.model, without, c.v), without, c.logs, c.folds, c.s.fit);
+    Evaluation ev = evaluate(withEffects(c.model, without, c.v, c.s.extra_candidates), without, c.logs, c.folds, c.s.fit);
     const double z = likelihoodRatio(ev, cur);
     if (z > chiSquareQuantile(static_cast<int>(std::max<size_t>(1, coefficientCount(cur.start, f))), c.s.p_value)) {
       ++k;
@@ -262,6 +270,8 @@ Evaluation searchEffects(const EnergyModel& model, const Vehicle& v, const std::
                          Diagnosis& d) {
   std::vector<std::string> names = s.candidates;
   if (names.empty()) names = knownEffectNames();
+  for (const auto& e : s.extra_candidates)
+    if (e && std::find(names.begin(), names.end(), e->name()) == names.end()) names.push_back(e->name());
   const SearchContext c{model, v, logs, folds, s, noise_w};
   Evaluation cur = base;
   std::set<std::string> dropped;

@@ -35,8 +35,10 @@ Evaluation evaluate(const EnergyModel& start, const std::vector<std::string>& ad
 /// n_eff = n / tau of better's held-out residual [-]; `n_eff` receives n_eff.
 double likelihoodRatio(const Evaluation& base, const Evaluation& better, double* n_eff = nullptr);
 
-/// The diagnosed model plus `added` (each from vehicle physics, withCandidate order).
-EnergyModel withEffects(const EnergyModel& model, const std::vector<std::string>& added, const Vehicle& v);
+/// The diagnosed model plus `added` (each from vehicle physics, withCandidate order, or a copy of
+/// the user-defined effect of that name in `extra`).
+EnergyModel withEffects(const EnergyModel& model, const std::vector<std::string>& added, const Vehicle& v,
+                        const std::vector<std::shared_ptr<const energy::Effect>>& extra = {});
 
 /// The greedy search: fills d.candidates (first round), d.found, d.search and d.staircase; returns
 /// the final evaluation. `noise_w` is the white noise of the data [W].

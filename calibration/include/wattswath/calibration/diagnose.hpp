@@ -4,6 +4,7 @@
 /// effect coefficients (Ceres, private), cross-validated ranking of candidate effects, before /
 /// after comparisons on training and test logs, and simulated logs with hidden effects.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,8 @@ struct DiagnoseSettings {
   double indistinct_correlation = 0.9;  ///< [-] two effects whose fitted power contributions
                                         ///< correlate above this cannot be told apart; 0..1
   std::vector<std::string> candidates;  ///< effects to try (empty: every known effect not in the model)
+  /// User-defined effects (user_effect.hpp) tried as candidates too, after the built-in ones
+  std::vector<std::shared_ptr<const energy::Effect>> extra_candidates;
   /// [-] an effect is kept only when its held-out likelihood ratio n_eff ln(MSE_before / MSE_after)
   /// exceeds the chi-square quantile at 1 - p_value for its number of coefficients; n_eff = n / tau
   /// with tau the autocorrelation time of the held-out residual with the effect (a stand-in that
