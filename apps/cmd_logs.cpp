@@ -1,4 +1,5 @@
 // Model versus measurement on flight logs: replay, diagnose, fit, simulate (issue 6).
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -235,6 +236,17 @@ void registerDiagnose(CLI::App& app) {
       for (const auto& st : d.staircase) data.staircase.push_back({st.label, st.metrics.rmse_w});
       data.error_label = "held-out sample RMSE";
       data.diagnosis = diagnosisRows(d);
+      data.verdict = "Verdict: " + d.verdict + ". " + d.conclusion;
+      const bool any = std::any_of(d.signatures.begin(), d.signatures.end(), [](const auto& g) { return g.significant; });
+      for (const auto& g : d.signatures) {  // the significant signals, or the three leads
+        if (d.verdict != "unexplained" || data.signal_curves.size() >= 3 || (any && !g.significant)) break;
+        report::SignalCurve sc{g.signal, g.unit, g.sentence, {}, {}};
+        for (const auto& b : g.bins) {
+          sc.x.push_back(0.5 * (b.lo + b.hi));
+          sc.residual.push_back(b.residual_w);
+        }
+        data.signal_curves.push_back(std::move(sc));
+      }
       writeReport(report::validationReport(data), o->report, o->report_svg, o->force);
     }
     if (o->json) {

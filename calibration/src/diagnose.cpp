@@ -173,9 +173,12 @@ void conclude(Diagnosis& d) {
     d.conclusion += " No single tested signal carries it significantly; the strongest are listed as leads.";
     for (size_t k = 0; k < d.signatures.size() && k < 3; ++k) sig.push_back(&d.signatures[k]);
   }
-  for (size_t k = 0; k < sig.size() && k < 3; ++k) {
-    d.conclusion += std::string(k == 0 ? " It " : " It also ") + sig[k]->sentence + " (" + sig[k]->signal + ", " +
+  std::vector<std::string> said;  // speed and speed squared share a sentence: say it once
+  for (size_t k = 0; k < sig.size() && said.size() < 3; ++k) {
+    if (std::find(said.begin(), said.end(), sig[k]->sentence) != said.end()) continue;
+    d.conclusion += std::string(said.empty() ? " It " : " It also ") + sig[k]->sentence + " (" + sig[k]->signal + ", " +
                     num(100.0 * sig[k]->strength, 2) + " % of its variance).";
+    said.push_back(sig[k]->sentence);
   }
 }
 }  // namespace
