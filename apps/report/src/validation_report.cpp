@@ -105,13 +105,14 @@ void addSignalCurves(HtmlReport& r, const ValidationReportData& d) {
     LineChart c;
     c.title = "Residual against " + g.signal;
     c.x = {g.signal, g.unit};
-    c.y = {"measured - modelled power (found effects fitted)", "W"};
+    c.y = {"measured - modelled", "W"};
     c.y_ref = 0.0;
     c.height = 300;
     Series s("binned mean", g.x, g.residual);
     s.style = SeriesStyle::LineAndPoints;
     c.series.push_back(s);
-    r.figure({"validation-signal-" + g.signal, renderSvg(c), "The residual " + g.sentence + "."});
+    r.figure({"validation-signal-" + g.signal, renderSvg(c),
+              "Residual with the found effects fitted, binned by " + g.signal + ": it " + g.sentence + "."});
   }
 }
 }  // namespace
