@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   cal::DiagnoseSettings ds;
   ds.candidates = {"wind", "translational_lift", "climb", "payload_mass"};
   const cal::Diagnosis d = cal::diagnose(model, v, {prepared}, ds);
-  std::printf("diagnosis (%s):\n", d.validation.c_str());
+  std::printf("diagnosis (%s): %s\n  %s\n", d.validation.c_str(), d.verdict.c_str(), d.conclusion.c_str());
   for (const auto& c : d.candidates)
     std::printf("  %-18s held-out RMSE %5.1f W, %5.1f %% better: %s\n", c.effect.c_str(), c.rmse_w, c.improvement_pct,
                 c.summary.c_str());
