@@ -161,3 +161,14 @@ TEST(Verdict, SettingsOutOfRangeNamed) {
     EXPECT_NE(std::string(e.what()).find("p_value"), std::string::npos) << e.what();
   }
 }
+
+// Drag at twice the paper's area, diagnosed without drag: wind (drag at air speed, 3 coefficients)
+// fits as well, but the simpler parasitic_drag is kept (a stand-in gives way to the real effect).
+TEST(Verdict, DragAtTwiceStrengthFoundNotItsWindStandIn) {
+  Vehicle v = test::iris();
+  v.drag_area_m2 *= 2.0;
+  const auto log = test::simulateLog(buildModel(v, kPaper), kSeed);
+  const Vehicle iris = test::iris();
+  const auto d = diagnose(buildModel(iris, {"hover", "kinetic"}), iris, {log});
+  expectFound(d, {"parasitic_drag"});
+}
