@@ -205,7 +205,7 @@ void registerDiagnose(CLI::App& app) {
                   "False-alarm probability of keeping a candidate (held-out likelihood ratio on effective samples)")
       ->check(CLI::Range(1e-9, 0.1))
       ->capture_default_str();
-  addEffectFileOption(cmd, o->effect_files, "user-defined effects (JSON model file) tried as candidates too");
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects tried as candidates too");
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
@@ -287,7 +287,7 @@ void registerFit(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Comma-separated effects to fit")->capture_default_str();
   cmd->add_option("--log", o->logs, "Training log: CSV, .bin or .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
-  addEffectFileOption(cmd, o->effect_files, "user-defined effects (JSON model file) that --effects may name");
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects that --effects may name");
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
@@ -371,7 +371,7 @@ void registerSimulate(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Effects of the true model (hidden ones included)")->capture_default_str();
   cmd->add_option("--set", o->sets, "Coefficient of the true model, effect.coefficient=value (repeatable), "
                                     "e.g. wind.wind_east=3");
-  addEffectFileOption(cmd, o->effect_files, "user-defined effects (JSON model file) that --effects may name");
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects that --effects may name");
   cmd->add_option("--path", o->path, "Waypoints x y z [m] per line (default: a 160 m x 50 m lawnmower at 15 m)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--rate", o->sim.rate_hz, "Sample rate [Hz]")->check(CLI::Range(0.1, 1000.0))->capture_default_str();
