@@ -1,4 +1,5 @@
 // Model versus measurement on flight logs: replay, diagnose, fit, simulate (issue 6).
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -7,6 +8,7 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "diagnose_output.hpp"
 #include "log_inputs.hpp"
 #include "log_json.hpp"
 #include "replay_mission.hpp"
@@ -14,6 +16,7 @@
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/logs/log_io.hpp"
 #include "wattswath/calibration/plan_prediction.hpp"
+#include "wattswath/calibration/user_effect.hpp"
 #include "wattswath/energy/tolerances.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -158,28 +161,51 @@ void registerReplay(CLI::App& app) {
   });
 }
 
+// --effect-file FILE (repeatable): user-defined effects (calibration/user_effect.hpp).
+void addEffectFileOption(CLI::App* cmd, std::vector<std::string>& files, const std::string& what) {
+  cmd->add_option("--effect-file", files, "JSON model file of " + what + " (repeatable; README, user-defined effects)")
+      ->check(CLI::ExistingFile);
+}
+
+std::vector<calibration::FormulaEffectSpec> readEffectFiles(const std::vector<std::string>& files) {
+  std::vector<calibration::FormulaEffectSpec> out;
+  for (const auto& f : files) {
+    const auto specs = calibration::readEffectFile(f);
+    out.insert(out.end(), specs.begin(), specs.end());
+  }
+  return out;
+}
+
 void registerDiagnose(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
     std::vector<std::string> logs;
     logs::LogReadOptions read;
-    int folds = 3;
+    int folds = 5;
+    double p_value = 1e-3;
+    std::vector<std::string> effect_files;
     MeasurementReport measurement;
     bool json = false;
     std::string report, report_svg;
     bool force = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("diagnose", "Rank the physical effects missing from a model by the held-out error "
-                                             "reduction they bring, with fitted coefficients in physical terms");
+  auto* cmd = app.add_subcommand("diagnose", "Say which physical effect a model is missing (kept only when its held-out "
+                                             "improvement is significant against the data's noise), that nothing is, "
+                                             "or that no candidate explains the residual and which signals carry it");
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--effects", o->effects, "Comma-separated effects of the model to diagnose")->capture_default_str();
   cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable; 2+ logs: leave-one-flight-out)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--folds", o->folds, "Time-block folds when only one log is given")
+  cmd->add_option("--folds", o->folds, "Contiguous time blocks held out in turn when only one log is given")
       ->check(CLI::Range(2, 10))
       ->capture_default_str();
+  cmd->add_option("--p-value", o->p_value,
+                  "False-alarm probability of keeping a candidate (held-out likelihood ratio on effective samples)")
+      ->check(CLI::Range(1e-9, 0.1))
+      ->capture_default_str();
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects tried as candidates too");
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
@@ -187,12 +213,17 @@ void registerDiagnose(CLI::App& app) {
   cmd->callback([o]() {
     auto inputs = o->logs;
     inputs.push_back(o->vehicle);
+    inputs.insert(inputs.end(), o->effect_files.begin(), o->effect_files.end());
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
-    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto user = readEffectFiles(o->effect_files);
+    const auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), user);
     const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     calibration::DiagnoseSettings s;
+    for (const auto& u : user)
+      if (!model.has(u.name)) s.extra_candidates.push_back(calibration::makeFormulaEffect(u, v));
     s.folds = o->folds;
+    s.p_value = o->p_value;
     progress("diagnosing " + std::to_string(logs.size()) + " log(s)");
     const auto d = calibration::diagnose(model, v, logs, s);
     if (!o->report.empty() || !o->report_svg.empty()) {
@@ -200,73 +231,49 @@ void registerDiagnose(CLI::App& app) {
       data.title = "wattswath diagnosis";
       data.facts.insert(data.facts.begin(), {{"vehicle", v.name},
                                              {"model", o->effects + " (as given by the vehicle's physics)"},
-                                             {"validation", d.validation}});
+                                             {"validation", d.validation},
+                                             {"verdict", d.verdict + ": " + d.conclusion}});
       for (const auto& st : d.staircase) data.staircase.push_back({st.label, st.metrics.rmse_w});
       data.error_label = "held-out sample RMSE";
       data.diagnosis = diagnosisRows(d);
+      data.verdict = "Verdict: " + d.verdict + ". " + d.conclusion;
+      const bool any = std::any_of(d.signatures.begin(), d.signatures.end(), [](const auto& g) { return g.significant; });
+      for (const auto& g : d.signatures) {  // the significant signals, or the three leads
+        if (d.verdict != "unexplained" || data.signal_curves.size() >= 3 || (any && !g.significant)) break;
+        report::SignalCurve sc{g.signal, g.unit, g.sentence, {}, {}};
+        for (const auto& b : g.bins) {
+          sc.x.push_back(0.5 * (b.lo + b.hi));
+          sc.residual.push_back(b.residual_w);
+        }
+        data.signal_curves.push_back(std::move(sc));
+      }
       writeReport(report::validationReport(data), o->report, o->report_svg, o->force);
     }
     if (o->json) {
-      json cands = json::array();
-      for (const auto& c : d.candidates) {
-        json coeffs = json::object(), sig = json::object(), units = json::object();
-        for (const auto& x : c.coefficients) {
-          coeffs[x.name] = x.value;
-          sig[x.name] = std::isfinite(x.sigma) ? json(x.sigma) : json(nullptr);
-          units[x.name] = x.unit;
-        }
-        cands.push_back({{"effect", c.effect},
-                         {"rmse_w", c.rmse_w},
-                         {"improvement_pct", c.improvement_pct},
-                         {"energy_error_pct", c.energy_error_pct},
-                         {"leg_energy_mape_pct", c.leg_energy_mape_pct},
-                         {"coefficients", coeffs},
-                         {"uncertainty", sig},
-                         {"units", units},
-                         {"identifiability", identifiabilityJson(c.coefficients)[c.effect]},
-                         {"summary", c.summary},
-                         {"indistinct_from", c.indistinct_from},
-                         {"notes", c.notes}});
-      }
-      json stair = json::array();
-      for (const auto& st : d.staircase) {
-        stair.push_back({{"label", st.label},
-                         {"rmse_w", st.metrics.rmse_w},
-                         {"energy_error_pct", st.metrics.energy_error_pct},
-                         {"leg_energy_mape_pct", st.metrics.leg_energy_mape_pct}});
-      }
       json base = metricsJson(d.baseline);
       base["validation"] = d.validation;
-      printJson({{"effects", model.effectNames()},
-                 {"physics", metricsJson(d.physics)},
-                 {"baseline", base},
-                 {"candidates", cands},
-                 {"staircase", stair},
-                 {"flights", flightsJson(d.physics_replay)},
-                 {"residuals", residualsJson(d.residuals)},
-                 {"measurement", o->measurement.toJson()}});
+      json out = diagnosisJson(d);
+      out.update({{"effects", model.effectNames()},
+                  {"physics", metricsJson(d.physics)},
+                  {"baseline", base},
+                  {"flights", flightsJson(d.physics_replay)},
+                  {"residuals", residualsJson(d.residuals)},
+                  {"measurement", o->measurement.toJson()}});
+      printJson(out);
       return;
     }
     o->measurement.print();
     std::cout << "validation: " << d.validation << "\n";
     printMetrics("model as given (vehicle physics)", d.physics);
     printMetrics("model refitted (held-out)", d.baseline);
-    std::cout << "candidates, best first (held-out RMSE after adding the effect):\n";
-    for (const auto& c : d.candidates) {
-      std::cout << "  " << c.effect << ": " << c.rmse_w << " W (" << c.improvement_pct << " %) - " << c.summary << "\n";
-      if (!c.indistinct_from.empty()) {
-        std::cout << "    cannot be told apart from:";
-        for (const auto& n : c.indistinct_from) std::cout << " " << n;
-        std::cout << "\n";
-      }
-    }
+    printDiagnosis(d);
   });
 }
 
 void registerFit(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects;
-    std::vector<std::string> logs, test_logs;
+    std::vector<std::string> logs, test_logs, effect_files;
     logs::LogReadOptions read;
     MeasurementReport measurement;
     bool json = false;
@@ -280,6 +287,7 @@ void registerFit(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Comma-separated effects to fit")->capture_default_str();
   cmd->add_option("--log", o->logs, "Training log: CSV, .bin or .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--test-log", o->test_logs, "Test log (repeatable)")->check(CLI::ExistingFile);
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects that --effects may name");
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
   addJsonFlag(cmd, o->json);
@@ -288,9 +296,10 @@ void registerFit(CLI::App& app) {
     auto inputs = o->logs;
     inputs.insert(inputs.end(), o->test_logs.begin(), o->test_logs.end());
     inputs.push_back(o->vehicle);
+    inputs.insert(inputs.end(), o->effect_files.begin(), o->effect_files.end());
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
-    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), readEffectFiles(o->effect_files));
     const auto train = readCheckedLogs(o->logs, o->read, v, o->measurement);
     const auto test = readCheckedLogs(o->test_logs, o->read, v, o->measurement);
     const auto r = calibration::fitAndCompare(model, train, test);
@@ -351,7 +360,7 @@ void registerFit(CLI::App& app) {
 void registerSimulate(CLI::App& app) {
   struct Opts {
     std::string vehicle, effects = kPaperEffects, out, path;
-    std::vector<std::string> sets;
+    std::vector<std::string> sets, effect_files;
     calibration::SimulationSettings sim;
     bool json = false, force = false;
   };
@@ -362,6 +371,7 @@ void registerSimulate(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Effects of the true model (hidden ones included)")->capture_default_str();
   cmd->add_option("--set", o->sets, "Coefficient of the true model, effect.coefficient=value (repeatable), "
                                     "e.g. wind.wind_east=3");
+  addEffectFileOption(cmd, o->effect_files, "user-defined effects that --effects may name");
   cmd->add_option("--path", o->path, "Waypoints x y z [m] per line (default: a 160 m x 50 m lawnmower at 15 m)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--rate", o->sim.rate_hz, "Sample rate [Hz]")->check(CLI::Range(0.1, 1000.0))->capture_default_str();
@@ -374,9 +384,11 @@ void registerSimulate(CLI::App& app) {
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
-    checkWritable(o->out, o->force, {o->vehicle, o->path});
+    auto inputs = o->effect_files;
+    inputs.insert(inputs.end(), {o->vehicle, o->path});
+    checkWritable(o->out, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
-    auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), readEffectFiles(o->effect_files));
     for (const auto& s : o->sets) {
       const auto dot = s.find('.'), eq = s.find('=');
       if (dot == std::string::npos || eq == std::string::npos || eq < dot) {

@@ -186,8 +186,9 @@ std::vector<report::DiagnosisRow> diagnosisRows(const calibration::Diagnosis& d)
       for (const auto& n : c.indistinct_from) meaning += " " + n;
       meaning += ")";
     }
-    // The best candidate with a real held-out gain is the one the staircase adds.
-    rows.push_back({c.effect, c.improvement_pct, fitted, meaning, i == 0 && c.improvement_pct > 0.0});
+    if (!c.kept) meaning += " [not kept: " + c.why_not_kept + "]";
+    // Kept: it passed the stopping rule in the first round of the search (diagnose.hpp).
+    rows.push_back({c.effect, c.improvement_pct, fitted, meaning, c.kept});
   }
   return rows;
 }

@@ -38,11 +38,11 @@ int main(int argc, char** argv) {
               r.flight.modelled_j, r.flight.errorPct(), before.rmse_w, prepared.legs.size());
 
   // Diagnose: try candidate effects, each fitted with the model's own coefficients, ranked by
-  // held-out error (interleaved time blocks of this one log).
+  // held-out error (contiguous time blocks of this one log).
   cal::DiagnoseSettings ds;
   ds.candidates = {"wind", "translational_lift", "climb", "payload_mass"};
   const cal::Diagnosis d = cal::diagnose(model, v, {prepared}, ds);
-  std::printf("diagnosis (%s):\n", d.validation.c_str());
+  std::printf("diagnosis (%s): %s\n  %s\n", d.validation.c_str(), d.verdict.c_str(), d.conclusion.c_str());
   for (const auto& c : d.candidates)
     std::printf("  %-18s held-out RMSE %5.1f W, %5.1f %% better: %s\n", c.effect.c_str(), c.rmse_w, c.improvement_pct,
                 c.summary.c_str());

@@ -7,12 +7,17 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "diagnose_search.hpp"
 #include "number_text.hpp"
+#include "time_series.hpp"
 
 namespace wattswath::calibration {
 using namespace energy;  // the physics this library compares with measurements
 using detail::num;
 namespace {
+
+// A residual within this factor of the white noise, carrying no tested signal, is explained.
+constexpr double kExplainedRatio = 1.5;
 
 std::string pm(double v, double sigma, int digits = 3) {
   std::string s = num(v, digits);
@@ -24,60 +29,6 @@ std::string pm(double v, double sigma, int digits = 3) {
 std::string pm(const FittedCoefficient& c, double scale = 1.0, int digits = 3) {
   if (!c.determined) return num(c.value * scale, digits);  // describeEffect says why after the description
   return pm(c.value * scale, c.sigma * scale, digits);
-}
-
-// Held-out predictions of `start` refitted fold by fold.
-struct Folds {
-  std::vector<std::vector<SampleSet>> train;
-  std::vector<std::vector<SampleSet>> test;
-  std::string label;
-};
-
-Folds makeFolds(const std::vector<PreparedLog>& logs, const DiagnoseSettings& s) {
-  Folds f;
-  if (logs.size() >= 2) {
-    f.label = "leave-one-flight-out (" + std::to_string(logs.size()) + " flights)";
-    for (size_t k = 0; k < logs.size(); ++k) {
-      std::vector<SampleSet> tr, te;
-      for (size_t j = 0; j < logs.size(); ++j) (j == k ? te : tr).push_back({&logs[j], {}});
-      f.train.push_back(tr);
-      f.test.push_back(te);
-    }
-    return f;
-  }
-  const PreparedLog& L = logs.at(0);
-  const int blocks = s.folds * s.blocks_per_fold;
-  f.label = std::to_string(s.folds) + "-fold interleaved time blocks (" + std::to_string(blocks) + " blocks)";
-  const double t0 = L.states.front().t, t1 = L.states.back().t;
-  f.train.assign(s.folds, {SampleSet{&L, {}}});
-  f.test.assign(s.folds, {SampleSet{&L, {}}});
-  for (size_t i = 0; i < L.states.size(); ++i) {
-    const int b = std::min(blocks - 1, static_cast<int>((L.states[i].t - t0) / (t1 - t0) * blocks));
-    const int fold = b % s.folds;
-    for (int k = 0; k < s.folds; ++k) (k == fold ? f.test : f.train)[k][0].index.push_back(static_cast<int>(i));
-  }
-  return f;
-}
-
-// Cross-validated metrics of `start` and the held-out predictions per log.
-ErrorMetrics crossValidate(const EnergyModel& start, const std::vector<PreparedLog>& logs, const Folds& folds,
-                           const FitSettings& fs) {
-  std::vector<std::vector<double>> pred(logs.size());
-  for (size_t j = 0; j < logs.size(); ++j) pred[j].assign(logs[j].states.size(), 0.0);
-  for (size_t k = 0; k < folds.train.size(); ++k) {
-    const FitResult fr = fitModel(start, folds.train[k], fs);
-    for (const auto& set : folds.test[k]) {
-      const size_t j = static_cast<size_t>(set.log - logs.data());
-      if (set.index.empty()) {
-        pred[j] = modelPower(fr.model, *set.log);
-      } else {
-        for (int i : set.index) pred[j][i] = fr.model.power(set.log->states[i]);
-      }
-    }
-  }
-  std::vector<LogReplay> rep;
-  for (size_t j = 0; j < logs.size(); ++j) rep.push_back(assembleReplay(logs[j], pred[j]));
-  return errorMetrics(rep);
 }
 
 std::vector<SampleSet> allOf(const std::vector<PreparedLog>& logs) {
@@ -92,18 +43,6 @@ std::vector<LogReplay> replayAll(const EnergyModel& m, const std::vector<Prepare
   return r;
 }
 
-double correlation(const std::vector<double>& a, const std::vector<double>& b) {
-  const size_t n = a.size();
-  if (n < 3) return 0.0;
-  const double ma = std::accumulate(a.begin(), a.end(), 0.0) / n, mb = std::accumulate(b.begin(), b.end(), 0.0) / n;
-  double sab = 0, saa = 0, sbb = 0;
-  for (size_t i = 0; i < n; ++i) {
-    sab += (a[i] - ma) * (b[i] - mb);
-    saa += (a[i] - ma) * (a[i] - ma);
-    sbb += (b[i] - mb) * (b[i] - mb);
-  }
-  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
-}
 }  // namespace
 
 namespace {
@@ -174,87 +113,100 @@ std::string describeEffect(const std::string& effect, const std::vector<FittedCo
   return s;
 }
 
+namespace {
+void checkSettings(const DiagnoseSettings& s) {
+  auto bad = [](const std::string& f, double v, const std::string& range) {
+    throw std::invalid_argument("DiagnoseSettings." + f + " = " + num(v) + ", expected " + range);
+  };
+  if (s.folds < 2 || s.folds > 10) bad("folds", s.folds, "2..10");
+  if (!(s.p_value >= 1e-9 && s.p_value <= 0.1)) bad("p_value", s.p_value, "1e-9..0.1");
+  if (!(s.min_excess_share >= 0.0 && s.min_excess_share <= 1.0)) bad("min_excess_share", s.min_excess_share, "0..1");
+  if (s.max_effects < 1 || s.max_effects > 10) bad("max_effects", s.max_effects, "1..10");
+}
+
+// Residual of `m` on every log, concatenated [W] (modelled - measured), and the modelled power per log.
+std::vector<double> residualOf(const EnergyModel& m, const std::vector<PreparedLog>& logs,
+                               std::vector<std::vector<double>>* power = nullptr) {
+  std::vector<double> r;
+  for (const auto& l : logs) {
+    const auto p = modelPower(m, l);
+    for (size_t i = 0; i < p.size(); ++i) r.push_back(p[i] - l.measured[i]);
+    if (power) power->push_back(p);
+  }
+  return r;
+}
+
+double rmsOf(const std::vector<double>& r) {
+  double s = 0.0;
+  for (double x : r) s += x * x;
+  return r.empty() ? 0.0 : std::sqrt(s / r.size());
+}
+
+// The verdict from the found effects and the structure the final residual keeps: a significant
+// signature, or a variance above the white noise's by more than about 4 standard errors of the
+// noise estimate (6 / sqrt(n) relative: the median-difference estimate has about 1.5 / sqrt(n)).
+void conclude(Diagnosis& d) {
+  std::vector<const ResidualSignature*> sig;
+  for (const auto& g : d.signatures)
+    if (g.significant) sig.push_back(&g);
+  size_t n = 0;
+  for (const auto& p : d.final_power) n += p.size();
+  const double ratio = d.noise_w > 0.0 ? d.final_rmse_w / d.noise_w : 1.0;
+  const bool excess = ratio * ratio - 1.0 > 6.0 / std::sqrt(std::max<double>(1.0, static_cast<double>(n)));
+  const std::string noise = "residual " + num(d.final_rmse_w, 3) + " W against a white noise of " + num(d.noise_w, 3) +
+                            " W (" + num(ratio, 3) + "x)";
+  std::string found;
+  for (const auto& f : d.found) found += (found.empty() ? "" : " and ") + f.effect;
+  if (sig.empty() && !excess && ratio <= kExplainedRatio) {
+    d.verdict = d.found.empty() ? "nothing_missing" : "missing_effect";
+    d.conclusion = d.found.empty() ? "Nothing is missing: no candidate improves the held-out error significantly and "
+                                     "the residual carries none of the tested signals (" + noise + ")."
+                                   : "Missing: " + found + ". With it the residual carries none of the tested signals (" +
+                                         noise + ").";
+    return;
+  }
+  d.verdict = "unexplained";
+  d.conclusion = (d.found.empty() ? std::string("No known candidate explains the residual")
+                                  : "Found " + found + ", but a structure remains that no candidate explains") +
+                 " (" + noise + ", correlated in time).";
+  if (sig.empty()) {
+    d.conclusion += " No single tested signal carries it significantly; the strongest are listed as leads.";
+    for (size_t k = 0; k < d.signatures.size() && k < 3; ++k) sig.push_back(&d.signatures[k]);
+  }
+  std::vector<std::string> said;  // speed and speed squared share a sentence: say it once
+  for (size_t k = 0; k < sig.size() && said.size() < 3; ++k) {
+    if (std::find(said.begin(), said.end(), sig[k]->sentence) != said.end()) continue;
+    d.conclusion += std::string(said.empty() ? " It " : " It also ") + sig[k]->sentence + " (" + sig[k]->signal + ", " +
+                    num(100.0 * sig[k]->strength, 2) + " % of its variance).";
+    said.push_back(sig[k]->sentence);
+  }
+}
+}  // namespace
+
 Diagnosis diagnose(const EnergyModel& model, const Vehicle& v, const std::vector<PreparedLog>& logs,
                    const DiagnoseSettings& s) {
   if (logs.empty()) throw std::invalid_argument("diagnose: no logs");
-  if (s.folds < 2 || s.folds > 10) throw std::invalid_argument("DiagnoseSettings.folds = " + std::to_string(s.folds) + ", expected 2..10");
-  if (s.blocks_per_fold < 1 || s.blocks_per_fold > 50) {
-    throw std::invalid_argument("DiagnoseSettings.blocks_per_fold = " + std::to_string(s.blocks_per_fold) +
-                                ", expected 1..50");
-  }
+  checkSettings(s);
   Diagnosis d;
-  const Folds folds = makeFolds(logs, s);
+  const detail::Folds folds = detail::makeFolds(logs, s);
   d.validation = folds.label;
   d.physics_replay = replayAll(model, logs);
   d.physics = errorMetrics(d.physics_replay);
   d.residuals = residualTables(d.physics_replay);
-  d.baseline = crossValidate(model, logs, folds, s.fit);
-  d.staircase.push_back({"vehicle physics (no fit)", d.physics});
-  d.staircase.push_back({"refit " + [&] {
-                           std::string n;
-                           for (const auto& e : model.effectNames()) n += (n.empty() ? "" : ",") + e;
-                           return n;
-                         }(),
-                         d.baseline});
-
-  const auto all = allOf(logs);
-  const FitResult base_fit = fitModel(model, all, s.fit);
-  std::vector<double> base_power;
-  for (const auto& l : logs) {
-    const auto p = modelPower(base_fit.model, l);
-    base_power.insert(base_power.end(), p.begin(), p.end());
-  }
-  std::vector<std::string> names = s.candidates;
-  if (names.empty()) {
-    for (const auto& n : knownEffectNames()) {
-      if (model.has(n) || (n == "parasitic_drag" && model.has("wind"))) continue;
-      names.push_back(n);
-    }
-  }
-  std::vector<std::vector<double>> contribution;
-  for (const auto& name : names) {
-    if (model.has(name)) continue;
-    const EnergyModel m = withCandidate(model, name, v);
-    CandidateResult c;
-    c.effect = name;
-    const ErrorMetrics cv = crossValidate(m, logs, folds, s.fit);
-    c.rmse_w = cv.rmse_w;
-    c.energy_error_pct = cv.energy_error_pct;
-    c.leg_energy_mape_pct = cv.leg_energy_mape_pct;
-    c.improvement_pct = d.baseline.rmse_w > 0 ? 100.0 * (d.baseline.rmse_w - cv.rmse_w) / d.baseline.rmse_w : 0.0;
-    const FitResult full = fitModel(m, all, s.fit);
-    for (const auto& fc : full.coefficients)
-      if (fc.effect == name) c.coefficients.push_back(fc);
-    c.summary = describeEffect(name, full.coefficients);
-    c.notes = full.notes;
-    std::vector<double> contrib;
-    size_t k = 0;
-    for (const auto& l : logs) {
-      const auto p = modelPower(full.model, l);
-      for (double x : p) contrib.push_back(x - base_power[k++]);
-    }
-    contribution.push_back(std::move(contrib));
-    d.candidates.push_back(std::move(c));
-  }
-  // Effects whose fitted power contributions are nearly proportional cannot be told apart.
-  for (size_t i = 0; i < d.candidates.size(); ++i) {
-    for (size_t j = i + 1; j < d.candidates.size(); ++j) {
-      if (d.candidates[i].improvement_pct < 0.5 || d.candidates[j].improvement_pct < 0.5) continue;
-      if (correlation(contribution[i], contribution[j]) > s.indistinct_correlation) {
-        d.candidates[i].indistinct_from.push_back(d.candidates[j].effect);
-        d.candidates[j].indistinct_from.push_back(d.candidates[i].effect);
-      }
-    }
-  }
-  std::stable_sort(d.candidates.begin(), d.candidates.end(),
-                   [](const CandidateResult& a, const CandidateResult& b) { return a.improvement_pct > b.improvement_pct; });
-  if (!d.candidates.empty()) {
-    ErrorMetrics best;
-    best.rmse_w = d.candidates[0].rmse_w;
-    best.energy_error_pct = d.candidates[0].energy_error_pct;
-    best.leg_energy_mape_pct = d.candidates[0].leg_energy_mape_pct;
-    d.staircase.push_back({"+ " + d.candidates[0].effect, best});
-  }
+  const detail::Evaluation base = detail::evaluate(model, {}, logs, folds, s.fit);
+  d.baseline = base.heldout;
+  std::string own;
+  for (const auto& e : model.effectNames()) own += (own.empty() ? "" : ",") + e;
+  const StaircaseStep physics{"vehicle physics (no fit)", d.physics}, refit{"refit " + own, d.baseline};
+  const auto base_res = residualOf(base.full.model, logs);
+  d.noise_w = detail::whiteNoiseSigma(base_res);
+  d.autocorrelation_time = detail::autocorrelationTime(base_res);
+  const detail::Evaluation fin = detail::searchEffects(model, v, logs, folds, s, d.noise_w, base, d);
+  d.staircase.insert(d.staircase.begin(), {physics, refit});
+  d.final_heldout = fin.heldout;
+  d.final_rmse_w = rmsOf(residualOf(fin.full.model, logs, &d.final_power));
+  d.signatures = residualSignatures(logs, d.final_power, s.signatures);
+  conclude(d);
   return d;
 }
 

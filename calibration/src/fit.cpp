@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "excitation.hpp"
+#include "time_series.hpp"
 #include "number_text.hpp"
 #include "wattswath/calibration/diagnose.hpp"
 
@@ -256,7 +257,8 @@ void listCoefficients(FitResult& out, const std::vector<std::vector<std::string>
 void addUncertainty(FitResult& out, const Blocks& b, ceres::Problem& problem, double final_cost, size_t n) {
   size_t p = 0;
   for (const auto& c : out.coefficients) p += c.determined ? 1 : 0;
-  const double s2 = n > p ? 2.0 * final_cost / (n - p) : 0.0;
+  // Correlated residuals carry n / tau independent samples' worth of information (issue 18).
+  const double s2 = n > p ? 2.0 * final_cost / (n - p) * out.autocorrelation_time : 0.0;
   ceres::Covariance::Options copt;
   copt.algorithm_type = ceres::DENSE_SVD;
   copt.null_space_rank = -1;
@@ -338,6 +340,7 @@ FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data,
   for (size_t i = 0; i < res.size(); ++i) res[i] = out.model.power(*pts.state[i]) - pts.measured[i];
   out.train_rmse_w = rms(res);
   out.samples = static_cast<int>(res.size());
+  out.autocorrelation_time = detail::autocorrelationTime(res);
   listCoefficients(out, held);
   if (b.any_free) addUncertainty(out, b, problem, final_cost, res.size());
   for (const auto& c : out.coefficients) {

@@ -81,10 +81,14 @@ PreparedLog prepareLog(const FlightLog& log, const SegmentSettings& set, const s
   P.weight.resize(n);
   P.phase.resize(n);
   P.position.resize(n);
+  P.voltage.resize(n);
+  P.current.resize(n);
   std::vector<double> t(n), hs(n);
   for (int i = 0; i < n; ++i) {
     t[i] = S[i].t;
     P.position[i] = S[i].position;
+    P.voltage[i] = S[i].voltage;
+    P.current[i] = S[i].current;
     P.measured[i] = std::isfinite(S[i].power) ? S[i].power : S[i].voltage * S[i].current;
     if (!std::isfinite(P.measured[i])) {
       throw std::invalid_argument(log.source + ": sample " + std::to_string(i) + " (t = " + std::to_string(t[i]) +

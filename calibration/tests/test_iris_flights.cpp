@@ -39,6 +39,16 @@ TEST(IrisFlights, DiagnoseJsonContract) {
   const auto j = nlohmann::json::parse(r.output);
   EXPECT_GT(j.at("baseline").at("rmse_w").get<double>(), 0.0);
   EXPECT_TRUE(j.at("baseline").contains("energy_error_pct"));
+  // Issue 18: a verdict, the found effects and, when unexplained, the signals carrying the residual.
+  const auto verdict = j.at("verdict").get<std::string>();
+  EXPECT_TRUE(verdict == "missing_effect" || verdict == "nothing_missing" || verdict == "unexplained") << verdict;
+  EXPECT_TRUE(j.at("found").is_array());
+  for (const auto& g : j.at("signatures")) {
+    for (const char* k : {"signal", "strength", "sentence"}) EXPECT_TRUE(g.contains(k)) << k;
+  }
+  if (verdict == "unexplained") {
+    EXPECT_FALSE(j.at("signatures").empty());
+  }
   const auto& c = j.at("candidates");
   ASSERT_GE(c.size(), 5u);
   for (const auto& x : c) {

@@ -96,6 +96,25 @@ std::string residualChart(const std::vector<double>& x, const std::vector<double
   return renderSvg(c);
 }
 
+/// The diagnosis's verdict and the residual (found effects fitted) against the signals carrying it.
+void addSignalCurves(HtmlReport& r, const ValidationReportData& d) {
+  if (d.verdict.empty() && d.signal_curves.empty()) return;
+  r.heading("What the residual keeps");
+  if (!d.verdict.empty()) r.paragraph(d.verdict);
+  for (const auto& g : d.signal_curves) {
+    LineChart c;
+    c.title = "Residual against " + g.signal;
+    c.x = {g.signal, g.unit};
+    c.y = {"measured - modelled", "W"};
+    c.y_ref = 0.0;
+    c.height = 300;
+    Series s("binned mean", g.x, g.residual);
+    s.style = SeriesStyle::LineAndPoints;
+    c.series.push_back(s);
+    r.figure({"validation-signal-" + g.signal, renderSvg(c),
+              "Residual with the found effects fitted, binned by " + g.signal + ": it " + g.sentence + "."});
+  }
+}
 }  // namespace
 
 HtmlReport validationReport(const ValidationReportData& d) {
@@ -190,6 +209,7 @@ void addValidation(HtmlReport& r, const ValidationReportData& d) {
       r.figure({"validation-residual-heading", residualChart(deg, res, a, d.residual_bins), ""});
     }
   }
+  addSignalCurves(r, d);
   if (!d.legs.empty()) {
     r.heading("Leg energies");
     LineChart c;

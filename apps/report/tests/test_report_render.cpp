@@ -193,17 +193,19 @@ TEST(ReportRender, TurnsCommandReport) {
 TEST(ReportRender, DiagnoseCommandReport) {
   const std::string f = sharedData("iris-flights/2017-10-18_1436_energy14.csv");
   if (!fs::exists(f)) GTEST_SKIP() << "no " << f;
-  checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --log '" + f + "'", "cli-diagnose", 6);
+  // 6 figures plus the residual against the 2 signals carrying it (unexplained: speed squared, speed).
+  checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "' --log '" + f + "'", "cli-diagnose", 8);
 }
 TEST(ReportRender, DiagnoseCommandReportOfThreeFlights) {
-  // Power over time for every log: 3 power figures, 3 residual plots, leg energies, staircase.
+  // Power over time for every log: 3 power figures, 3 residual plots, leg energies, staircase, and
+  // the residual against the 3 signals carrying it (unexplained: speed, speed squared, climb rate).
   std::string logs;
   for (const char* name : {"2017-10-18_1436_energy14.csv", "2017-10-18_1449_normal29.csv", "2017-11-20_1610_energy14.csv"}) {
     const std::string f = sharedData(std::string("iris-flights/") + name);
     if (!fs::exists(f)) GTEST_SKIP() << "no " << f;
     logs += " --log '" + f + "'";
   }
-  checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "'" + logs, "cli-diagnose-3", 8);
+  checkCommandReport("diagnose --vehicle '" + sourcePath("data/vehicles/iris.json") + "'" + logs, "cli-diagnose-3", 11);
 }
 TEST(ReportRender, PredictCommandReport) {
   // Map, speed, altitude and battery of the IRIS+ mission flown by the ArduCopter 3.x model.

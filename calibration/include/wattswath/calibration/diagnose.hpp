@@ -4,11 +4,13 @@
 /// effect coefficients (Ceres, private), cross-validated ranking of candidate effects, before /
 /// after comparisons on training and test logs, and simulated logs with hidden effects.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/calibration/replay.hpp"
+#include "wattswath/calibration/residual_signals.hpp"
 
 namespace wattswath::calibration {
 
@@ -41,7 +43,8 @@ struct FittedCoefficient {
   std::string unit;      ///< SI unit
   std::string meaning;   ///< plain-language meaning
   double value = 0.0;    ///< fitted value, in `unit`
-  double sigma = 0.0;    ///< formal 1-sigma (Ceres covariance times residual variance; NaN if unknown)
+  double sigma = 0.0;    ///< 1-sigma: Ceres covariance times residual variance times the residual's
+                         ///< autocorrelation time (NaN if unknown)
   bool at_bound = false; ///< true when the fit stopped on a sign/range bound
   /// False when the data do not determine this coefficient: they lack the excitation it needs
   /// (ExcitationSettings; it then keeps the value it was given, the vehicle's physical value, and is
@@ -62,6 +65,9 @@ struct FitResult {
   double train_rmse_w = 0.0;                    ///< [W] RMSE on the samples used by the fit
   int samples = 0;                              ///< samples used
   std::vector<std::string> notes;               ///< correlated coefficients, singular covariance, ...
+  /// [samples] integrated autocorrelation time of the residual; the sigmas are the formal ones
+  /// times sqrt(of it), since correlated samples carry less information than independent ones
+  double autocorrelation_time = 1.0;
 };
 
 /// Samples of one prepared log taken into a fit or an evaluation.
@@ -77,11 +83,23 @@ FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data,
 /// Settings of a diagnosis.
 struct DiagnoseSettings {
   FitSettings fit;                   ///< fit settings
-  int folds = 3;                     ///< [-] folds of interleaved time blocks for one log; 2..10
-  int blocks_per_fold = 4;           ///< [-] time blocks per fold (a fold spans the whole flight); 1..50
+  int folds = 5;                     ///< [-] contiguous time blocks for one log, each held out in turn; 2..10
   double indistinct_correlation = 0.9;  ///< [-] two effects whose fitted power contributions
                                         ///< correlate above this cannot be told apart; 0..1
   std::vector<std::string> candidates;  ///< effects to try (empty: every known effect not in the model)
+  /// User-defined effects (user_effect.hpp) tried as candidates too, after the built-in ones
+  std::vector<std::shared_ptr<const energy::Effect>> extra_candidates;
+  /// [-] an effect is kept only when its held-out likelihood ratio n_eff ln(MSE_before / MSE_after)
+  /// exceeds the chi-square quantile at 1 - p_value for its number of coefficients; n_eff = n / tau
+  /// with tau the autocorrelation time of the held-out residual with the effect (a stand-in that
+  /// leaves a correlated residual counts fewer independent samples); 1e-9..0.1. 1e-3 per candidate
+  /// is about 1 % per round of 7 candidates.
+  double p_value = 1e-3;
+  /// [-] ... and only when it removes at least this share of the held-out variance above the
+  /// white noise (a stand-in that fits part of an unknown structure removes less); 0..1
+  double min_excess_share = 0.5;
+  int max_effects = 4;               ///< [-] rounds of the greedy search at most; 1..10
+  SignatureSettings signatures;      ///< tests of the residual against the signal library
 };
 
 /// One candidate effect tried by the diagnosis.
@@ -95,6 +113,14 @@ struct CandidateResult {
   std::string summary;                          ///< physical reading, e.g. "drag area 0.019 +- 0.002 m^2"
   std::vector<std::string> indistinct_from;     ///< candidates this one cannot be told apart from
   std::vector<std::string> notes;               ///< fit notes (correlations, bounds)
+  /// [-] held-out likelihood ratio n_eff ln(MSE_before / MSE_after), n_eff = n / tau of the
+  /// residual with the effect (DiagnoseSettings::p_value)
+  double lr_statistic = 0.0;
+  double lr_threshold = 0.0;  ///< [-] chi-square quantile it had to exceed
+  double effective_samples = 0.0;  ///< [-] n / tau of the held-out residual with the effect
+  double excess_share = 0.0;  ///< [-] share of the held-out variance above the white noise it removes
+  bool kept = false;          ///< true when it passed the stopping rule (significant, explains, not at a bound)
+  std::string why_not_kept;   ///< in words, when not kept
 };
 
 /// One step of the error staircase: a model and its held-out errors.
@@ -105,18 +131,37 @@ struct StaircaseStep {
 
 /// What the diagnosis found.
 struct Diagnosis {
-  std::string validation;                   ///< "leave-one-flight-out" or "3-fold interleaved time blocks"
+  std::string validation;                   ///< "leave-one-flight-out" or "5 contiguous time blocks"
   ErrorMetrics physics;                     ///< the model as given (vehicle physics), on all data
   ErrorMetrics baseline;                    ///< the model refitted, held-out
-  std::vector<CandidateResult> candidates;  ///< best first (largest held-out improvement)
-  std::vector<StaircaseStep> staircase;     ///< physics -> refit -> + best candidate
+  std::vector<CandidateResult> candidates;  ///< first round, best first (largest held-out improvement)
+  std::vector<StaircaseStep> staircase;     ///< physics -> refit -> + each found effect
   std::vector<LogReplay> physics_replay;    ///< the model as given, per log (for plots)
   std::vector<ResidualTable> residuals;     ///< residual tables of the model as given
+  /// "missing_effect" (found effects leave no structure), "nothing_missing" (no effect kept, no
+  /// structure) or "unexplained" (a structure remains that no candidate explains)
+  std::string verdict;
+  std::vector<CandidateResult> found;       ///< the kept effects in the order they were added
+  std::vector<std::string> search;          ///< the greedy search step by step, in words
+  double noise_w = 0.0;                     ///< [W] white noise of the data (successive differences)
+  double autocorrelation_time = 1.0;        ///< [samples] of the refitted model's residual
+  double final_rmse_w = 0.0;                ///< [W] in-sample RMSE with the found effects fitted
+  ErrorMetrics final_heldout;               ///< held-out metrics with the found effects
+  /// The residual (measured - modelled, found effects fitted) against the signal library,
+  /// strongest significant first
+  std::vector<ResidualSignature> signatures;
+  std::vector<std::vector<double>> final_power;  ///< [W] per log, the model with the found effects
+  std::string conclusion;                   ///< the verdict in one or two sentences
 };
 
-/// Ranks the effects not in `model` by the held-out error reduction they bring when fitted
-/// together with the model's own coefficients. With two or more logs the validation is
-/// leave-one-flight-out, with one log interleaved time blocks.
+/// Greedy search with a stopping rule (issue 18): each round tries the effects not in the model,
+/// fitted together with it; the one with the largest held-out improvement is kept when that
+/// improvement is significant against the residual's own noise and correlation (block bootstrap),
+/// removes most of the variance above the white noise and has no coefficient at a bound; then
+/// each earlier kept effect is tried without (or replaced by a simpler significant candidate)
+/// and removed when it no longer matters. The residual of the final model is tested against the
+/// signal library. Validation: leave-one-flight-out with two or more logs, contiguous time blocks
+/// with one (an effect switching on or off at a time stays fair).
 Diagnosis diagnose(const EnergyModel& model, const Vehicle& v, const std::vector<PreparedLog>& logs,
                    const DiagnoseSettings& s = {});
 

@@ -60,6 +60,8 @@ struct PreparedLog {
   std::vector<int> leg;                ///< leg index of each sample
   std::vector<LegSpan> legs;           ///< legs in time order, covering every sample
   std::vector<Eigen::Vector3d> position;  ///< [m] ENU position per sample
+  std::vector<double> voltage;         ///< [V] battery voltage per sample (NaN when not logged)
+  std::vector<double> current;         ///< [A] battery current per sample (NaN when not logged)
 };
 
 /// Motion states, phases and legs of `log`. With `waypoints` (ENU [m], in flight order) the legs

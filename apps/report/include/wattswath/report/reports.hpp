@@ -119,6 +119,15 @@ struct DiagnosisRow {
   bool accepted = false;              ///< the diagnosis keeps it
 };
 
+/// The residual of a diagnosed model against one signal that carries it (issue 18), binned.
+struct SignalCurve {
+  std::string signal;            ///< e.g. "power_rate"
+  std::string unit;              ///< unit of the signal, e.g. "W/s"
+  std::string sentence;          ///< what kinds of effect leave this signature
+  std::vector<double> x;         ///< bin centres, in `unit`
+  std::vector<double> residual;  ///< [W] mean measured - modelled power in each bin
+};
+
 /// Everything the validation report shows: one or more logs, their samples one after the other
 /// (each log in time order); residual plots pool all logs, power over time is one figure per log.
 struct ValidationReportData {
@@ -140,6 +149,8 @@ struct ValidationReportData {
   std::vector<DiagnosisRow> diagnosis;               ///< candidate effects, best first
   std::string diagnosis_caption = "Candidate effects, best first";  ///< caption of the diagnosis table
   int residual_bins = 12;                            ///< [-] bins of the residual plots, 2..100
+  std::string verdict;                               ///< the diagnosis's verdict in words (empty: none)
+  std::vector<SignalCurve> signal_curves;            ///< residual against the signals carrying it
 };
 
 /// Builds the validation report (power over time, residuals, leg energies, staircase, diagnosis).

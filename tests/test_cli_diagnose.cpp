@@ -1,0 +1,63 @@
+// wattswath diagnose end to end (issue 18): the README's user-defined effect walkthrough - a log
+// simulated with motor heating (data/effects/motor_heating.json, k = 0.06, tau = 60 s) is
+// "unexplained" by the built-in candidates and "missing_effect: motor_heating" once the user's
+// effect file is given - and a malformed effect file is refused with the file, field and value.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "test_util.hpp"
+
+namespace {
+
+using wattswath::test::Outcome;
+using wattswath::test::runCli;
+namespace fs = std::filesystem;
+
+const std::string kEffect = "data/effects/motor_heating.json";
+
+std::string tempPath(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("wattswath_cli_diagnose_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return (dir / name).string();
+}
+
+TEST(CliDiagnose, UserEffectTurnsUnexplainedIntoFound) {
+  const std::string log = tempPath("heated.csv");
+  Outcome r = runCli({"simulate", "--vehicle", "data/vehicles/iris.json", "--effects",
+                      "hover,kinetic,parasitic_drag,motor_heating", "--effect-file", kEffect, "--set",
+                      "motor_heating.k=0.06", "--set", "motor_heating.tau=60", "--rate", "5", "--seed", "11", "--path",
+                      "data/effects/survey_path.txt", "--out", log, "--force"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--log", log, "--json"}, 120);
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("verdict"), "unexplained") << j.at("conclusion");
+  EXPECT_TRUE(j.at("found").empty());
+  ASSERT_FALSE(j.at("signatures").empty());
+  EXPECT_EQ(j.at("signatures")[0].at("signal"), "time") << j.at("conclusion");
+  r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--log", log, "--effect-file", kEffect, "--json"}, 120);
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("verdict"), "missing_effect") << j.at("conclusion");
+  ASSERT_EQ(j.at("found").size(), 1u);
+  EXPECT_EQ(j.at("found")[0].at("effect"), "motor_heating");
+  EXPECT_NEAR(j.at("found")[0].at("coefficients").at("k").get<double>(), 0.06, 0.01);
+  EXPECT_LT(j.at("final").at("rmse_w").get<double>(), j.at("baseline").at("rmse_w").get<double>());
+  EXPECT_TRUE(j.at("signatures").empty());
+}
+
+TEST(CliDiagnose, MalformedEffectFileNamesFileFieldAndValue) {
+  const std::string bad = tempPath("bad_effect.json");
+  std::ofstream(bad) << R"J({"name": "heat", "power": "k * t", "coefficients": [{"name": "k", "unit": "W/s",
+    "value": -1, "lower": 0, "upper": 2}]})J";
+  const Outcome r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--log",
+                            "tests/data/good/log_hover_only.csv", "--effect-file", bad});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find(bad + ": effect.coefficients[0].value = -1, expected within lower 0 and upper 2"), std::string::npos)
+      << r.err;
+}
+
+}  // namespace
