@@ -1,4 +1,5 @@
 // `wattswath coverage`: coverage candidates (boustrophedon or spiral) over a survey area.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -94,6 +95,7 @@ void registerCoverageCommand(CLI::App& app) {
     std::vector<g::CoveragePath> paths;
     std::vector<std::string> problems;
     double required = 0.0, covered = 0.0;
+    g::ContainmentReport outside;  // summed over the regions
     int cells = 0;
     for (size_t r = 0; r < area.regions.size(); ++r) {
       const auto& region = area.regions[r];
@@ -122,6 +124,10 @@ void registerCoverageCommand(CLI::App& app) {
       p.sweep_angle = o->angle_deg * kDeg;
       for (const auto& problem : g::checkPath(p, region)) problems.push_back("region " + std::to_string(r) + ": " + problem);
       const auto report = g::checkCoverage(region, {p}, spacing);
+      const auto c = g::checkContainment(region, p, false);
+      outside.outside_m += c.outside_m;
+      outside.in_holes_m += c.in_holes_m;
+      outside.max_depth_m = std::max(outside.max_depth_m, c.max_depth_m);
       required += report.required_area;
       covered += report.covered_area;
       paths.push_back(std::move(p));
@@ -145,6 +151,9 @@ void registerCoverageCommand(CLI::App& app) {
                  {"turns", turns},
                  {"coverage_pct", coverage_pct},
                  {"cells", cells},
+                 {"outside_area_m", outside.outside_m},
+                 {"in_no_fly_m", outside.in_holes_m},
+                 {"max_outside_depth_m", outside.max_depth_m},
                  {"pattern", o->pattern},
                  {"angle_deg", o->angle_deg},
                  {"spacing_m", spacing},
@@ -155,7 +164,9 @@ void registerCoverageCommand(CLI::App& app) {
                 << "cells:    " << cells << "\n"
                 << "legs:     " << legs << " (" << turns << " turns)\n"
                 << "length:   " << length << " m\n"
-                << "coverage: " << coverage_pct << " %\n";
+                << "coverage: " << coverage_pct << " %\n"
+                << "outside:  " << outside.outside_m << " m outside the area, " << outside.in_holes_m
+                << " m in holes or no-fly zones\n";
       for (const auto& p : problems) std::cout << "problem:  " << p << "\n";
       if (!o->out.empty()) std::cerr << "wrote " << o->out << std::endl;
     }

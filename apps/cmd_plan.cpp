@@ -37,6 +37,7 @@ struct PlanOpts {
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
   double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
   double no_fly_margin = pl::kDefaultNoFlyMargin;
+  double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
   bool force = false, json = false, no_report = false, no_spiral = false;
   std::string report_svg;
 };
@@ -209,6 +210,17 @@ std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFr
   return out;
 }
 
+/// The one-angle plan's angle with one sweep line more or fewer: its energy and coverage (null when
+/// none was built).
+nlohmann::json lineTradeJson(const pl::PlanResult& r) {
+  if (!r.line_count_neighbour) return nullptr;
+  const auto& c = r.line_count_neighbour->candidate;
+  return {{"lines_delta", r.line_count_neighbour->lines_delta},
+          {"sweep_angle_deg", c.sweep_angle_deg},
+          {"energy_j", c.flown.energy},
+          {"coverage_pct", c.coverage_pct}};
+}
+
 /// The plan's JSON (issue 5's keys, baselines, battery, files, notes); runPlan adds the mission.
 nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const PlanOpts& o, const fs::path& dir,
                           const std::vector<std::string>& notes) {
@@ -234,6 +246,7 @@ nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, 
                                                    {"coverage_pct", r.per_cell->coverage_pct},
                                                    {"cell_plans", cellPlansJson(r.per_cell->cell_plans)}}
                                   : nlohmann::json(nullptr)},
+          {"line_count_trade", lineTradeJson(r)},
           {"candidates", r.candidates},
           {"baselines",
            {{"shortest_path", candidateJson(r.shortest_path, e)},
@@ -435,6 +448,7 @@ void runPlan(const PlanOpts& o) {
   ps.corners = pl::cornerStrategyFromString(o.corners);
   ps.camera_max_speed = o.camera_max_speed;
   ps.spirals = !o.no_spiral;
+  ps.overshoot = o.overshoot;
   const auto model = energy::marinsModel(vehicle);
   const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
   const auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
@@ -478,6 +492,10 @@ void runPlan(const PlanOpts& o) {
   if (o.json) {
     auto j = planJsonOf(r, pr, o, dir, notes);
     j["coverage_outside_zones_pct"] = whole_area_pct;
+    const auto inside = pl::planContainment(pr, r.plan.flown.path);
+    j["outside_area_m"] = inside.outside_m;
+    j["in_no_fly_m"] = inside.in_holes_m;
+    j["max_outside_depth_m"] = inside.max_depth_m;
     j["mission"] = missionJson(s, pm, o.no_fly_margin, photo_pct);
     printJson(j);
     return;
@@ -512,6 +530,10 @@ void registerPlanCommand(CLI::App& app) {
       ->check(CLI::Range(0.0, 0.999));
   cmd->add_option("--no-fly-margin", o->no_fly_margin,
                   "distance every flown point keeps from the no-fly zones, for GPS and tracking error [m] (default 2; 0: none)")
+      ->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--overshoot", o->overshoot,
+                  "let sweep lines run on this far beyond the area's boundary to turn there (QGC's turnaround distance) "
+                  "[m] (default 0: every flown point stays inside the area)")
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--camera-max-speed", o->camera_max_speed, "largest ground speed on sweep legs the camera allows [m/s] (0: none)")
       ->check(CLI::Range(0.0, 200.0));

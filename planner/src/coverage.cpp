@@ -49,7 +49,9 @@ Context contextOf(const SurveyProblem& problem, const PlannerSettings& ps) {
   ctx.obstacles = problem.area.holes;
   ctx.obstacles.insert(ctx.obstacles.end(), problem.no_fly.begin(), problem.no_fly.end());
   ctx.clearance = ps.clearance;
-  ctx.run_out = 0.5 * problem.spacing;
+  ctx.run_out = ps.overshoot;  // 0 by default: the lines end on the boundary (issue 22)
+  ctx.inside.outer = problem.area.outer;
+  ctx.inside.holes = ctx.obstacles;
   ctx.overlap_margin = 0.5 * (problem.footprint - problem.spacing);
   return ctx;
 }
@@ -124,6 +126,7 @@ void PlannerSettings::validate() const {
   if (!(ground_station_speed > 0.0 && ground_station_speed <= 200.0))
     bad("ground_station_speed", ground_station_speed, "(0, 200]");
   if (!(clearance > 0.0 && clearance <= 100.0)) bad("clearance", clearance, "(0, 100]");
+  if (!(overshoot >= 0.0 && overshoot <= 100.0)) bad("overshoot", overshoot, "[0, 100]");
   if (exact_max_cells < 0 || exact_max_cells > kGtspExactMaxClusters) bad("exact_max_cells", exact_max_cells, "[0, 12]");
 }
 
@@ -150,7 +153,9 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
       " deg) on " + std::to_string(ps.threads) + " threads");
   const auto ranked = searchAngles(ctx, model, ss, stop, Objective::Energy, ps, &res.candidates, &res.sweep_scan);
   const AngleResult& best = ranked.front();
-  res.plan = bestAnglePlan(ctx, ranked, model, ss, scorer, stop, ps, free);
+  LineCountNeighbour neighbour;
+  res.plan = bestAnglePlan(ctx, ranked, model, ss, scorer, stop, ps, free, &neighbour);
+  if (neighbour.lines_delta != 0) res.line_count_neighbour = neighbour;
   const double plan_angle = res.plan.valid ? res.plan.flown.path.sweep_angle : best.angle;  // [rad]
   // (c) The best spiral needs only the plan's angle (to cut an area with holes into pieces): with a
   // second thread it runs beside the per-cell search and the baselines.
