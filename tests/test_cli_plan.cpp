@@ -73,7 +73,9 @@ void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
     ASSERT_TRUE(b.contains(name)) << name;
     if (b.at(name).is_null()) continue;  // best_spiral may be absent (noted)
     for (const char* k : {"energy_j", "time_s", "length_m"}) EXPECT_TRUE(b.at(name).at(k).is_number()) << name << k;
-    EXPECT_LE(e, b.at(name).at("energy_j").get<double>() * (1 + 1e-12)) << name;
+    if (b.at(name).at("coverage_pct").get<double>() >= 99.0) {  // one that misses 99 % cannot be the plan
+      EXPECT_LE(e, b.at(name).at("energy_j").get<double>() * (1 + 1e-12)) << name;
+    }
   }
   EXPECT_TRUE(j.contains("battery"));
   for (const char* f : {"mission.plan", "mission.waypoints", "path.geojson"})
