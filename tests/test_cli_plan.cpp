@@ -205,7 +205,9 @@ TEST(CliPlan, NoSpiralFliesStraightLinesOnly) {
   checkPlanOutput(j, out);
   EXPECT_EQ(j.at("pattern"), "boustrophedon");
   EXPECT_TRUE(j.at("baselines").at("best_spiral").is_null());
-  for (const auto& c : j.at("per_cell").at("cell_plans")) EXPECT_EQ(c.at("pattern"), "boustrophedon");
+  if (!j.at("per_cell").is_null()) {  // skipped on one cell without obstacles
+    for (const auto& c : j.at("per_cell").at("cell_plans")) EXPECT_EQ(c.at("pattern"), "boustrophedon");
+  }
 }
 
 TEST(CliPlan, CameraFootprintAndCornerStrategy) {

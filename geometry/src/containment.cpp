@@ -34,30 +34,32 @@ void crossingParams(const Point& a, const Point& b, const Ring& ring, std::vecto
 }
 
 // Adds the parts of segment a-b outside the outer ring or inside a hole to `rep`.
-void measureSegment(const PolygonWithHoles& area, const Point& a, const Point& b, double tolerance,
-                    ContainmentReport& rep) {
+void measureSegment(const Ring& outer, const std::vector<Ring>& holes, const Point& a, const Point& b,
+                    double tolerance, ContainmentReport& rep) {
   const double len = (b - a).norm();
   if (len <= 0.0) return;
   std::vector<double> ts{0.0, 1.0};
-  crossingParams(a, b, area.outer, ts);
-  for (const auto& h : area.holes) crossingParams(a, b, h, ts);
+  crossingParams(a, b, outer, ts);
+  for (const auto& h : holes) crossingParams(a, b, h, ts);
   std::sort(ts.begin(), ts.end());
+  // Pieces between consecutive crossings are wholly on one side: each is classified at its middle.
+  ts.erase(std::unique(ts.begin(), ts.end(), [](double u, double v) { return v - u <= 1e-12; }), ts.end());
   for (size_t k = 0; k + 1 < ts.size(); ++k) {
     const double t0 = std::clamp(ts[k], 0.0, 1.0), t1 = std::clamp(ts[k + 1], 0.0, 1.0);
     if (t1 - t0 <= 0.0) continue;
     const Point m = a + 0.5 * (t0 + t1) * (b - a);
-    const Point ends[3] = {a + t0 * (b - a), m, a + t1 * (b - a)};
     auto depthTo = [&](const Ring& r) {
+      const Point ends[3] = {a + t0 * (b - a), m, a + t1 * (b - a)};
       double dmax = 0.0;
       for (const auto& q : ends) dmax = std::max(dmax, distanceToRing(r, q));
       return dmax;
     };
-    if (!insideRing(area.outer, m) && distanceToRing(area.outer, m) > tolerance) {
+    if (!insideRing(outer, m) && distanceToRing(outer, m) > tolerance) {
       rep.outside_m += (t1 - t0) * len;
-      rep.max_depth_m = std::max(rep.max_depth_m, depthTo(area.outer));
+      rep.max_depth_m = std::max(rep.max_depth_m, depthTo(outer));
       continue;
     }
-    for (const auto& h : area.holes) {
+    for (const auto& h : holes) {
       if (insideRing(h, m) && distanceToRing(h, m) > tolerance) {
         rep.in_holes_m += (t1 - t0) * len;
         rep.max_depth_m = std::max(rep.max_depth_m, depthTo(h));
@@ -71,9 +73,7 @@ void measureSegment(const PolygonWithHoles& area, const Point& a, const Point& b
 
 bool segmentLeavesArea(const PolygonWithHoles& area, const Point& a, const Point& b) {
   ContainmentReport rep;
-  PolygonWithHoles outer_only;
-  outer_only.outer = area.outer;
-  measureSegment(outer_only, a, b, tol::kContainment, rep);
+  measureSegment(area.outer, {}, a, b, tol::kContainment, rep);
   return rep.outside_m > 0.0;
 }
 
@@ -92,7 +92,7 @@ ContainmentReport checkContainment(const PolygonWithHoles& area, const CoverageP
     const PathLeg& leg = path.legs[i];
     if (leg.kind == PrimitiveKind::TurnInPlace) continue;  // no length; its point ends a line measured
     if (leg.kind == PrimitiveKind::Line) {
-      measureSegment(area, leg.start, leg.end, tolerance, rep);
+      measureSegment(area.outer, area.holes, leg.start, leg.end, tolerance, rep);
       continue;
     }
     const int n = std::max(1, static_cast<int>(std::ceil(std::abs(leg.turn_angle) / tol::kArcChord)));
@@ -101,7 +101,7 @@ ContainmentReport checkContainment(const PolygonWithHoles& area, const CoverageP
     for (int k = 1; k <= n; ++k) {
       const double a = a0 + leg.turn_angle * k / n;
       const Point q = k == n ? leg.end : Point(leg.center + leg.radius * Point(std::cos(a), std::sin(a)));
-      measureSegment(area, prev, q, tolerance, rep);
+      measureSegment(area.outer, area.holes, prev, q, tolerance, rep);
       prev = q;
     }
   }

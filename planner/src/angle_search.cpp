@@ -13,6 +13,7 @@ namespace wattswath::planner::detail {
 namespace {
 
 constexpr size_t kFinishBest = 8;  // best-ranked angles flown in full before choosing
+constexpr size_t kMaxBatches = 4;  // batches of kFinishBest flown at most while none keeps coverage
 // One line fewer than full coverage needs is tried at an angle when those lines' band still spans
 // this share of the area's extent across the lines (below it the coverage check would refuse it).
 constexpr double kFewerLinesBand = 0.985;
@@ -88,6 +89,17 @@ std::vector<AngleResult> searchAngles(const Context& ctx, const energy::EnergyMo
                                       std::vector<AngleScore>* scan) {
   std::vector<double> coarse;
   for (double a = 0.0; a < 180.0 - 1e-9; a += ps.coarse_step_deg) coarse.push_back(a * kDeg);
+  // The directions of the outline's edges (those at least two spacings long) too: lines along an
+  // edge end nowhere on it, while lines a degree off it cross it and, ending on the boundary since
+  // issue 22, leave a long thin wedge beside it uncovered.
+  const auto& outer = ctx.problem->area.outer;
+  for (size_t i = 0; i < outer.size(); ++i) {
+    const geometry::Point e = outer[(i + 1) % outer.size()] - outer[i];
+    if (e.norm() < 2.0 * ctx.problem->spacing) continue;
+    const double a = normDeg(std::atan2(e.y(), e.x())) * kDeg;
+    const bool known = std::any_of(coarse.begin(), coarse.end(), [&](double c) { return std::abs(c - a) < 1e-6; });
+    if (!known) coarse.push_back(a);
+  }
   auto res = evaluateAngles(ctx, coarse, model, ss, stop, obj, ps.threads, ps.exact_max_cells);
   *count += static_cast<int>(res.size());
   std::sort(res.begin(), res.end(), [](const auto& a, const auto& b) { return a.score < b.score; });
@@ -109,10 +121,11 @@ std::vector<AngleResult> searchAngles(const Context& ctx, const energy::EnergyMo
   return res;
 }
 
-PlanCandidate bestAnglePlan(const Context& ctx, const std::vector<AngleResult>& ranked, const energy::EnergyModel& model,
-                            const SpeedSettings& ss, RouteScorer& scorer, const StopTable& stop,
-                            const PlannerSettings& ps, const std::vector<geometry::PolygonWithHoles>& free,
-                            LineCountNeighbour* neighbour) {
+// bestAnglePlan over the batch of up to kFinishBest ranked angles from `first` on.
+static PlanCandidate bestOfBatch(const Context& ctx, const std::vector<AngleResult>& ranked, size_t first,
+                                 const energy::EnergyModel& model, const SpeedSettings& ss, RouteScorer& scorer,
+                                 const StopTable& stop, const PlannerSettings& ps,
+                                 const std::vector<geometry::PolygonWithHoles>& free, LineCountNeighbour* neighbour) {
   // The search ranks angles by the order search's estimate; the few best are flown in full (with
   // the coverage check, which may take arcs back) and the cheapest that keeps coverage is kept.
   // Re-assembled with the shortest order as a second choice (see assemble()), on ps.threads workers.
@@ -120,7 +133,7 @@ PlanCandidate bestAnglePlan(const Context& ctx, const std::vector<AngleResult>& 
   // last fraction of a per cent of coverage can cost a whole line (issue 22); the coverage check
   // below keeps it only when coverage stays >= kMinCoveragePct.
   size_t finals = 0;
-  while (finals < std::min(kFinishBest, ranked.size()) && std::isfinite(ranked[finals].score)) ++finals;
+  while (first + finals < ranked.size() && finals < kFinishBest && std::isfinite(ranked[first + finals].score)) ++finals;
   Context fewer = ctx;
   fewer.fewer_lines = 1;
   std::vector<PlanCandidate> finished(2 * finals);
@@ -130,12 +143,12 @@ PlanCandidate bestAnglePlan(const Context& ctx, const std::vector<AngleResult>& 
     RouteScorer local(model, ss);
     for (size_t k = t; k < finals; k += nt) {
       const AngleResult both =
-          evaluateAngle(ctx, ranked[k].angle, local, stop, Objective::Energy, ps.exact_max_cells, true);
-      flown_from[k] = both.score < ranked[k].score ? both : ranked[k];
+          evaluateAngle(ctx, ranked[first + k].angle, local, stop, Objective::Energy, ps.exact_max_cells, true);
+      flown_from[k] = both.score < ranked[first + k].score ? both : ranked[first + k];
       finished[k] = flyUnverified(local, flown_from[k], "boustrophedon");
-      if (!fewerLinesWorthTrying(ctx, ranked[k].angle)) continue;
+      if (!fewerLinesWorthTrying(ctx, ranked[first + k].angle)) continue;
       flown_from[finals + k] =
-          evaluateAngle(fewer, ranked[k].angle, local, stop, Objective::Energy, ps.exact_max_cells, true);
+          evaluateAngle(fewer, ranked[first + k].angle, local, stop, Objective::Energy, ps.exact_max_cells, true);
       finished[finals + k] = flyUnverified(local, flown_from[finals + k], "boustrophedon");
     }
   });
@@ -165,6 +178,24 @@ PlanCandidate bestAnglePlan(const Context& ctx, const std::vector<AngleResult>& 
     }
   }
   return std::move(finished[best]);
+}
+
+PlanCandidate bestAnglePlan(const Context& ctx, const std::vector<AngleResult>& ranked, const energy::EnergyModel& model,
+                            const SpeedSettings& ss, RouteScorer& scorer, const StopTable& stop,
+                            const PlannerSettings& ps, const std::vector<geometry::PolygonWithHoles>& free,
+                            LineCountNeighbour* neighbour) {
+  // Lines end on the boundary (issue 22), so the cheapest angles can be the ones that cut an
+  // edge's corners and miss coverage: when no angle of a batch keeps it, the next batch is flown.
+  PlanCandidate plan;
+  for (size_t first = 0; first < std::min(ranked.size(), kMaxBatches * kFinishBest); first += kFinishBest) {
+    LineCountNeighbour local;
+    PlanCandidate c = bestOfBatch(ctx, ranked, first, model, ss, scorer, stop, ps, free, &local);
+    if (!better(c, plan)) continue;
+    plan = std::move(c);
+    if (neighbour) *neighbour = local;
+    if (plan.coverage_pct >= kMinCoveragePct) break;
+  }
+  return plan;
 }
 
 }  // namespace wattswath::planner::detail

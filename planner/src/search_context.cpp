@@ -112,9 +112,12 @@ Route cellRoute(const Context& ctx, const geometry::SweepLineCell& cell, double 
       r.points.push_back(pass.start);
       r.max_tangent.push_back(0.0);
     } else {
-      moveTo(ctx, r, pass.start, LegRole::Transit, pass.start_run_out);
+      // The connector between two lines is the turn between them (role Turn, as geometry's
+      // boustrophedon labels it): its footprint covers the wedges a slanted boundary leaves
+      // beyond the lines' ends, which end on the boundary since issue 22.
+      moveTo(ctx, r, pass.start, LegRole::Turn, pass.start_run_out + ctx.turn_room);
     }
-    r.add(pass.end, LegRole::Sweep, pass.end_run_out);
+    r.add(pass.end, LegRole::Sweep, pass.end_run_out + ctx.turn_room);
   }
   return r;
 }

@@ -379,9 +379,10 @@ TEST(Planner, PerCellSearchSweepsEachArmOfAnLAlongItself) {
 }
 
 TEST(Planner, SpiralCompetesPerCellOnTheL) {
-  // The same L with spirals allowed: flown around the L with arcs at chain speeds, a spiral costs
-  // less than sweeping the arms; the per-cell search offers it and the plan is never dearer than
-  // the per-cell plan, the whole-area spiral or the straight-lines-only plan.
+  // The same L with spirals allowed: the per-cell search and the whole-area spiral compete, and the
+  // plan is never dearer than the per-cell plan, the whole-area spiral or the straight-lines-only
+  // plan. (Until issue 22 a spiral won here; since the lines end on the boundary and turn inside
+  // on arcs, sweeping the arms along their lengths is cheaper.)
   const auto v = iris();
   const auto model = energy::marinsModel(v);
   const SurveyProblem pr = lShape();
@@ -391,13 +392,10 @@ TEST(Planner, SpiralCompetesPerCellOnTheL) {
   const auto r_lines = planCoverage(pr, v, model, lines);
   expectValid(pr, r);
   ASSERT_TRUE(r.per_cell.has_value());
-  EXPECT_TRUE(std::any_of(r.per_cell->cell_plans.begin(), r.per_cell->cell_plans.end(),
-                          [](const CellPlan& c) { return c.pattern == "spiral"; }));
   EXPECT_LE(r.plan.flown.energy, r.per_cell->flown.energy + 1e-6);
   ASSERT_TRUE(r.best_spiral.has_value());
   EXPECT_LE(r.plan.flown.energy, r.best_spiral->flown.energy + 1e-6);
-  EXPECT_LT(r.plan.flown.energy, r_lines.plan.flown.energy);
-  EXPECT_EQ(r.plan.pattern, "spiral");
+  EXPECT_LE(r.plan.flown.energy, r_lines.plan.flown.energy + 1e-6);
   EXPECT_FALSE(r_lines.best_spiral.has_value());
   EXPECT_NE(r_lines.plan.pattern, "spiral");
 }
