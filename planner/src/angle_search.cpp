@@ -14,6 +14,7 @@ namespace {
 
 constexpr size_t kFinishBest = 8;  // best-ranked angles flown in full before choosing
 constexpr size_t kMaxBatches = 4;  // batches of kFinishBest flown at most while none keeps coverage
+constexpr size_t kEdgeAngles = 4;  // directions of the longest outline edges added to the coarse angles
 // One line fewer than full coverage needs is tried at an angle when those lines' band still spans
 // this share of the area's extent across the lines (below it the coverage check would refuse it).
 constexpr double kFewerLinesBand = 0.985;
@@ -89,13 +90,16 @@ std::vector<AngleResult> searchAngles(const Context& ctx, const energy::EnergyMo
                                       std::vector<AngleScore>* scan) {
   std::vector<double> coarse;
   for (double a = 0.0; a < 180.0 - 1e-9; a += ps.coarse_step_deg) coarse.push_back(a * kDeg);
-  // The directions of the outline's edges (those at least two spacings long) too: lines along an
-  // edge end nowhere on it, while lines a degree off it cross it and, ending on the boundary since
-  // issue 22, leave a long thin wedge beside it uncovered.
+  // The directions of the four longest outline edges (at least two spacings long) too: lines
+  // along an edge end nowhere on it, while lines a degree off it cross it and, ending on the
+  // boundary since issue 22, leave a long thin wedge beside it uncovered.
   const auto& outer = ctx.problem->area.outer;
-  for (size_t i = 0; i < outer.size(); ++i) {
-    const geometry::Point e = outer[(i + 1) % outer.size()] - outer[i];
-    if (e.norm() < 2.0 * ctx.problem->spacing) continue;
+  std::vector<geometry::Point> edges;
+  for (size_t i = 0; i < outer.size(); ++i) edges.push_back(outer[(i + 1) % outer.size()] - outer[i]);
+  std::sort(edges.begin(), edges.end(), [](const auto& u, const auto& v) { return u.norm() > v.norm(); });
+  for (size_t i = 0; i < std::min(edges.size(), kEdgeAngles); ++i) {
+    const geometry::Point& e = edges[i];
+    if (e.norm() < 2.0 * ctx.problem->spacing) break;
     const double a = normDeg(std::atan2(e.y(), e.x())) * kDeg;
     const bool known = std::any_of(coarse.begin(), coarse.end(), [&](double c) { return std::abs(c - a) < 1e-6; });
     if (!known) coarse.push_back(a);
