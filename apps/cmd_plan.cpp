@@ -489,10 +489,14 @@ void runPlan(const PlanOpts& o) {
     notes.push_back("camera: the photos cover " + fixedText(photo_pct, 1) +
                     " % of the area, less than the plan's coverage: the camera is off along turns (a spiral's corner "
                     "arcs too), whose footprint the plan's coverage counts");
+  const auto inside = pl::planContainment(pr, r.plan.flown.path);
+  if (inside.total() > 0.0 && o.overshoot <= 0.0)  // the tests hold this at 0; say so if it ever is not
+    notes.push_back("the path runs " + fixedText(inside.outside_m, 2) + " m outside the area and " +
+                    fixedText(inside.in_holes_m, 2) + " m in no-fly zones (up to " + fixedText(inside.max_depth_m, 2) +
+                    " m deep); please report the area");
   if (o.json) {
     auto j = planJsonOf(r, pr, o, dir, notes);
     j["coverage_outside_zones_pct"] = whole_area_pct;
-    const auto inside = pl::planContainment(pr, r.plan.flown.path);
     j["outside_area_m"] = inside.outside_m;
     j["in_no_fly_m"] = inside.in_holes_m;
     j["max_outside_depth_m"] = inside.max_depth_m;
