@@ -19,27 +19,51 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
+struct CoverageOpts {  // the options of `coverage`
+  std::string area;
+  std::string pattern = "boustrophedon";
+  double angle_deg = 0.0;
+  double spacing = 0.0;
+  double altitude = 0.0;
+  double fov_deg = 0.0;
+  double overlap = 0.0;
+  std::string corners = "sharp";
+  double radius = 0.0;
+  std::string start = "bottom-left";
+  bool clockwise = false;
+  int start_vertex = 0;
+  std::vector<std::string> no_fly;
+  std::string out;
+  bool json = false, force = false;
+};
+
+// One route per cell of `region`: the spiral's or the boustrophedon's, as the options say.
+std::vector<g::Route> regionRoutes(const g::PolygonWithHoles& region, const CoverageOpts& o, double spacing) {
+  std::vector<g::Route> routes;
+  if (o.pattern == "spiral") {
+    g::SpiralSettings sp;
+    sp.spacing = spacing;
+    sp.start_vertex = o.start_vertex;
+    sp.clockwise = o.clockwise;
+    sp.split_angle = o.angle_deg * kDeg;
+    for (const auto& c : g::decomposeSpiral(region, spacing, sp.split_angle)) routes.push_back(g::spiralRoute(c, sp));
+    return routes;
+  }
+  g::BoustrophedonSettings bs;
+  bs.spacing = spacing;
+  bs.sweep_angle = o.angle_deg * kDeg;
+  const char* names[] = {"bottom-left", "bottom-right", "top-left", "top-right"};
+  for (int k = 0; k < 4; ++k)
+    if (o.start == names[k]) bs.start = static_cast<g::StartCorner>(k);
+  const auto d = g::decomposeBoustrophedon(region, bs.sweep_angle);
+  for (size_t c = 0; c < d.cells.size(); ++c) routes.push_back(g::boustrophedonRoute(region, d, static_cast<int>(c), bs));
+  return routes;
+}
+
 }  // namespace
 
 void registerCoverageCommand(CLI::App& app) {
-  struct Opts {
-    std::string area;
-    std::string pattern = "boustrophedon";
-    double angle_deg = 0.0;
-    double spacing = 0.0;
-    double altitude = 0.0;
-    double fov_deg = 0.0;
-    double overlap = 0.0;
-    std::string corners = "sharp";
-    double radius = 0.0;
-    std::string start = "bottom-left";
-    bool clockwise = false;
-    int start_vertex = 0;
-    std::vector<std::string> no_fly;
-    std::string out;
-    bool json = false, force = false;
-  };
-  auto o = std::make_shared<Opts>();
+  auto o = std::make_shared<CoverageOpts>();
   auto* cmd = app.add_subcommand("coverage", "Coverage path over a survey area: boustrophedon or spiral");
   cmd->add_option("AREA", o->area, "Survey area (GeoJSON, KML, WKT or QGC .waypoints)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--pattern", o->pattern, "Coverage pattern")
@@ -99,24 +123,7 @@ void registerCoverageCommand(CLI::App& app) {
     int cells = 0;
     for (size_t r = 0; r < area.regions.size(); ++r) {
       const auto& region = area.regions[r];
-      std::vector<g::Route> routes;
-      if (o->pattern == "spiral") {
-        g::SpiralSettings sp;
-        sp.spacing = spacing;
-        sp.start_vertex = o->start_vertex;
-        sp.clockwise = o->clockwise;
-        sp.split_angle = o->angle_deg * kDeg;
-        for (const auto& c : g::decomposeSpiral(region, spacing, sp.split_angle)) routes.push_back(g::spiralRoute(c, sp));
-      } else {
-        g::BoustrophedonSettings bs;
-        bs.spacing = spacing;
-        bs.sweep_angle = o->angle_deg * kDeg;
-        const char* names[] = {"bottom-left", "bottom-right", "top-left", "top-right"};
-        for (int k = 0; k < 4; ++k)
-          if (o->start == names[k]) bs.start = static_cast<g::StartCorner>(k);
-        const auto d = g::decomposeBoustrophedon(region, bs.sweep_angle);
-        for (size_t c = 0; c < d.cells.size(); ++c) routes.push_back(g::boustrophedonRoute(region, d, static_cast<int>(c), bs));
-      }
+      const std::vector<g::Route> routes = regionRoutes(region, *o, spacing);
       cells += static_cast<int>(routes.size());
       progress("coverage: region " + std::to_string(r) + ": " + std::to_string(routes.size()) + " cells");
       g::CoveragePath p = g::shapeCorners(g::joinRoutes(region, routes), corners, o->altitude, region);
