@@ -268,6 +268,12 @@ void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin
             << " s, " << r.plan.flown.length << " m, coverage " << std::setprecision(1) << r.plan.coverage_pct << " %";
   if (margin > 0.0) std::cout << " (" << whole_area_pct << " % counting the no-fly margin band as area)";
   std::cout << "\n";
+  if (r.line_count_neighbour) {
+    const auto& n = *r.line_count_neighbour;
+    std::cout << "  line count: the one-angle plan at " << std::setprecision(0) << n.candidate.sweep_angle_deg
+              << " deg with one line " << (n.lines_delta > 0 ? "more" : "fewer") << ": " << std::setprecision(1)
+              << n.candidate.flown.energy / 1000.0 << " kJ, coverage " << n.candidate.coverage_pct << " %\n";
+  }
   for (size_t i = 0; i < r.plan.cell_plans.size(); ++i) {
     const auto& c = r.plan.cell_plans[i];
     std::cout << "  cell " << i + 1 << ": " << c.pattern;

@@ -79,5 +79,10 @@ TEST(CliCoverage, NoFlownPointOutsideTheSharedAreas) {
     EXPECT_EQ(j.at("outside_area_m").get<double>(), 0.0) << file;
     EXPECT_EQ(j.at("in_no_fly_m").get<double>(), 0.0) << file;
     EXPECT_GE(j.at("coverage_pct").get<double>(), 99.0) << file;
+    const auto& trade = j.at("line_count_trade");  // null when only one line count was built
+    if (!trade.is_null()) {
+      EXPECT_TRUE(trade.at("lines_delta") == 1 || trade.at("lines_delta") == -1) << file;
+      EXPECT_GT(trade.at("energy_j").get<double>(), 0.0) << file;
+    }
   }
 }
