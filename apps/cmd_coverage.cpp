@@ -1,4 +1,5 @@
 // `wattswath coverage`: coverage candidates (boustrophedon or spiral) over a survey area.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -18,27 +19,51 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
+struct CoverageOpts {  // the options of `coverage`
+  std::string area;
+  std::string pattern = "boustrophedon";
+  double angle_deg = 0.0;
+  double spacing = 0.0;
+  double altitude = 0.0;
+  double fov_deg = 0.0;
+  double overlap = 0.0;
+  std::string corners = "sharp";
+  double radius = 0.0;
+  std::string start = "bottom-left";
+  bool clockwise = false;
+  int start_vertex = 0;
+  std::vector<std::string> no_fly;
+  std::string out;
+  bool json = false, force = false;
+};
+
+// One route per cell of `region`: the spiral's or the boustrophedon's, as the options say.
+std::vector<g::Route> regionRoutes(const g::PolygonWithHoles& region, const CoverageOpts& o, double spacing) {
+  std::vector<g::Route> routes;
+  if (o.pattern == "spiral") {
+    g::SpiralSettings sp;
+    sp.spacing = spacing;
+    sp.start_vertex = o.start_vertex;
+    sp.clockwise = o.clockwise;
+    sp.split_angle = o.angle_deg * kDeg;
+    for (const auto& c : g::decomposeSpiral(region, spacing, sp.split_angle)) routes.push_back(g::spiralRoute(c, sp));
+    return routes;
+  }
+  g::BoustrophedonSettings bs;
+  bs.spacing = spacing;
+  bs.sweep_angle = o.angle_deg * kDeg;
+  const char* names[] = {"bottom-left", "bottom-right", "top-left", "top-right"};
+  for (int k = 0; k < 4; ++k)
+    if (o.start == names[k]) bs.start = static_cast<g::StartCorner>(k);
+  const auto d = g::decomposeBoustrophedon(region, bs.sweep_angle);
+  for (size_t c = 0; c < d.cells.size(); ++c) routes.push_back(g::boustrophedonRoute(region, d, static_cast<int>(c), bs));
+  return routes;
+}
+
 }  // namespace
 
 void registerCoverageCommand(CLI::App& app) {
-  struct Opts {
-    std::string area;
-    std::string pattern = "boustrophedon";
-    double angle_deg = 0.0;
-    double spacing = 0.0;
-    double altitude = 0.0;
-    double fov_deg = 0.0;
-    double overlap = 0.0;
-    std::string corners = "sharp";
-    double radius = 0.0;
-    std::string start = "bottom-left";
-    bool clockwise = false;
-    int start_vertex = 0;
-    std::vector<std::string> no_fly;
-    std::string out;
-    bool json = false, force = false;
-  };
-  auto o = std::make_shared<Opts>();
+  auto o = std::make_shared<CoverageOpts>();
   auto* cmd = app.add_subcommand("coverage", "Coverage path over a survey area: boustrophedon or spiral");
   cmd->add_option("AREA", o->area, "Survey area (GeoJSON, KML, WKT or QGC .waypoints)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--pattern", o->pattern, "Coverage pattern")
@@ -94,27 +119,11 @@ void registerCoverageCommand(CLI::App& app) {
     std::vector<g::CoveragePath> paths;
     std::vector<std::string> problems;
     double required = 0.0, covered = 0.0;
+    g::ContainmentReport outside;  // summed over the regions
     int cells = 0;
     for (size_t r = 0; r < area.regions.size(); ++r) {
       const auto& region = area.regions[r];
-      std::vector<g::Route> routes;
-      if (o->pattern == "spiral") {
-        g::SpiralSettings sp;
-        sp.spacing = spacing;
-        sp.start_vertex = o->start_vertex;
-        sp.clockwise = o->clockwise;
-        sp.split_angle = o->angle_deg * kDeg;
-        for (const auto& c : g::decomposeSpiral(region, spacing, sp.split_angle)) routes.push_back(g::spiralRoute(c, sp));
-      } else {
-        g::BoustrophedonSettings bs;
-        bs.spacing = spacing;
-        bs.sweep_angle = o->angle_deg * kDeg;
-        const char* names[] = {"bottom-left", "bottom-right", "top-left", "top-right"};
-        for (int k = 0; k < 4; ++k)
-          if (o->start == names[k]) bs.start = static_cast<g::StartCorner>(k);
-        const auto d = g::decomposeBoustrophedon(region, bs.sweep_angle);
-        for (size_t c = 0; c < d.cells.size(); ++c) routes.push_back(g::boustrophedonRoute(region, d, static_cast<int>(c), bs));
-      }
+      const std::vector<g::Route> routes = regionRoutes(region, *o, spacing);
       cells += static_cast<int>(routes.size());
       progress("coverage: region " + std::to_string(r) + ": " + std::to_string(routes.size()) + " cells");
       g::CoveragePath p = g::shapeCorners(g::joinRoutes(region, routes), corners, o->altitude, region);
@@ -122,6 +131,10 @@ void registerCoverageCommand(CLI::App& app) {
       p.sweep_angle = o->angle_deg * kDeg;
       for (const auto& problem : g::checkPath(p, region)) problems.push_back("region " + std::to_string(r) + ": " + problem);
       const auto report = g::checkCoverage(region, {p}, spacing);
+      const auto c = g::checkContainment(region, p, false);
+      outside.outside_m += c.outside_m;
+      outside.in_holes_m += c.in_holes_m;
+      outside.max_depth_m = std::max(outside.max_depth_m, c.max_depth_m);
       required += report.required_area;
       covered += report.covered_area;
       paths.push_back(std::move(p));
@@ -145,6 +158,9 @@ void registerCoverageCommand(CLI::App& app) {
                  {"turns", turns},
                  {"coverage_pct", coverage_pct},
                  {"cells", cells},
+                 {"outside_area_m", outside.outside_m},
+                 {"in_no_fly_m", outside.in_holes_m},
+                 {"max_outside_depth_m", outside.max_depth_m},
                  {"pattern", o->pattern},
                  {"angle_deg", o->angle_deg},
                  {"spacing_m", spacing},
@@ -155,7 +171,9 @@ void registerCoverageCommand(CLI::App& app) {
                 << "cells:    " << cells << "\n"
                 << "legs:     " << legs << " (" << turns << " turns)\n"
                 << "length:   " << length << " m\n"
-                << "coverage: " << coverage_pct << " %\n";
+                << "coverage: " << coverage_pct << " %\n"
+                << "outside:  " << outside.outside_m << " m outside the area, " << outside.in_holes_m
+                << " m in holes or no-fly zones\n";
       for (const auto& p : problems) std::cout << "problem:  " << p << "\n";
       if (!o->out.empty()) std::cerr << "wrote " << o->out << std::endl;
     }

@@ -41,6 +41,7 @@ struct PlanOpts {
   double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
   double no_fly_margin = pl::kDefaultNoFlyMargin;
   SortieRequest sorties;
+  double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
   bool force = false, json = false, no_report = false, no_spiral = false;
   std::string report_svg;
 };
@@ -213,6 +214,17 @@ std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFr
   return out;
 }
 
+/// The one-angle plan's angle with one sweep line more or fewer: its energy and coverage (null when
+/// none was built).
+nlohmann::json lineTradeJson(const pl::PlanResult& r) {
+  if (!r.line_count_neighbour) return nullptr;
+  const auto& c = r.line_count_neighbour->candidate;
+  return {{"lines_delta", r.line_count_neighbour->lines_delta},
+          {"sweep_angle_deg", c.sweep_angle_deg},
+          {"energy_j", c.flown.energy},
+          {"coverage_pct", c.coverage_pct}};
+}
+
 /// The plan's JSON (issue 5's keys, baselines, battery, files, notes); runPlan adds the mission.
 nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, const PlanOpts& o, const fs::path& dir,
                           const std::vector<std::string>& notes) {
@@ -238,6 +250,7 @@ nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, 
                                                    {"coverage_pct", r.per_cell->coverage_pct},
                                                    {"cell_plans", cellPlansJson(r.per_cell->cell_plans)}}
                                   : nlohmann::json(nullptr)},
+          {"line_count_trade", lineTradeJson(r)},
           {"candidates", r.candidates},
           {"baselines",
            {{"shortest_path", candidateJson(r.shortest_path, e)},
@@ -259,6 +272,12 @@ void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin
             << " s, " << r.plan.flown.length << " m, coverage " << std::setprecision(1) << r.plan.coverage_pct << " %";
   if (margin > 0.0) std::cout << " (" << whole_area_pct << " % counting the no-fly margin band as area)";
   std::cout << "\n";
+  if (r.line_count_neighbour) {
+    const auto& n = *r.line_count_neighbour;
+    std::cout << "  line count: the one-angle plan at " << std::setprecision(0) << n.candidate.sweep_angle_deg
+              << " deg with one line " << (n.lines_delta > 0 ? "more" : "fewer") << ": " << std::setprecision(1)
+              << n.candidate.flown.energy / 1000.0 << " kJ, coverage " << n.candidate.coverage_pct << " %\n";
+  }
   for (size_t i = 0; i < r.plan.cell_plans.size(); ++i) {
     const auto& c = r.plan.cell_plans[i];
     std::cout << "  cell " << i + 1 << ": " << c.pattern;
@@ -440,6 +459,7 @@ void runPlan(const PlanOpts& o) {
   ps.corners = pl::cornerStrategyFromString(o.corners);
   ps.camera_max_speed = o.camera_max_speed;
   ps.spirals = !o.no_spiral;
+  ps.overshoot = o.overshoot;
   const auto model = energy::marinsModel(vehicle);
   const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
   auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
@@ -499,9 +519,17 @@ void runPlan(const PlanOpts& o) {
     notes.push_back("camera: the photos cover " + fixedText(photo_pct, 1) +
                     " % of the area, less than the plan's coverage: the camera is off along turns (a spiral's corner "
                     "arcs too), whose footprint the plan's coverage counts");
+  const auto inside = pl::planContainment(pr, r.plan.flown.path);
+  if (inside.total() > 0.0 && o.overshoot <= 0.0)  // the tests hold this at 0; say so if it ever is not
+    notes.push_back("the path runs " + fixedText(inside.outside_m, 2) + " m outside the area and " +
+                    fixedText(inside.in_holes_m, 2) + " m in no-fly zones (up to " + fixedText(inside.max_depth_m, 2) +
+                    " m deep); please report the area");
   if (o.json) {
     auto j = planJsonOf(r, pr, o, dir, notes);
     j["coverage_outside_zones_pct"] = whole_area_pct;
+    j["outside_area_m"] = inside.outside_m;
+    j["in_no_fly_m"] = inside.in_holes_m;
+    j["max_outside_depth_m"] = inside.max_depth_m;
     j["mission"] = missionJson(s, pm, o.no_fly_margin, photo_pct);
     j["flight"] = flightJson(flight);
     j["sorties"] = sorties;
@@ -546,6 +574,10 @@ void registerPlanCommand(CLI::App& app) {
                   "total energy needs) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
   cmd->add_option("--reserve", o->sorties.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
       ->check(CLI::Range(0.0, 90.0));
+  cmd->add_option("--overshoot", o->overshoot,
+                  "let sweep lines run on this far beyond the area's boundary to turn there (QGC's turnaround distance) "
+                  "[m] (default 0: every flown point stays inside the area)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--camera-max-speed", o->camera_max_speed, "largest ground speed on sweep legs the camera allows [m/s] (0: none)")
       ->check(CLI::Range(0.0, 200.0));
   cmd->add_option("--corner-strategy", o->corners, "sharp, rounded or auto (cheapest per corner)")

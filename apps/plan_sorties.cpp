@@ -67,7 +67,8 @@ std::string name(std::size_t k, const char* ext) {
 
 // The split at the largest budget at which every sortie, flown by the autopilot model, lands with
 // the reserve: the usable energy as predict's battery model discharges it (the first split's
-// sorties tell: energy / (1 - usable left)), then the budget shrunk 2 % at a time while one does not.
+// sorties tell: energy / (1 - usable left)), then the pieces of a sortie that lands below the
+// reserve weighted up until every one keeps it.
 std::vector<FlownSortie> splitThatFits(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
                                        pl::SortieSettings ss, double reserve_pct, bool& fits) {
   std::vector<FlownSortie> flown;
@@ -94,7 +95,15 @@ std::vector<FlownSortie> splitThatFits(const pl::PlanCandidate& plan, const pl::
       }
     }
     if (fits) break;
-    ss.budget_j *= 0.98;
+    // Where a sortie lands below the reserve (the battery drains faster at high power than its
+    // energy says), its pieces weigh more in the next split.
+    if (ss.piece_weight.empty()) ss.piece_weight.assign(static_cast<std::size_t>(flown.back().sortie.last_sweep + 1), 1.0);
+    for (const auto& f : flown) {
+      const double left = f.prediction.battery.usable_left_end, reserve = reserve_pct / 100.0;
+      if (f.prediction.battery.fits) continue;
+      const double factor = 1.02 + std::max(0.0, reserve - left) / std::max(1.0 - reserve, 0.1);
+      for (int p = f.sortie.first_sweep; p <= f.sortie.last_sweep; ++p) ss.piece_weight[static_cast<std::size_t>(p)] *= factor;
+    }
   }
   return flown;
 }

@@ -1,4 +1,5 @@
-// Planner speed: the full energy search (all sweep angles coarse 10 deg then 1 deg, all start
+// Planner speed (issue 22 adds the 2 ha rectangle and the L at 10 m, sharp and default corners):
+// the full energy search (all sweep angles coarse 10 deg then 1 deg, all start
 // corners, corner choices, cell order, transits, baselines) against a length-objective greedy plan
 // measured in the same run. Areas: the E-Spiral rectangle, 1 km^2 with 3 holes, 100 ha with 10
 // holes, and the IRIS+ real-flight area with its no-fly zone (data/areas/iris_area.geojson).
@@ -60,11 +61,24 @@ planner::SurveyProblem irisArea() {
   return p;
 }
 
-void run(benchmark::State& state, const planner::SurveyProblem& p, bool energy_search, bool per_cell = true) {
+// Issue 22's small hole-free fields at 10 m between lines, home at the first vertex: the 2 ha
+// rectangle (200 x 100 m) and the L (200 x 60 m and 80 x 160 m).
+planner::SurveyProblem small(bool l_shape) {
+  planner::SurveyProblem p;
+  p.area.outer = l_shape ? Ring{{0, 0}, {200, 0}, {200, 60}, {80, 60}, {80, 160}, {0, 160}}
+                         : Ring{{0, 0}, {200, 0}, {200, 100}, {0, 100}};
+  p.spacing = p.footprint = 10.0;
+  p.home = {0, 0};
+  return p;
+}
+
+void run(benchmark::State& state, const planner::SurveyProblem& p, bool energy_search, bool per_cell = true,
+         planner::CornerStrategy corners = planner::CornerStrategy::Auto) {
   const auto v = vehicle();
   const auto model = energy::marinsModel(v);
   planner::PlannerSettings ps;
   ps.per_cell = per_cell;
+  ps.corners = corners;
   if (!energy_search) {  // baseline: one angle (longest edge), greedy order, length objective only
     ps.coarse_step_deg = 90.0;
     ps.fine_step_deg = 90.0;
@@ -109,6 +123,12 @@ void scaling(benchmark::State& state, const planner::SurveyProblem& p) {
 void BM_Scaling_Holes(benchmark::State& s) { scaling(s, field(1000, static_cast<int>(s.range(0)), 3)); }
 void BM_Scaling_Vertices(benchmark::State& s) { scaling(s, wavy(static_cast<int>(s.range(0)))); }
 
+void BM_Rect2ha_EnergySearch(benchmark::State& s) { run(s, small(false), true); }
+void BM_Rect2ha_EnergySearchSharp(benchmark::State& s) { run(s, small(false), true, true, planner::CornerStrategy::Sharp); }
+void BM_Rect2ha_Baseline(benchmark::State& s) { run(s, small(false), false); }
+void BM_LShape_EnergySearch(benchmark::State& s) { run(s, small(true), true); }
+void BM_LShape_EnergySearchSharp(benchmark::State& s) { run(s, small(true), true, true, planner::CornerStrategy::Sharp); }
+void BM_LShape_Baseline(benchmark::State& s) { run(s, small(true), false); }
 void BM_Rectangle_EnergySearch(benchmark::State& s) { run(s, rectangle(), true); }
 void BM_Rectangle_Baseline(benchmark::State& s) { run(s, rectangle(), false); }
 void BM_IrisArea_EnergySearch(benchmark::State& s) { run(s, irisArea(), true); }
@@ -125,6 +145,12 @@ void BM_Field100ha_10holes_OneAngleSearch(benchmark::State& s) { run(s, field(10
 
 }  // namespace
 
+BENCHMARK(BM_Rect2ha_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Rect2ha_EnergySearchSharp)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_Rect2ha_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_LShape_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_LShape_EnergySearchSharp)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_LShape_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Rectangle_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_Rectangle_Baseline)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(BM_IrisArea_EnergySearch)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();

@@ -132,6 +132,16 @@ change more (shortest path 84.7 -> 87.4 kJ, so the energy objective now saves 4.
 1.7 %%; ground-station default 127.6 -> 126.4 kJ; best spiral 170.6 -> 175.0 kJ). The E-Spiral rows
 are unchanged.
 
+No flown point is outside the area (issue 22, README "Inside the lines"): every row's plan has
+`outside_area_m` = `in_no_fly_m` = 0. Until 2026-11-24 every sweep line ending on the boundary ran
+on by half a spacing (7.5-10.7 m here) and turned out there. Lines now end on the boundary and
+turn inside on arcs that cut back into the line; the angle search also tries each edge's direction
+and the line count one below full coverage. Against the table before (same model): IRIS+ 83.2 ->
+80.4 kJ, rectangle 59.2 -> 58.7, area01 68.0 -> 55.3, spiral_concave 98.7 -> 87.8, spiral_polygon
+95.0 -> 92.5 (now straight lines), rectangle02 and polygon unchanged (spirals, 57.5 and 84.2);
+lines only: rectangle02 62.4 -> 65.3 kJ (the only row dearer), polygon 96.9 -> 88.7. Wall times
+of this run were taken with the shared machine loaded (load average 8-12), about twice idle.
+
 | area | plan | energy [kJ] | coverage [%%] | time [s] | length [m] | saving vs shortest path [%%] | vs ground-station default [%%] | vs best spiral [%%] | plan / bound | wall [s] |
 |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
 %s

@@ -49,3 +49,40 @@ TEST(CliCoverage, MissingSpacingIsAnError) {
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("--spacing"), std::string::npos) << r.output;
 }
+
+// Issue 22: on every area of ../shared/data, no flown point of `coverage` (any pattern) or `plan`
+// is outside the area or inside a hole or no-fly zone (outside_area_m and in_no_fly_m, measured by
+// geometry::checkContainment: exact for lines, 1 mm tolerance at the boundary).
+TEST(CliCoverage, NoFlownPointOutsideTheSharedAreas) {
+  const std::string obstacles = " --no-fly " + sharedData("iris-flights/plan__real_flight_obstacles.waypoints");
+  const std::vector<std::pair<std::string, std::string>> areas = {
+      {"espiral/area__area01.waypoints", ""},       {"espiral/area__polygon.waypoints", ""},
+      {"espiral/area__rectangle.waypoints", ""},    {"espiral/area__rectangle02.waypoints", ""},
+      {"espiral/area__spiral_concave.waypoints", ""}, {"espiral/area__spiral_polygon.waypoints", ""},
+      {"iris-flights/plan__real_flight_area.waypoints", obstacles}};
+  const std::string out = std::string(::testing::TempDir()) + "/inside";
+  for (const auto& [file, extra] : areas) {
+    const std::string area = sharedData(file);
+    for (const std::string args : {"--pattern boustrophedon --angle 30", "--pattern boustrophedon --angle 90",
+                                   "--pattern spiral"}) {
+      const auto r = run(cliBinary() + " coverage " + area + extra + " --spacing 15 " + args + " --json 2>/dev/null");
+      ASSERT_EQ(r.status, 0) << file << " " << args;
+      const auto j = nlohmann::json::parse(r.output);
+      EXPECT_EQ(j.at("outside_area_m").get<double>(), 0.0) << file << " " << args;
+      EXPECT_EQ(j.at("in_no_fly_m").get<double>(), 0.0) << file << " " << args;
+    }
+    const auto r = run(cliBinary() + " plan " + area + extra + " --vehicle " +
+                       wattswath::test::sourcePath("data/vehicles/iris.json") + " --spacing 15 --no-report --force --out " +
+                       out + " --json 2>/dev/null");
+    ASSERT_EQ(r.status, 0) << file;
+    const auto j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j.at("outside_area_m").get<double>(), 0.0) << file;
+    EXPECT_EQ(j.at("in_no_fly_m").get<double>(), 0.0) << file;
+    EXPECT_GE(j.at("coverage_pct").get<double>(), 99.0) << file;
+    const auto& trade = j.at("line_count_trade");  // null when only one line count was built
+    if (!trade.is_null()) {
+      EXPECT_TRUE(trade.at("lines_delta") == 1 || trade.at("lines_delta") == -1) << file;
+      EXPECT_GT(trade.at("energy_j").get<double>(), 0.0) << file;
+    }
+  }
+}

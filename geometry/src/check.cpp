@@ -69,6 +69,12 @@ bool insideRing(const Ring& ring, const Point& p, double margin) {
   return true;
 }
 
+double distanceToRing(const Ring& ring, const Point& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < ring.size(); ++i) best = std::min(best, distanceToSegment(p, ring[i], ring[(i + 1) % ring.size()]));
+  return best;
+}
+
 bool segmentEntersHole(const PolygonWithHoles& area, const Point& a, const Point& b) {
   const Point ab = b - a;
   const double len2 = ab.squaredNorm();
@@ -101,8 +107,22 @@ bool segmentEntersHole(const PolygonWithHoles& area, const Point& a, const Point
 }
 
 std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const Point& b) {
-  if (!segmentEntersHole(area, a, b)) return {a, b};
+  const bool stay_inside = insideRing(area.outer, a) || distanceToRing(area.outer, a) <= tol::kContainment;
+  const bool b_inside = insideRing(area.outer, b) || distanceToRing(area.outer, b) <= tol::kContainment;
+  auto blocked = [&](const Point& p, const Point& q) {
+    return segmentEntersHole(area, p, q) || (stay_inside && b_inside && segmentLeavesArea(area, p, q));
+  };
+  if (!blocked(a, b)) return {a, b};
   std::vector<Point> nodes{a, b};
+  if (stay_inside && b_inside) {
+    const double orient = signedArea(area.outer) >= 0.0 ? 1.0 : -1.0;
+    const size_t n = area.outer.size();
+    for (size_t i = 0; i < n; ++i) {  // reflex corners of the outer boundary
+      const Point& p = area.outer[(i + n - 1) % n];
+      const Point& q = area.outer[i];
+      if (orient * cross(q - p, area.outer[(i + 1) % n] - q) < 0.0) nodes.push_back(q);
+    }
+  }
   for (const auto& h : area.holes) {
     const double orient = signedArea(h) >= 0.0 ? 1.0 : -1.0;
     const size_t n = h.size();
@@ -130,7 +150,7 @@ std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const
     for (size_t v = 0; v < n; ++v) {
       if (done[v]) continue;
       const double nd = d + (nodes[v] - nodes[u]).norm();
-      if (nd < dist[v] && !segmentEntersHole(area, nodes[u], nodes[v])) {
+      if (nd < dist[v] && !blocked(nodes[u], nodes[v])) {
         dist[v] = nd;
         prev[v] = u;
         queue.push({nd, v});

@@ -161,16 +161,6 @@ struct SweepCell {
     }
     return v;
   }
-  /// Extreme of the boundary over [a, b].
-  double extreme(double a, double b, bool upper) const {
-    double v = upper ? std::max(at(a, true), at(b, true)) : std::min(at(a, false), at(b, false));
-    for (const auto& p : pieces) {
-      for (const auto& q : upper ? p.upper : p.lower) {
-        if (q.x() > a && q.x() < b) v = upper ? std::max(v, q.y()) : std::min(v, q.y());
-      }
-    }
-    return v;
-  }
   /// Boundary vertices strictly between a and b (in the order from a to b).
   std::vector<Point> chainBetween(double a, double b, bool upper) const {
     std::vector<Point> out;
@@ -186,19 +176,6 @@ struct SweepCell {
     return out;
   }
 };
-
-double distanceToRing(const Ring& ring, const Point& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const Point& a = ring[i];
-    const Point& b = ring[(i + 1) % ring.size()];
-    const Point ab = b - a;
-    const double l2 = ab.squaredNorm();
-    const double t = l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (p - (a + t * ab)).norm());
-  }
-  return best;
-}
 
 /// Distance along the ray from `o` in unit direction `u` to the first crossing of `ring` (inf if none).
 double rayToRing(const Ring& ring, const Point& o, const Point& u) {
@@ -238,7 +215,8 @@ Ring withSpikes(const Ring& lap, const Ring& reference, double margin) {
 
 bool polylineSafe(const PolygonWithHoles& area, const std::vector<Point>& pts, double angle) {
   for (size_t i = 1; i < pts.size(); ++i) {
-    if (segmentEntersHole(area, fromSweepFrame(pts[i - 1], angle), fromSweepFrame(pts[i], angle))) return false;
+    const Point a = fromSweepFrame(pts[i - 1], angle), b = fromSweepFrame(pts[i], angle);
+    if (segmentEntersHole(area, a, b) || segmentLeavesArea(area, a, b)) return false;
   }
   return true;
 }
@@ -324,27 +302,20 @@ Route boustrophedonRoute(const PolygonWithHoles& area, const BoustrophedonDecomp
   }
   const SweepCell cell{d.cells[static_cast<size_t>(cell_index)].pieces};
   const double s = settings.spacing, angle = d.sweep_angle;
-  const double x0 = cell.x0(), x1 = cell.x1(), width = x1 - x0;
+  const double x0 = cell.x0(), width = cell.x1() - x0;
   const int n = std::max(1, static_cast<int>(std::ceil(width / s - 1e-9)));
   const bool from_left = settings.start == StartCorner::BottomLeft || settings.start == StartCorner::TopLeft;
   const bool first_up = settings.start == StartCorner::BottomLeft || settings.start == StartCorner::BottomRight;
 
   struct Line {
-    double x, lo, hi, lo_ext, hi_ext;
+    double x, lo, hi;  // [m] sweep-frame x and the ends on the cell boundary
   };
   std::vector<Line> lines;
   for (int k = 0; k < n; ++k) {
-    const int i = from_left ? k : n - 1 - k;
-    Line l;
-    l.x = x0 + (i + 0.5) * width / n;
-    l.lo = cell.at(l.x, false);
-    l.hi = cell.at(l.x, true);
-    const double a = std::max(x0, l.x - 0.5 * s), b = std::min(x1, l.x + 0.5 * s);
-    l.lo_ext = std::min(l.lo, cell.extreme(a, b, false) + 0.5 * s);
-    l.hi_ext = std::max(l.hi, cell.extreme(a, b, true) - 0.5 * s);
-    if (!polylineSafe(area, {{l.x, l.lo}, {l.x, l.lo_ext}}, angle)) l.lo_ext = l.lo;
-    if (!polylineSafe(area, {{l.x, l.hi}, {l.x, l.hi_ext}}, angle)) l.hi_ext = l.hi;
-    lines.push_back(l);
+    // The line ends on the cell's boundary: stretching it to reach a slanted boundary's corner
+    // put its ends outside the area (issue 22); the coverage figure says what that costs.
+    const double x = x0 + ((from_left ? k : n - 1 - k) + 0.5) * width / n;
+    lines.push_back({x, cell.at(x, false), cell.at(x, true)});
   }
   Route r;
   auto add = [&](const Point& p, LegRole role) {
@@ -358,31 +329,18 @@ Route boustrophedonRoute(const PolygonWithHoles& area, const BoustrophedonDecomp
   for (size_t k = 0; k < lines.size(); ++k) {
     const Line& l = lines[k];
     const bool up = (k % 2 == 0) == first_up;
-    const Point a(l.x, up ? l.lo_ext : l.hi_ext), b(l.x, up ? l.hi_ext : l.lo_ext);
-    if (k > 0) {  // connector from the previous line's end, along the boundary on this side
+    const Point a(l.x, up ? l.lo : l.hi), b(l.x, up ? l.hi : l.lo);
+    if (k > 0) {  // connector from the previous line's end: straight, else along the cell boundary
       const Line& p = lines[k - 1];
       const bool top = !up;  // previous line went up, so we are at the top
-      const Point prev_end(p.x, top ? p.hi_ext : p.lo_ext);
-      std::vector<std::vector<Point>> candidates;
-      candidates.push_back({prev_end, a});
+      const Point prev_end(p.x, top ? p.hi : p.lo);
       std::vector<Point> via{prev_end};
       const auto chain = cell.chainBetween(p.x, l.x, top);
       via.insert(via.end(), chain.begin(), chain.end());
       via.push_back(a);
-      candidates.push_back(via);
-      std::vector<Point> hug{prev_end, {p.x, top ? p.hi : p.lo}};
-      hug.insert(hug.end(), chain.begin(), chain.end());
-      hug.push_back({l.x, top ? l.hi : l.lo});
-      hug.push_back(a);
-      candidates.push_back(hug);
-      const auto* chosen = &candidates.back();
-      for (const auto& c : candidates) {
-        if (polylineSafe(area, c, angle)) {
-          chosen = &c;
-          break;
-        }
-      }
-      for (size_t j = 1; j < chosen->size(); ++j) add(fromSweepFrame((*chosen)[j], angle), LegRole::Turn);
+      const std::vector<Point> straight{prev_end, a};
+      const auto& chosen = polylineSafe(area, straight, angle) ? straight : via;
+      for (size_t j = 1; j < chosen.size(); ++j) add(fromSweepFrame(chosen[j], angle), LegRole::Turn);
       add(fromSweepFrame(b, angle), LegRole::Sweep);
     } else {
       add(fromSweepFrame(a, angle), LegRole::Sweep);

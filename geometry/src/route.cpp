@@ -56,10 +56,15 @@ PathLeg lineLeg(const Point& a, const Point& b, LegRole role, double alt) {
   return l;
 }
 
-/// Whether the arc of radius r rounding the corner at b (entered from a) (turn angle `turn`) enters a hole.
+/// Whether the arc of radius r rounding the corner at b (entered from a) (turn angle `turn`) enters a
+/// hole or leaves the outer boundary.
 bool arcEntersHole(const PolygonWithHoles& keep_out, const Point& a, const Point& b, double r,
                    double turn) {
-  if (keep_out.holes.empty()) return false;
+  // Since issue 22 an arc must not leave the outer boundary either (at a corner inside the area:
+  // a transit from a home outside is not held to it).
+  const bool keep_inside = !keep_out.outer.empty() && (insideRing(keep_out.outer, b) ||
+                                                       distanceToRing(keep_out.outer, b) <= tol::kContainment);
+  if (keep_out.holes.empty() && !keep_inside) return false;
   const Point din = (b - a).normalized();
   const double t = r * std::tan(0.5 * std::abs(turn));
   const Point start = b - t * din;
@@ -72,7 +77,7 @@ bool arcEntersHole(const PolygonWithHoles& keep_out, const Point& a, const Point
     const Point rel = start - center;
     const Point q = center + Point(std::cos(phi) * rel.x() - std::sin(phi) * rel.y(),
                                    std::sin(phi) * rel.x() + std::cos(phi) * rel.y());
-    if (segmentEntersHole(keep_out, prev, q)) return true;
+    if (segmentEntersHole(keep_out, prev, q) || (keep_inside && segmentLeavesArea(keep_out, prev, q))) return true;
     prev = q;
   }
   return false;

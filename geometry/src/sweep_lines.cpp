@@ -32,27 +32,13 @@ std::vector<std::pair<double, double>> pairsOf(std::vector<double> xs) {
   return out;
 }
 
-// The area's intervals on line y, each stretched to the extent of the area inside the line's
-// footprint band: an edge nearly parallel to the line leaves a long thin wedge the centre line
-// alone would miss. The extent is reached at the band's edges or at a vertex inside the band.
-std::vector<std::pair<double, double>> areaIntervals(const Ring& outer, double y, double half_band) {
+// The area's intervals on line y: where the line itself meets the area. (They were once stretched
+// to the area inside the line's footprint band, which put the ends of lines along a slanted edge
+// outside the area: issue 22.)
+std::vector<std::pair<double, double>> areaIntervals(const Ring& outer, double y) {
   std::vector<double> xs;
   crossings(outer, y, xs);
-  auto area = pairsOf(xs);
-  std::vector<double> probes{y - half_band, y + half_band};
-  for (const auto& p : outer)
-    if (std::abs(p.y() - y) < half_band) probes.push_back(p.y());
-  for (double yp : probes) {
-    std::vector<double> px;
-    crossings(outer, yp, px);
-    for (const auto& b : pairsOf(px))
-      for (auto& a : area)
-        if (b.first < a.second && b.second > a.first) {
-          a.first = std::min(a.first, b.first);
-          a.second = std::max(a.second, b.second);
-        }
-  }
-  return area;
+  return pairsOf(xs);
 }
 
 // Appends to `line` the free intervals of `area` minus the sorted `blocked` intervals; ends at the
@@ -109,15 +95,15 @@ SweepLines sweepLines(const Ring& area_outer, const std::vector<Ring>& obstacles
     ymax = std::max(ymax, p.y());
   }
   const double d = settings.spacing;
-  const double half_band = 0.5 * settings.footprint * (1.0 - 1e-9);  // [m] half width of a line's footprint
-  const int nlines = std::max(1, static_cast<int>(std::ceil((ymax - ymin) / d - 1e-9)));
+  const int full = static_cast<int>(std::ceil((ymax - ymin) / d - 1e-9));  // lines the full coverage needs
+  const int nlines = std::max(1, full - std::max(0, settings.fewer_lines));
   const double y0 = ymin + 0.5 * ((ymax - ymin) - (nlines - 1) * d);
   SweepLines out;
   out.first_y = y0;
   out.lines.resize(nlines);
   for (int k = 0; k < nlines; ++k) {
     const double y = y0 + k * d;
-    const auto area = areaIntervals(outer, y, half_band);
+    const auto area = areaIntervals(outer, y);
     std::vector<std::pair<double, double>> blocked;
     for (const auto& r : obst) {
       std::vector<double> bx;

@@ -18,14 +18,22 @@ using wattswath::test::reversed;
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-constexpr double kMinCoverage = 0.99;  // issue 4: every candidate covers >= 99 % outside the holes
+// Issue 4 asked every candidate to cover >= 99 % outside the holes; since issue 22 a sweep line ends
+// on the boundary (no flown point outside the area), so at a sweep angle oblique to an edge the
+// wedges between one line's end and the next line's are left: 96.3 % is the worst of these tests.
+// The planner chooses angles and line counts that keep 99 % (test_planner_coverage).
+constexpr double kMinCoverage = 0.96;
 
-/// Every path is valid and together they cover the area; returns the covered fraction.
+/// Every path is valid, stays inside the area and out of its holes, and together they cover the
+/// area; returns the covered fraction.
 double expectValid(const g::PolygonWithHoles& area, const std::vector<g::CoveragePath>& paths, double spacing,
                    const std::string& what) {
   for (const auto& p : paths) {
     const auto problems = g::checkPath(p, area);
     EXPECT_TRUE(problems.empty()) << what << " cell " << p.cell << ": " << (problems.empty() ? "" : problems.front());
+    const auto inside = g::checkContainment(area, p, false);
+    EXPECT_LE(inside.outside_m, 0.0) << what << " cell " << p.cell << ": outside the area, " << inside.max_depth_m << " m deep";
+    EXPECT_LE(inside.in_holes_m, 0.0) << what << " cell " << p.cell << ": in a hole";
   }
   const auto report = g::checkCoverage(area, paths, spacing);
   EXPECT_GE(report.fraction(), kMinCoverage) << what;
@@ -453,4 +461,39 @@ TEST(DistanceToSegment, NearestPointOnTheSegmentOrAnEnd) {
   EXPECT_NEAR(g::distanceToSegment({-3, 4}, a, b), 5.0, 1e-12);  // beyond a
   EXPECT_NEAR(g::distanceToSegment({13, 4}, a, b), 5.0, 1e-12);  // beyond b
   EXPECT_NEAR(g::distanceToSegment({3, 4}, a, a), 5.0, 1e-12);   // a segment without length
+}
+
+TEST(ContainmentChecker, MeasuresTheLengthOutsideAndInHolesExactly) {
+  const auto area = squareWithHole();  // 200 x 150, hole [70, 120] x [50, 90]
+  g::Route r;
+  r.points = {{-30, 10}, {230, 10}, {230, 70}, {-10, 70}};  // 30 + 30 m out, 60 m out, 10 + 50 m
+  r.roles = {g::LegRole::Sweep, g::LegRole::Sweep, g::LegRole::Sweep};
+  const auto rep = g::checkContainment(area, g::shapeCorners(r, {}), false);
+  EXPECT_NEAR(rep.outside_m, 30 + 30 + 60 + 30 + 10, 1e-9);
+  EXPECT_NEAR(rep.in_holes_m, 50, 1e-9);
+  EXPECT_NEAR(rep.max_depth_m, 30, 1e-9);
+  // Along the boundary and touching the hole's corner is inside.
+  g::Route along;
+  along.points = {{0, 0}, {200, 0}, {200, 150}, {120, 90}, {0, 150}};
+  along.roles.assign(4, g::LegRole::Sweep);
+  EXPECT_EQ(g::checkContainment(area, g::shapeCorners(along, {}), false).total(), 0.0);
+  // survey_only leaves out the approach from a home outside and the return.
+  g::Route flight;
+  flight.points = {{-50, -50}, {10, 10}, {190, 10}, {-50, -50}};
+  flight.roles = {g::LegRole::Transit, g::LegRole::Sweep, g::LegRole::Transit};
+  EXPECT_EQ(g::checkContainment(area, g::shapeCorners(flight, {})).total(), 0.0);
+  EXPECT_GT(g::checkContainment(area, g::shapeCorners(flight, {}), false).outside_m, 100.0);
+}
+
+TEST(PathChecker, SafeRouteStaysInsideAConcaveBoundary) {
+  g::PolygonWithHoles u;  // a U: the straight line between the arms' tips crosses the bay
+  u.outer = {{0, 0}, {300, 0}, {300, 200}, {200, 200}, {200, 60}, {100, 60}, {100, 200}, {0, 200}};
+  const auto route = g::safeRoute(u, {50, 190}, {250, 190});
+  ASSERT_EQ(route.size(), 4u);  // over the bay's two reflex corners
+  double len = 0;
+  for (size_t i = 1; i < route.size(); ++i) {
+    EXPECT_FALSE(g::segmentLeavesArea(u, route[i - 1], route[i]));
+    len += (route[i] - route[i - 1]).norm();
+  }
+  EXPECT_NEAR(len, 2 * std::hypot(50, 130) + 100, 1e-6);
 }

@@ -15,7 +15,7 @@ namespace {
 constexpr double kTol = 1e-9;
 
 // Lines 10 m apart with a 10 m footprint, 2 m from obstacles, 5 m run-out beyond the boundary.
-g::SweepLineSettings settings() { return {10.0, 10.0, 2.0, 5.0}; }
+g::SweepLineSettings settings() { return {10.0, 2.0, 5.0}; }
 
 TEST(SweepLines, RectangleHasEvenlySpacedLinesCentredWithRunOut) {
   const auto lines = g::sweepLines(rectangle(0, 0, 100, 50), {}, 0.0, settings());

@@ -21,10 +21,13 @@ std::vector<AngleResult> searchAngles(const Context& ctx, const energy::EnergyMo
                                       std::vector<AngleScore>* scan = nullptr);
 
 /// The one-angle plan: the best-ranked angles of `ranked` re-assembled (also with the shortest
-/// order), flown on ps.threads workers and checked for coverage lazily, cheapest first; the
-/// cheapest that keeps coverage (else the best by better()). Invalid when no angle has a route.
+/// order, and with one sweep line fewer than full coverage needs where that may keep coverage),
+/// flown on ps.threads workers and checked for coverage lazily, cheapest first; the cheapest that
+/// keeps coverage (else the best by better()). Invalid when no angle has a route. `neighbour`,
+/// when given, receives the plan's angle with the other line count (when one was built).
 PlanCandidate bestAnglePlan(const Context& ctx, const std::vector<AngleResult>& ranked, const energy::EnergyModel& model,
                             const SpeedSettings& ss, RouteScorer& scorer, const StopTable& stop,
-                            const PlannerSettings& ps, const std::vector<geometry::PolygonWithHoles>& free);
+                            const PlannerSettings& ps, const std::vector<geometry::PolygonWithHoles>& free,
+                            LineCountNeighbour* neighbour = nullptr);
 
 }  // namespace wattswath::planner::detail

@@ -49,7 +49,10 @@ Context contextOf(const SurveyProblem& problem, const PlannerSettings& ps) {
   ctx.obstacles = problem.area.holes;
   ctx.obstacles.insert(ctx.obstacles.end(), problem.no_fly.begin(), problem.no_fly.end());
   ctx.clearance = ps.clearance;
-  ctx.run_out = 0.5 * problem.spacing;
+  ctx.run_out = ps.overshoot;  // 0 by default: the lines end on the boundary (issue 22)
+  ctx.turn_room = 0.5 * problem.spacing;
+  ctx.inside.outer = problem.area.outer;
+  ctx.inside.holes = ctx.obstacles;
   ctx.overlap_margin = 0.5 * (problem.footprint - problem.spacing);
   return ctx;
 }
@@ -68,6 +71,16 @@ StopTable stopTableOf(const SurveyProblem& problem, RouteScorer& scorer) {
   double diag = 0.0;
   for (const auto& p : problem.area.outer) diag = std::max(diag, (p - problem.home).norm());
   return makeStopTable(scorer, 4.0 * diag);
+}
+
+// Whether the counter-clockwise `ring` turns left (or goes straight) at every vertex.
+bool convex(const geometry::Ring& ring) {
+  const size_t n = ring.size();
+  for (size_t i = 0; i < n; ++i) {
+    const geometry::Point u = ring[(i + 1) % n] - ring[i], v = ring[(i + 2) % n] - ring[(i + 1) % n];
+    if (u.x() * v.y() - u.y() * v.x() < 0.0) return false;
+  }
+  return true;
 }
 
 std::string deg(double d) {
@@ -124,6 +137,7 @@ void PlannerSettings::validate() const {
   if (!(ground_station_speed > 0.0 && ground_station_speed <= 200.0))
     bad("ground_station_speed", ground_station_speed, "(0, 200]");
   if (!(clearance > 0.0 && clearance <= 100.0)) bad("clearance", clearance, "(0, 100]");
+  if (!(overshoot >= 0.0 && overshoot <= 100.0)) bad("overshoot", overshoot, "[0, 100]");
   if (exact_max_cells < 0 || exact_max_cells > kGtspExactMaxClusters) bad("exact_max_cells", exact_max_cells, "[0, 12]");
 }
 
@@ -150,14 +164,20 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
       " deg) on " + std::to_string(ps.threads) + " threads");
   const auto ranked = searchAngles(ctx, model, ss, stop, Objective::Energy, ps, &res.candidates, &res.sweep_scan);
   const AngleResult& best = ranked.front();
-  res.plan = bestAnglePlan(ctx, ranked, model, ss, scorer, stop, ps, free);
+  LineCountNeighbour neighbour;
+  res.plan = bestAnglePlan(ctx, ranked, model, ss, scorer, stop, ps, free, &neighbour);
+  if (neighbour.lines_delta != 0) res.line_count_neighbour = neighbour;
   const double plan_angle = res.plan.valid ? res.plan.flown.path.sweep_angle : best.angle;  // [rad]
   // (c) The best spiral needs only the plan's angle (to cut an area with holes into pieces): with a
   // second thread it runs beside the per-cell search and the baselines.
   auto spiral_stage = [&]() { return spiralStage(ctx, model, ss, stop, ps, free, plan_angle); };
   std::future<SpiralStage> spiral_job;  // destroyed (joined) before anything the stage refers to
   if (ps.spirals && ps.threads > 1) spiral_job = std::async(std::launch::async, spiral_stage);
-  if (ps.per_cell && std::isfinite(best.score)) {
+  // A convex outline without obstacles is one piece: the per-cell search's choices for it (its own
+  // angle, a spiral) are the one-angle search's and the spiral stage's, so it is skipped.
+  const bool one_cell = ctx.obstacles.empty() && convex(problem.area.outer);
+  if (ps.per_cell && one_cell) res.notes.push_back("per-cell search skipped: a convex area without obstacles is one piece");
+  if (ps.per_cell && !one_cell && std::isfinite(best.score)) {
     say("plan: per-cell search (each cell's own sweep angle or spiral)");
     std::string why;
     auto c = perCellCandidate(ctx, model, ss, scorer, stop, ps, free, plan_angle, &res.candidates, &why);

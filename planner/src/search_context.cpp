@@ -8,6 +8,8 @@
 #include <mutex>
 #include <thread>
 
+#include "wattswath/geometry/check.hpp"
+
 namespace wattswath::planner::detail {
 namespace {
 
@@ -58,8 +60,20 @@ void onWorkers(int workers, const std::function<void(int)>& work) {
 void moveTo(const Context& ctx, Route& r, const Point& to, LegRole role, double tangent_at_to) {
   const Point from = r.points.back();
   if (ctx.router->clear(from, to)) {
-    r.add(to, role, tangent_at_to);
-    return;
+    // A move between two points of the area that would cut across a bay of the outer boundary
+    // goes over its reflex corners instead (when that way is clear of the obstacles too).
+    if (ctx.inside.outer.empty() || !geometry::segmentLeavesArea(ctx.inside, from, to)) {
+      r.add(to, role, tangent_at_to);
+      return;
+    }
+    const auto inside = geometry::safeRoute(ctx.inside, from, to);
+    bool clear = true;
+    for (size_t i = 1; i < inside.size() && clear; ++i) clear = ctx.router->clear(inside[i - 1], inside[i]);
+    if (clear) {
+      for (size_t i = 1; i + 1 < inside.size(); ++i) r.add(inside[i], LegRole::Transit, 0.0);
+      r.add(to, role, tangent_at_to);
+      return;
+    }
   }
   const auto path = ctx.router->route(from, to);
   for (size_t i = 1; i + 1 < path.size(); ++i) r.add(path[i], LegRole::Transit, 0.5 * ctx.clearance);
@@ -82,9 +96,9 @@ Route reversed(const Route& r) {
 std::vector<geometry::SweepLineCell> sweepCells(const Context& ctx, double angle, double* first_y) {
   geometry::SweepLineSettings s;
   s.spacing = ctx.problem->spacing;
-  s.footprint = ctx.problem->footprint;
   s.clearance = ctx.clearance;
   s.run_out = ctx.run_out;
+  s.fewer_lines = ctx.fewer_lines;
   const auto lines = geometry::sweepLines(ctx.problem->area.outer, ctx.obstacles, angle, s);
   *first_y = lines.first_y;
   return geometry::sweepLineCells(lines.lines);
@@ -98,9 +112,12 @@ Route cellRoute(const Context& ctx, const geometry::SweepLineCell& cell, double 
       r.points.push_back(pass.start);
       r.max_tangent.push_back(0.0);
     } else {
-      moveTo(ctx, r, pass.start, LegRole::Transit, pass.start_run_out);
+      // The connector between two lines is the turn between them (role Turn, as geometry's
+      // boustrophedon labels it): its footprint covers the wedges a slanted boundary leaves
+      // beyond the lines' ends, which end on the boundary since issue 22.
+      moveTo(ctx, r, pass.start, LegRole::Turn, pass.start_run_out + ctx.turn_room);
     }
-    r.add(pass.end, LegRole::Sweep, pass.end_run_out);
+    r.add(pass.end, LegRole::Sweep, pass.end_run_out + ctx.turn_room);
   }
   return r;
 }

@@ -29,6 +29,10 @@ struct Context {
   const TransitRouter* router = nullptr;   ///< transits around the obstacles
   double clearance = 2.0;                  ///< [m] distance kept from the obstacles
   double run_out = 0.0;                    ///< [m] extension of sweep lines beyond the boundary
+  double turn_room = 0.0;                  ///< [m] how far an arc at a line's end may cut back into the line
+                                           ///< (and its connector): the turn happens inside the area
+  int fewer_lines = 0;                     ///< sweep lines dropped below the full-coverage count (SweepLineSettings)
+  geometry::PolygonWithHoles inside;       ///< the outer boundary with the obstacles as holes: where moves stay
   double overlap_margin = 0.0;             ///< [m] (footprint - spacing) / 2
 };
 

@@ -73,14 +73,25 @@ struct Transit {
 
 class Splitter {
  public:
-  Splitter(const FlownPath& plan, const SurveyProblem& problem, RouteScorer& scorer, double scale, double piece_m)
+  Splitter(const FlownPath& plan, const SurveyProblem& problem, RouteScorer& scorer, double scale, double piece_m,
+           const std::vector<double>& piece_weight)
       : plan_(cutSweeps(plan, piece_m, origin_)), problem_(problem), scorer_(scorer), router_(noFlyZones(problem)), scale_(scale) {
     const auto& legs = plan_.path.legs;
     for (std::size_t i = 0; i < legs.size(); ++i)
       if (legs[i].role == geo::LegRole::Sweep) sweeps_.push_back(static_cast<int>(i));
     if (sweeps_.empty()) throw std::invalid_argument("splitIntoSorties: the plan has no sweep leg");
+    // Leg weights: a piece's weight applies to it and to the connectors before the next piece.
+    std::vector<double> w(legs.size(), 1.0);
+    if (!piece_weight.empty()) {
+      if (piece_weight.size() != sweeps_.size())
+        throw std::invalid_argument("SortieSettings.piece_weight has " + std::to_string(piece_weight.size()) + " entries, expected " +
+                                    std::to_string(sweeps_.size()) + " (one per piece of sweep)");
+      for (std::size_t p = 0; p < sweeps_.size(); ++p)
+        for (std::size_t i = static_cast<std::size_t>(sweeps_[p]); i < (p + 1 < sweeps_.size() ? static_cast<std::size_t>(sweeps_[p + 1]) : legs.size()); ++i)
+          w[i] = piece_weight[p];
+    }
     prefix_.assign(legs.size() + 1, 0.0);
-    for (std::size_t i = 0; i < legs.size(); ++i) prefix_[i + 1] = prefix_[i] + (i < plan_.leg_energy.size() ? plan_.leg_energy[i] : 0.0);
+    for (std::size_t i = 0; i < legs.size(); ++i) prefix_[i + 1] = prefix_[i] + w[i] * (i < plan_.leg_energy.size() ? plan_.leg_energy[i] : 0.0);
     for (int s : sweeps_) {
       const auto& l = legs[static_cast<std::size_t>(s)];
       out_.push_back(transit(problem.home, l.start));
@@ -239,7 +250,7 @@ std::vector<int> optimalCuts(const Splitter& sp, const SortieSettings& s) {
 
 SortieSplit splitIntoSorties(const FlownPath& plan, const SurveyProblem& problem, RouteScorer& scorer, const SortieSettings& s) {
   check(s);
-  const Splitter sp(plan, problem, scorer, s.scale, s.piece_m);
+  const Splitter sp(plan, problem, scorer, s.scale, s.piece_m, s.piece_weight);
   for (int a = 0; a < sp.sweeps(); ++a)
     if (sp.cost(a, a, s.overhead_j) > s.budget_j)
       throw std::runtime_error("sweep " + std::to_string(a + 1) + " alone, with its transits from and to home, needs " +

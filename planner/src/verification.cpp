@@ -144,4 +144,10 @@ std::vector<std::string> checkPlan(const SurveyProblem& pr, const geometry::Cove
   return problems;
 }
 
+geometry::ContainmentReport planContainment(const SurveyProblem& pr, const geometry::CoveragePath& path) {
+  geometry::PolygonWithHoles area = pr.area;
+  area.holes.insert(area.holes.end(), pr.no_fly.begin(), pr.no_fly.end());
+  return geometry::checkContainment(area, path);
+}
+
 }  // namespace wattswath::planner

@@ -38,11 +38,20 @@ void expectValid(const SurveyProblem& pr, const PlanResult& r) {
   EXPECT_GE(exact, 0.99);
   // The planner reports geometry's exact figure (it once used its own sample-grid estimate).
   EXPECT_NEAR(r.plan.coverage_pct, 100.0 * exact, 1e-6);
-  EXPECT_LE(r.plan.flown.energy, r.shortest_path.flown.energy + 1e-6);
-  EXPECT_LE(r.plan.flown.energy, r.ground_station_default.flown.energy + 1e-6);
-  if (r.best_spiral) {
+  // Never dearer than a baseline that keeps coverage too (one that misses 99 % cannot be the plan).
+  for (const PlanCandidate* c : {&r.shortest_path, &r.ground_station_default}) {
+    if (c->valid && c->coverage_pct >= 99.0) {
+      EXPECT_LE(r.plan.flown.energy, c->flown.energy + 1e-6);
+    }
+  }
+  if (r.best_spiral && r.best_spiral->coverage_pct >= 99.0) {
     EXPECT_LE(r.plan.flown.energy, r.best_spiral->flown.energy + 1e-6);
   }
+  // Issue 22: no flown point outside the area or inside a hole or no-fly zone, from the first sweep
+  // to the last (home may lie outside), within geometry::tol::kContainment (1 mm) of the boundary.
+  const auto inside = planContainment(pr, r.plan.flown.path);
+  EXPECT_LE(inside.outside_m, 0.0) << "outside the area, up to " << inside.max_depth_m << " m";
+  EXPECT_LE(inside.in_holes_m, 0.0) << "in a hole or no-fly zone, up to " << inside.max_depth_m << " m";
   EXPECT_GT(r.lower_bound_j, 0.0);
   EXPECT_LT(r.lower_bound_j, r.plan.flown.energy);
   // A bound for every flight that keeps coverage, the baselines too.
@@ -370,9 +379,10 @@ TEST(Planner, PerCellSearchSweepsEachArmOfAnLAlongItself) {
 }
 
 TEST(Planner, SpiralCompetesPerCellOnTheL) {
-  // The same L with spirals allowed: flown around the L with arcs at chain speeds, a spiral costs
-  // less than sweeping the arms; the per-cell search offers it and the plan is never dearer than
-  // the per-cell plan, the whole-area spiral or the straight-lines-only plan.
+  // The same L with spirals allowed: the per-cell search and the whole-area spiral compete, and the
+  // plan is never dearer than the per-cell plan, the whole-area spiral or the straight-lines-only
+  // plan. (Until issue 22 a spiral won here; since the lines end on the boundary and turn inside
+  // on arcs, sweeping the arms along their lengths is cheaper.)
   const auto v = iris();
   const auto model = energy::marinsModel(v);
   const SurveyProblem pr = lShape();
@@ -382,13 +392,10 @@ TEST(Planner, SpiralCompetesPerCellOnTheL) {
   const auto r_lines = planCoverage(pr, v, model, lines);
   expectValid(pr, r);
   ASSERT_TRUE(r.per_cell.has_value());
-  EXPECT_TRUE(std::any_of(r.per_cell->cell_plans.begin(), r.per_cell->cell_plans.end(),
-                          [](const CellPlan& c) { return c.pattern == "spiral"; }));
   EXPECT_LE(r.plan.flown.energy, r.per_cell->flown.energy + 1e-6);
   ASSERT_TRUE(r.best_spiral.has_value());
   EXPECT_LE(r.plan.flown.energy, r.best_spiral->flown.energy + 1e-6);
-  EXPECT_LT(r.plan.flown.energy, r_lines.plan.flown.energy);
-  EXPECT_EQ(r.plan.pattern, "spiral");
+  EXPECT_LE(r.plan.flown.energy, r_lines.plan.flown.energy + 1e-6);
   EXPECT_FALSE(r_lines.best_spiral.has_value());
   EXPECT_NE(r_lines.plan.pattern, "spiral");
 }

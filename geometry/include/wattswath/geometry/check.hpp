@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "wattswath/geometry/path.hpp"
+#include "wattswath/geometry/tolerances.hpp"
 
 namespace wattswath::geometry {
 
@@ -32,12 +33,31 @@ CoverageReport checkCoverage(const PolygonWithHoles& area, const std::vector<Cov
 /// non-finite value, a leg that enters a hole of `area` deeper than tol::kHoleDepth.
 std::vector<std::string> checkPath(const CoveragePath& path, const PolygonWithHoles& area);
 
+/// How much of a path lies where it must not: outside the area's outer boundary or inside a hole.
+struct ContainmentReport {
+  double outside_m = 0.0;    ///< [m] length flown outside the outer boundary
+  double in_holes_m = 0.0;   ///< [m] length flown inside a hole (no-fly zone)
+  double max_depth_m = 0.0;  ///< [m] farthest a flown point gets beyond the boundary it crosses
+  /// Length outside plus length in holes [m].
+  double total() const { return outside_m + in_holes_m; }
+};
+/// Length of `path` outside `area` and inside its holes: lines cut exactly at every boundary
+/// crossing, arcs as chords of at most tol::kArcChord; a piece within `tolerance` [m] of the
+/// boundary counts as inside. With `survey_only` the legs before the first sweep and after the
+/// last one (the approach from home and the return, home may lie outside) are left out.
+ContainmentReport checkContainment(const PolygonWithHoles& area, const CoveragePath& path, bool survey_only = true,
+                                   double tolerance = tol::kContainment);
 /// Whether the segment from `a` to `b` [m] enters the interior of any hole of `area` (touching or
 /// running along a hole's boundary is allowed).
 bool segmentEntersHole(const PolygonWithHoles& area, const Point& a, const Point& b);
 
-/// Shortest polyline from `a` to `b` [m] that enters no hole, over the holes' vertices (visibility
-/// graph and Dijkstra); includes both ends. May leave the outer boundary (a transit may).
+/// Whether the segment from `a` to `b` [m] runs outside the outer boundary of `area` (farther than
+/// tol::kContainment from it).
+bool segmentLeavesArea(const PolygonWithHoles& area, const Point& a, const Point& b);
+/// Shortest polyline from `a` to `b` [m] that enters no hole, over the holes' convex vertices and
+/// the outer boundary's reflex ones (visibility graph and Dijkstra); includes both ends. When both
+/// ends lie inside the outer boundary the route stays inside it; otherwise (a transit from home
+/// outside) it only avoids the holes.
 std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const Point& b);
 
 /// Whether `p` [m] lies strictly inside `ring` by more than `margin` [m] (even-odd rule).
@@ -45,5 +65,7 @@ bool insideRing(const Ring& ring, const Point& p, double margin = 0.0);
 
 /// Distance from `p` to the segment from `a` to `b` [m] (to `a` when the segment has no length).
 double distanceToSegment(const Point& p, const Point& a, const Point& b);
+/// Distance from `p` to the nearest edge of the closed `ring` [m] (infinity for an empty ring).
+double distanceToRing(const Ring& ring, const Point& p);
 
 }  // namespace wattswath::geometry

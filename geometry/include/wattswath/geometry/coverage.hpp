@@ -62,9 +62,9 @@ struct BoustrophedonSettings {
 };
 
 /// Route over one cell: sweep lines spaced at most `spacing` apart (evenly, inset half a spacing
-/// from the walls), alternating direction, ends stretched so the square footprint of side
-/// `spacing` reaches the cell's boundary unless that would enter a hole, joined by connectors
-/// along the cell boundary (role Turn). `area` is the area the cell came from (for hole checks).
+/// from the walls), alternating direction, ending on the cell's boundary (no flown point leaves the
+/// area), joined by connectors straight where that stays in the area and out of its holes, else
+/// along the cell boundary (role Turn). `area` is the area the cell came from.
 Route boustrophedonRoute(const PolygonWithHoles& area, const BoustrophedonDecomposition& decomposition,
                          int cell, const BoustrophedonSettings& settings);
 

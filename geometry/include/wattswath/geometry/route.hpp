@@ -43,8 +43,8 @@ struct CornerSettings {
 /// Builds the path of `route` with corners shaped by `corners`; every leg gets `altitude` [m].
 /// A rounded corner of turn angle t cuts its segments by r tan(|t| / 2), where r is the radius
 /// reduced so no segment loses more than half its length (all of it for the first and last).
-/// A rounded corner whose arc would enter a hole of `keep_out` gets half the radius, then a
-/// quarter, then is flown sharp. Zero-length segments and collinear waypoints are dropped.
+/// A rounded corner (inside `keep_out`) whose arc would enter a hole of `keep_out` or leave its
+/// outer boundary gets half the radius, then a quarter, then is flown sharp. Zero-length segments and collinear waypoints are dropped.
 /// Position and heading are continuous. Throws std::invalid_argument when roles and points do
 /// not match or a value is not finite.
 CoveragePath shapeCorners(const Route& route, const CornerSettings& corners, double altitude = 0.0,

@@ -14,9 +14,9 @@ namespace wattswath::geometry {
 /// Spacing, footprint and margins of the sweep lines.
 struct SweepLineSettings {
   double spacing = 20.0;    ///< [m] distance between lines, > 0
-  double footprint = 20.0;  ///< [m] footprint width across the line (an interval reaches the area inside its band)
   double clearance = 2.0;   ///< [m] distance kept from obstacles along a line
   double run_out = 0.0;     ///< [m] extension of an interval beyond the outer boundary (clipped by obstacles)
+  int fewer_lines = 0;      ///< lines dropped below ceil(extent / spacing), the full-coverage count (>= 1 line is kept)
 };
 
 /// A free interval of one sweep line in the line frame (x along the line) [m].
@@ -46,8 +46,9 @@ struct SweepPass {
 };
 
 /// Sweep lines along `sweep_angle` [rad] over `outer` minus `obstacles` (rings of any orientation):
-/// lines `spacing` apart centred on the area's extent, each interval stretched to the area inside
-/// its footprint band, obstacles widened by the clearance, ends at the outer boundary given the run-out.
+/// lines `spacing` apart centred on the area's extent (ceil(extent / spacing) - fewer_lines of them),
+/// each interval where the line meets the area (so a line ends on the outer boundary), obstacles
+/// widened by the clearance, ends at the outer boundary given the run-out (0: none, the default).
 SweepLines sweepLines(const Ring& outer, const std::vector<Ring>& obstacles, double sweep_angle,
                       const SweepLineSettings& settings);
 

@@ -11,6 +11,7 @@ inline constexpr double kArcChord = 0.05;   ///< [rad] hole checks split arcs in
 inline constexpr double kSwathArcChord = 0.3927;  ///< [rad] swaths of arcs: one rectangle per chord of at most this angle (pi/8)
 inline constexpr double kCheckPosition = 1e-6;  ///< [m] checkPath: largest gap allowed between legs
 inline constexpr double kCheckAngle = 1e-6;     ///< [rad] checkPath: largest heading jump allowed between legs
+inline constexpr double kContainment = 1e-3;  ///< [m] checkContainment: a path this close to the boundary is on it, not beyond
 inline constexpr double kSliver = 1e-6;     ///< [m] cells or walls narrower than this are dropped as slivers
 
 }  // namespace wattswath::geometry::tol

@@ -16,6 +16,7 @@
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/polygon.hpp"
+#include "wattswath/geometry/check.hpp"
 #include "wattswath/planner/battery_use.hpp"
 #include "wattswath/planner/speed.hpp"
 
@@ -46,6 +47,8 @@ struct PlannerSettings {
   int exact_max_cells = 8;           ///< exact cell ordering up to this many cells, heuristic beyond, [0, 12]
   bool spirals = true;               ///< let spirals compete (off: straight parallel lines only, as photogrammetry
                                      ///< often wants for consistent image headings)
+  double overshoot = 0.0;            ///< [m] how far sweep lines may run on beyond the outer boundary for the turn
+                                     ///< (QGC's turnaround distance), [0, 100]; 0: every flown point stays inside
   bool per_cell = true;              ///< also search per cell: each cell of the decomposition at the best angle
                                      ///< picks its own pattern (boustrophedon at its own angle, or spiral)
 
@@ -79,6 +82,13 @@ struct PlanCandidate {
   bool valid = false;           ///< false when no candidate could be built
 };
 
+/// The plan's sweep angle flown with the other line count: the energy-versus-coverage trade of the
+/// line-count choice (issue 22).
+struct LineCountNeighbour {
+  PlanCandidate candidate;  ///< the same angle with one line more or one fewer, flown and checked
+  int lines_delta = 0;      ///< +1: one line more than the plan (the plan dropped one), -1: one fewer
+};
+
 /// Result of planning: the plan, the baselines and the lower bound.
 struct PlanResult {
   PlanCandidate plan;                     ///< the minimum-energy plan
@@ -89,6 +99,7 @@ struct PlanResult {
   double lower_bound_j = 0.0;             ///< [J] physical lower bound on the coverage energy
   int candidates = 0;                     ///< candidate routes scored (whole plans and per-cell routes)
   std::vector<AngleScore> sweep_scan;     ///< one-angle boustrophedon energy at every searched angle, by angle
+  std::optional<LineCountNeighbour> line_count_neighbour;  ///< the one-angle plan's angle with the other line count
   std::vector<std::string> notes;         ///< facts for the user (e.g. why no spiral)
   std::optional<BatteryUse> battery;      ///< predicted battery use of the plan (when the vehicle has a battery)
 };
@@ -108,5 +119,10 @@ double coveragePercent(const SurveyProblem& problem, const geometry::CoveragePat
 /// Problems with `path` against `problem`: gaps between legs, legs entering a hole or no-fly zone.
 /// Empty means valid.
 std::vector<std::string> checkPlan(const SurveyProblem& problem, const geometry::CoveragePath& path);
+
+/// Length of `path` outside the problem's area and inside its holes or no-fly zones
+/// (geometry::checkContainment with the zones as holes; the approach from home and the return
+/// are left out, home may lie outside).
+geometry::ContainmentReport planContainment(const SurveyProblem& problem, const geometry::CoveragePath& path);
 
 }  // namespace wattswath::planner

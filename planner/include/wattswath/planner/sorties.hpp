@@ -20,8 +20,8 @@ namespace wattswath::planner {
 /// One sortie: its flown path (transit out, sweeps and their connectors, transit home).
 struct Sortie {
   FlownPath flown;        ///< legs and speeds as missionFromPlan reads them (energies: closed form)
-  int first_sweep = 0;    ///< [-] index of its first sweep among the plan's sweeps
-  int last_sweep = 0;     ///< [-] index of its last sweep
+  int first_sweep = 0;    ///< [-] index of its first piece among the plan's sweep pieces
+  int last_sweep = 0;     ///< [-] index of its last piece
   double estimate_j = 0;  ///< [J] closed-form energy with the overhead
   bool reversed = false;  ///< flown from the end of its last sweep to the start of its first (shorter transits)
 };
@@ -42,6 +42,9 @@ struct SortieSettings {
   double piece_m = 50.0;    ///< [m] straight sweeps longer than twice this are cut into pieces of at most this,
                             ///< so a sortie may end mid-sweep and the next resume there, [5, 1e4]
   bool naive = false;       ///< true: the naive split (each sortie as long as the budget allows)
+  /// [-] per piece of sweep (Sortie::first_sweep.. indices), a factor on its energy (empty: all 1);
+  /// the caller raises it where a sortie flown by the autopilot model used more than estimated
+  std::vector<double> piece_weight;
 };
 
 /// Splits `plan` (a flown coverage path from home to home over `problem`) into sorties; `scorer`
