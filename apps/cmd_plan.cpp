@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct PlanOpts {
-  std::string area, vehicle, home, out, corners = "auto", sensor_mm, image_px;
+  std::string area, vehicle, home, out, corners = "auto", sensor_mm, image_px, layer, where;
   std::vector<std::string> no_fly;
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
   double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
@@ -64,6 +64,31 @@ std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
   return pts;
 }
 
+/// `seconds` [s] as minutes:seconds ("12:05"), as pilots read flight time.
+std::string minSec(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  const long sec = s % 60;
+  return std::to_string(s / 60) + ":" + (sec < 10 ? "0" : "") + std::to_string(sec);
+}
+
+/// The facts a pilot reads first: time in min:s, energy in Wh, battery share and packs needed,
+/// area in ha, farthest distance from home.
+report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr) {
+  const auto& f = r.plan.flown;
+  report::Facts facts = {{"flight time", minSec(f.time) + " min:s (" + fixedText(f.time, 0) + " s)"},
+                         {"energy (Wh)", fixedText(f.energy / 3600.0, 1) + " Wh (" + fixedText(f.energy, 0) + " J)"},
+                         {"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"}};
+  if (r.battery && r.battery->usable_energy_j > 0.0) {
+    const double share = 100.0 * r.battery->mission_energy_j / r.battery->usable_energy_j;
+    facts.push_back({"battery", fixedText(share, 0) + " % of one battery's usable energy; " +
+                                    std::to_string(static_cast<int>(std::ceil(share / 100.0 - 1e-9))) + " battery(ies) needed"});
+  }
+  double farthest = 0.0;
+  for (const auto& leg : f.path.legs) farthest = std::max({farthest, (leg.start - pr.home).norm(), (leg.end - pr.home).norm()});
+  facts.push_back({"farthest from home", fixedText(farthest, 0) + " m"});
+  return facts;
+}
+
 /// The plan report's data from the planner's result: map legs, Table III-style breakdown of the
 /// coverage and transit legs (each leg re-profiled with energy::profileFromPath and the same
 /// model), the plan and baselines as scored candidates, and the Hwang battery trace when known.
@@ -81,6 +106,8 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
              {"lower bound", num(r.lower_bound_j, 0) + " J (plan / bound " +
                                  num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ")"},
              {"spacing", num(pr.spacing, 2) + " m, altitude " + num(pr.altitude, 1) + " m"}};
+  const auto pilot = pilotFacts(r, pr);
+  d.facts.insert(d.facts.begin() + 1, pilot.begin(), pilot.end());
   d.areas = {pr.area};
   d.no_fly = pr.no_fly;
   d.home = pr.home;
@@ -267,10 +294,10 @@ void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin
   for (const auto& [name, c] : {std::pair<const char*, const pl::PlanCandidate*>{"shortest path", &r.shortest_path},
                                 {"ground-station default", &r.ground_station_default}})
     std::cout << name << ": " << c->flown.energy / 1000.0 << " kJ (plan saves "
-              << 100.0 * (c->flown.energy - e) / c->flown.energy << " %)\n";
+              << 100.0 * (c->flown.energy - e) / c->flown.energy << " % of this baseline's energy)\n";
   if (r.best_spiral)
     std::cout << "best spiral: " << r.best_spiral->flown.energy / 1000.0 << " kJ (plan saves "
-              << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " %)\n";
+              << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " % of this baseline's energy)\n";
   if (r.battery)
     std::cout << "battery: mission " << r.battery->mission_energy_j / 1000.0 << " kJ of "
               << r.battery->usable_energy_j / 1000.0 << " kJ usable (margin " << r.battery->margin_pct << " %, "
@@ -348,6 +375,8 @@ PlanSetup setUp(const PlanOpts& o) {
   PlanSetup s;
   geo::ReadOptions ro;
   ro.no_fly_files = o.no_fly;
+  ro.layer = o.layer;
+  ro.where = o.where;
   progress("plan: reading " + o.area);
   s.area = geo::readSurveyArea(o.area, ro);
   if (!s.area.frame) throw std::invalid_argument(o.area + ": the area has no geodetic frame (metric WKT without an origin); missions need lat/lon");
@@ -496,6 +525,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("AREA", o->area, "survey area (GeoJSON, KML, WKT, QGC .waypoints)")->required()->check(CLI::ExistingFile);
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--no-fly", o->no_fly, "no-fly zone file(s)")->check(CLI::ExistingFile);
+  addAreaSelectOptions(cmd, o->layer, o->where);
   cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
   cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
   cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));

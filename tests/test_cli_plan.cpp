@@ -92,6 +92,10 @@ void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
   EXPECT_NE(html.find("Energy by part and effect"), std::string::npos);
   EXPECT_NE(html.find("Candidate plans"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
+  // What a pilot reads (issue 21): time in min:s, energy in Wh, the area in ha, savings with their base.
+  for (const char* k : {" min:s (", " Wh (", " ha (", "energy [Wh]", "energy above the chosen plan [% of the chosen plan]"})
+    EXPECT_NE(html.find(k), std::string::npos) << k;
+  EXPECT_EQ(html.find("vs chosen"), std::string::npos);
 }
 
 }  // namespace
@@ -120,6 +124,10 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   EXPECT_TRUE(j.at("mission").at("camera").is_null());
   EXPECT_DOUBLE_EQ(j.at("mission").at("no_fly_margin_m").get<double>(), 2.0);
   EXPECT_EQ(j.at("mission").at("waypoint_legs_within_margin").get<int>(), 0);
+  // The caption matches the drawing: the no-fly zone is a hole (white, grey outline).
+  const std::string html = slurp(out + "/report.html");
+  EXPECT_NE(html.find("holes in the area (white, grey outline) are not flown over"), std::string::npos);
+  EXPECT_NE(html.find("farthest from home"), std::string::npos);
 }
 
 TEST(CliPlan, TextOutputSaysWhenNoCameraCommandsAreWritten) {

@@ -16,9 +16,17 @@ namespace wattswath::geometry {
 namespace {
 using namespace detail;
 
+/// Reads a text-format area file whole, refusing files over kMaxAreaFileBytes before reading.
 std::string readText(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) throw SurveyAreaError(path + ": cannot open the file");
+  const auto size = static_cast<long long>(f.tellg());
+  if (size > kMaxAreaFileBytes) {
+    throw SurveyAreaError(path + ": the file has " + std::to_string(size) + " bytes; area files of at most " +
+                          std::to_string(kMaxAreaFileBytes) + " bytes (64 MiB) are read (simplify the polygon, e.g. "
+                          "ogr2ogr -simplify 0.5)");
+  }
+  f.seekg(0);
   std::ostringstream s;
   s << f.rdbuf();
   return s.str();
@@ -28,21 +36,22 @@ std::string extensionOf(const std::string& path) {
   const auto slash = path.find_last_of('/');
   const auto dot = path.find_last_of('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string e = path.substr(dot + 1);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
+  return lowerAscii(path.substr(dot + 1));
 }
 
 AreaFormat sniff(const std::string& text) {
   size_t i = 0;
   while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
   if (i >= text.size()) return AreaFormat::Auto;
-  if (text[i] == '{') return AreaFormat::GeoJson;
+  if (text[i] == '{') return AreaFormat::GeoJson;  // a QGC plan too: parseGeoJson tells them apart
+  if (text.compare(i, 5, "<?xml") == 0 || text.compare(i, 4, "<kml") == 0) {
+    return text.find("<kml", i) != std::string::npos ? AreaFormat::Kml : AreaFormat::Gdal;  // GML, GPX: GDAL
+  }
   if (text[i] == '<') return AreaFormat::Kml;
   if (text.compare(i, 7, "QGC WPL") == 0) return AreaFormat::QgcWpl;
-  std::string head;
-  for (size_t j = i; j < text.size() && j < i + 16; ++j) head.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(text[j]))));
-  if (head.rfind("POLYGON", 0) == 0 || head.rfind("MULTIPOLYGON", 0) == 0 || head.rfind("SRID=", 0) == 0) return AreaFormat::Wkt;
+  if (text.compare(i, 24, "#saved by Mission Planner") == 0) return AreaFormat::MissionPlannerPoly;
+  const std::string head = lowerAscii(text.substr(i, 16));
+  if (head.rfind("polygon", 0) == 0 || head.rfind("multipolygon", 0) == 0 || head.rfind("srid=", 0) == 0) return AreaFormat::Wkt;
   return AreaFormat::Auto;
 }
 
@@ -52,30 +61,43 @@ const char* formatName(AreaFormat f) {
     case AreaFormat::Kml: return "KML";
     case AreaFormat::Wkt: return "WKT";
     case AreaFormat::QgcWpl: return "QGC WPL";
+    case AreaFormat::QgcPlan: return "QGC plan";
+    case AreaFormat::MissionPlannerPoly: return "Mission Planner poly";
+    case AreaFormat::Gdal: return "a GDAL format";
     case AreaFormat::Auto: return "unknown";
   }
   return "unknown";
 }
 
+/// The format an extension names; Gdal for every extension our text readers do not own.
+AreaFormat formatOfExtension(const std::string& ext) {
+  if (ext == "geojson" || ext == "json") return AreaFormat::GeoJson;
+  if (ext == "kml") return AreaFormat::Kml;
+  if (ext == "wkt") return AreaFormat::Wkt;
+  if (ext == "waypoints") return AreaFormat::QgcWpl;
+  if (ext == "plan") return AreaFormat::QgcPlan;
+  if (ext == "poly") return AreaFormat::MissionPlannerPoly;
+  if (ext.empty() || ext == "txt" || ext == "area") return AreaFormat::Auto;
+  return AreaFormat::Gdal;
+}
+
+/// Decides the format of text already read (parseSurveyArea, and files our readers own).
 AreaFormat decideFormat(const std::string& source, const std::string& text, AreaFormat requested) {
   if (requested != AreaFormat::Auto) return requested;
-  const std::string ext = extensionOf(source);
-  AreaFormat byExt = AreaFormat::Auto;
-  if (ext == "geojson" || ext == "json") byExt = AreaFormat::GeoJson;
-  else if (ext == "kml") byExt = AreaFormat::Kml;
-  else if (ext == "wkt") byExt = AreaFormat::Wkt;
-  else if (ext == "waypoints") byExt = AreaFormat::QgcWpl;
+  AreaFormat byExt = formatOfExtension(extensionOf(source));
+  if (byExt == AreaFormat::Gdal) return byExt;
   const AreaFormat byContent = sniff(text);
-  if (byExt != AreaFormat::Auto && byContent != AreaFormat::Auto && byExt != byContent) {
+  // A .plan and a .json are both JSON; the JSON reader tells GeoJSON and QGC plans apart.
+  const bool jsonAlike = byExt == AreaFormat::QgcPlan && byContent == AreaFormat::GeoJson;
+  if (byExt != AreaFormat::Auto && byContent != AreaFormat::Auto && byExt != byContent && !jsonAlike) {
     throw SurveyAreaError(source + ": the extension says " + formatName(byExt) + " but the content looks like " +
                           formatName(byContent));
   }
   const AreaFormat f = byExt != AreaFormat::Auto ? byExt : byContent;
-  if (f == AreaFormat::Auto) {
-    throw SurveyAreaError(source + ": unknown survey area format (expected GeoJSON, KML, WKT or QGC WPL 110)");
-  }
-  return f;
+  return f == AreaFormat::Auto ? AreaFormat::Gdal : f;  // GDAL tries its drivers, and names the formats if none reads it
 }
+
+GdalSelection selectionOf(const ReadOptions& o) { return GdalSelection{o.layer, o.where}; }
 
 RawArea parseAny(const std::string& withBom, const std::string& source, const ReadOptions& o) {
   // A UTF-8 byte order mark (Windows editors) is not content in any of the formats.
@@ -86,9 +108,24 @@ RawArea parseAny(const std::string& withBom, const std::string& source, const Re
     case AreaFormat::Kml: return parseKml(text, source);
     case AreaFormat::Wkt: return parseWkt(text, source, o.wkt_units == WktUnits::LonLatDegrees);
     case AreaFormat::QgcWpl: return parseQgcWpl(text, source);
+    case AreaFormat::QgcPlan: return parseQgcPlan(text, source);
+    case AreaFormat::MissionPlannerPoly: return parseMissionPlannerPoly(text, source);
+    case AreaFormat::Gdal: return parseWithGdal(withBom, source, selectionOf(o));
     case AreaFormat::Auto: break;
   }
   throw SurveyAreaError(source + ": unknown survey area format");
+}
+
+/// Reads a file: formats GDAL owns (Shapefile with its sidecars, GeoPackage, ...) are opened by
+/// GDAL in place; the text formats are read into memory (bounded) and parsed.
+RawArea readAny(const std::string& path, const ReadOptions& o) {
+  const bool gdal = o.format == AreaFormat::Gdal ||
+                    (o.format == AreaFormat::Auto && formatOfExtension(extensionOf(path)) == AreaFormat::Gdal);
+  if (gdal) {
+    if (!std::ifstream(path)) throw SurveyAreaError(path + ": cannot open the file");
+    return readWithGdal(path, path, selectionOf(o));
+  }
+  return parseAny(readText(path), path, o);
 }
 
 /// Throws naming the file, ring and vertex when a lon/lat vertex is not finite or out of range.
@@ -216,8 +253,9 @@ Point SurveyArea::bboxMax() const {
   return m;
 }
 
-SurveyArea parseSurveyArea(const std::string& text, const std::string& source, const ReadOptions& options) {
-  RawArea raw = parseAny(text, source, options);
+namespace {
+/// Frame, projection, validation and the file's own no-fly zones, for a RawArea from any reader.
+SurveyArea buildArea(RawArea raw, const std::string& source, const ReadOptions& options) {
   if (raw.polygons.empty()) throw SurveyAreaError(source + ": no polygon found (expected at least one area polygon)");
   SurveyArea area;
   area.source = source;
@@ -254,14 +292,20 @@ SurveyArea parseSurveyArea(const std::string& text, const std::string& source, c
   return area;
 }
 
+}  // namespace
+
+SurveyArea parseSurveyArea(const std::string& text, const std::string& source, const ReadOptions& options) {
+  return buildArea(parseAny(text, source, options), source, options);
+}
+
 SurveyArea readSurveyArea(const std::string& path, const ReadOptions& options) {
-  SurveyArea area = parseSurveyArea(readText(path), path, options);
+  SurveyArea area = buildArea(readAny(path, options), path, options);
   for (const auto& f : options.no_fly_files) subtractNoFlyZones(area, readNoFlyZones(f, area, options));
   return area;
 }
 
 NoFlyZones readNoFlyZones(const std::string& path, const SurveyArea& area, const ReadOptions& options) {
-  RawArea raw = parseAny(readText(path), path, options);
+  RawArea raw = readAny(path, options);
   std::vector<LabeledPolygon> all = std::move(raw.polygons);
   for (auto& p : raw.no_fly) all.push_back(std::move(p));
   if (all.empty()) throw SurveyAreaError(path + ": no polygon found (expected at least one no-fly zone)");
