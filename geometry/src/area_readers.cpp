@@ -131,6 +131,15 @@ RawArea readAny(const std::string& path, const ReadOptions& o) {
 /// Throws naming the file, ring and vertex when a lon/lat vertex is not finite or out of range.
 void checkGeodeticRing(const LabeledRing& r, const std::string& source) {
   for (size_t i = 0; i < r.pts.size(); ++i) {
+    const Point& p = r.pts[i];
+    // Projected metres (UTM, a national grid) in a file without a CRS: say so, not "lon/lat swapped?".
+    const double big = std::max(std::abs(p.x()), std::abs(p.y()));
+    if (big > 360.0 && big < 1e8) {
+      throw SurveyAreaError(source + ": " + r.name + ", " + r.labels[i] + ": (" + std::to_string(p.x()) + ", " +
+                            std::to_string(p.y()) + ") is not lon/lat in degrees; it looks like projected metres. Give "
+                            "the file its CRS (a GeoJSON \"crs\" member as ogr2ogr writes it, a .prj beside a "
+                            "Shapefile) or reproject it to WGS84 (ogr2ogr -t_srs EPSG:4326); WKT: --wkt-units metres");
+    }
     try {
       validateGeoPoint(GeoPoint{r.pts[i].y(), r.pts[i].x(), 0.0}, source + ": " + r.name + ", " + r.labels[i]);
     } catch (const std::invalid_argument& e) {

@@ -126,6 +126,19 @@ TEST(AreaFormats, UtmGeoJsonIsReprojectedNotCalledSwapped) {
   fs::remove_all(d);
 }
 
+TEST(AreaFormats, MetresWithoutACrsAreCalledMetresNotSwapped) {
+  const std::string text = R"({"type":"Polygon","coordinates":[[[612000,4841000],[612100,4841000],[612100,4841100],[612000,4841000]]]})";
+  try {
+    geo::parseSurveyArea(text, "utm_no_crs.geojson");
+    FAIL() << "accepted";
+  } catch (const geo::SurveyAreaError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("geometry, outer boundary, vertex 0: (612000.000000, 4841000.000000) is not lon/lat in degrees; it looks "
+                     "like projected metres"), std::string::npos) << m;
+    EXPECT_EQ(m.find("swapped"), std::string::npos) << m;
+  }
+}
+
 TEST(AreaFormats, NoFlyByNameInGdalFormatsAndGeoJson) {
   const fs::path d = tempDir("nofly");
   const std::string gj = R"({"type":"FeatureCollection","features":[
