@@ -12,7 +12,10 @@
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/path_profile.hpp"
+#include "report_data.hpp"
+#include "wattswath/mission/files.hpp"
 #include "wattswath/report/reports.hpp"
+#include "wattswath/report/svg.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -64,18 +67,11 @@ std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
   return pts;
 }
 
-/// `seconds` [s] as minutes:seconds ("12:05"), as pilots read flight time.
-std::string minSec(double seconds) {
-  const long s = std::lround(std::max(0.0, seconds));
-  const long sec = s % 60;
-  return std::to_string(s / 60) + ":" + (sec < 10 ? "0" : "") + std::to_string(sec);
-}
-
 /// The facts a pilot reads first: time in min:s, energy in Wh, battery share and packs needed,
 /// area in ha, farthest distance from home.
 report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr) {
   const auto& f = r.plan.flown;
-  report::Facts facts = {{"flight time", minSec(f.time) + " min:s (" + fixedText(f.time, 0) + " s)"},
+  report::Facts facts = {{"flight time", report::formatMinSec(f.time) + " min:s (" + fixedText(f.time, 0) + " s)"},
                          {"energy (Wh)", fixedText(f.energy / 3600.0, 1) + " Wh (" + fixedText(f.energy, 0) + " J)"},
                          {"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"}};
   if (r.battery && r.battery->usable_energy_j > 0.0) {
@@ -484,12 +480,14 @@ void runPlan(const PlanOpts& o) {
   go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
   go.leg_properties["time_s"] = r.plan.flown.leg_time;
   const fs::path dir(o.out);
-  writeTextFileAtomic((dir / "mission.plan").string(), ms::toQgcPlan(pm.mission));
+  const std::string plan_text = ms::toQgcPlan(pm.mission);
+  writeTextFileAtomic((dir / "mission.plan").string(), plan_text);
   writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
   writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
   if (!o.no_report || !o.report_svg.empty()) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
+    data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), frame);  // numbered as the ground station shows them
     data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
                                                    fixedText(s.photos->trigger_distance_m, 2) + " m)"
                                              : std::string("no camera commands")});

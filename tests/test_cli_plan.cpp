@@ -128,6 +128,7 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   const std::string html = slurp(out + "/report.html");
   EXPECT_NE(html.find("holes in the area (white, grey outline) are not flown over"), std::string::npos);
   EXPECT_NE(html.find("farthest from home"), std::string::npos);
+  EXPECT_NE(html.find(", take-off (1), return and landing ("), std::string::npos);  // numbered as in mission.plan
 }
 
 TEST(CliPlan, TextOutputSaysWhenNoCameraCommandsAreWritten) {

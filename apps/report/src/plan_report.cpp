@@ -17,6 +17,17 @@ namespace {
 
 std::string J(double joules) { return formatNumber(joules, 0); }
 
+/// The home marker's label: home, the path's start, and the take-off and return items there
+/// with their numbers ("home: take-off (1), return and landing (42)").
+std::string homeLabel(const std::vector<MissionMark>& items, bool startAtHome) {
+  std::string label = startAtHome ? "home, start" : "home";
+  for (const auto& it : items) {
+    if (it.command == "NAV_TAKEOFF") label += ", take-off (" + std::to_string(it.seq) + ")";
+    if (it.command == "NAV_RETURN_TO_LAUNCH") label += ", return and landing (" + std::to_string(it.seq) + ")";
+  }
+  return label;
+}
+
 void planMap(HtmlReport& r, const PlanReportData& d) {
   MapView m;
   m.title = d.colour_by == PlanColour::Speed ? "Chosen path, coloured by cruise speed" : "Chosen path, coloured by mean power";
@@ -45,7 +56,8 @@ void planMap(HtmlReport& r, const PlanReportData& d) {
     }
   }
   const bool startAtHome = d.home && start && (*d.home - *start).norm() < 1.0;
-  if (d.home) m.markers.push_back({*d.home, startAtHome ? "home, start" : "home", MapMarker::Shape::Square, "#000000"});
+  addWaypointMarkers(m, d.items);
+  if (d.home) m.markers.push_back({*d.home, homeLabel(d.items, startAtHome), MapMarker::Shape::Square, "#000000"});
   if (start && !startAtHome) m.markers.push_back({*start, "start", MapMarker::Shape::Triangle, "#009E73"});
   if (m.areas.empty() && m.path.empty() && m.markers.empty()) {
     r.paragraph("No area or path was given: no map.");
@@ -57,6 +69,8 @@ void planMap(HtmlReport& r, const PlanReportData& d) {
   r.figure({"plan-map", renderSvg(m),
             "Map in local metres (east right, north up). Hover a leg for its number, speed, length, time and energy; "
             "dashed legs are transits" +
+                std::string(d.items.empty() ? "" : "; numbers are the mission items' numbers (seq) as QGroundControl and "
+                                                   "Mission Planner show them") +
                 std::string(holes > 0 ? "; holes in the area (white, grey outline) are not flown over" : "") +
                 (d.no_fly.empty() ? "" : "; red dashed areas are no-fly zones") + "."});
   Table t{"Legs", {"leg", "role", "speed [m/s]", "length [m]", "time [s]", "energy [kJ]", "energy [Wh]"}, {},
