@@ -488,8 +488,9 @@ void runPlan(const PlanOpts& o) {
   if (!o.no_report || !o.report_svg.empty()) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
     data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), frame);  // numbered as the ground station shows them
+    const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
     data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
-                                                   fixedText(s.photos->trigger_distance_m, 2) + " m)"
+                                                   fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
                                              : std::string("no camera commands")});
     writeReport(report::planReport(data), o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
   }

@@ -145,8 +145,10 @@ TEST(CliPlan, CameraTriggersAlongEachSweepAtTheFrontalFootprintDistance) {
   const auto out = outDir("sensor");
   const auto j = planJson(sourcePath("data/areas/espiral_rectangle.geojson"), out,
                           "--altitude 50 --sensor-mm 23.2,15.4 --focal-mm 16 --image-px 5456,3632 --overlap 0.7 "
-                          "--frontal-overlap 0.8 --no-spiral --no-report");
+                          "--frontal-overlap 0.8 --no-spiral");
   const auto& cam = j.at("mission").at("camera");
+  // The report gives the photo count with the trigger distance and the GSD (50 x 23.2 / (5456 x 16) m = 1.33 cm/px).
+  EXPECT_NE(slurp(out + "/report.html").find(" m, GSD 1.33 cm/px)"), std::string::npos);
   ASSERT_TRUE(cam.is_object());
   EXPECT_NEAR(cam.at("trigger_distance_m").get<double>(), 0.2 * 48.262463343108504, 1e-9);
   EXPECT_NEAR(cam.at("gsd_m").get<double>(), 50.0 * 23.2 / (5456.0 * 16.0), 1e-12);
