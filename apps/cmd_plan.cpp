@@ -40,7 +40,7 @@ struct PlanOpts {
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
   double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
   double no_fly_margin = pl::kDefaultNoFlyMargin;
-  bool force = false, json = false, no_report = false, no_spiral = false;
+  bool force = false, json = false, no_report = false, no_spiral = false, gpkg = false;
   std::string report_svg;
 };
 
@@ -263,8 +263,10 @@ nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, 
             {"ground_station_default", candidateJson(r.ground_station_default, e)},
             {"best_spiral", r.best_spiral ? candidateJson(*r.best_spiral, e) : nlohmann::json(nullptr)}}},
           {"battery", batteryJson(r.battery)},
-          {"files", {(dir / "mission.plan").string(), (dir / "mission.waypoints").string(), (dir / "path.geojson").string(),
-                     (dir / "legs.csv").string()}},
+          {"files", o.gpkg ? nlohmann::json{(dir / "mission.plan").string(), (dir / "mission.waypoints").string(),
+                                            (dir / "path.geojson").string(), (dir / "legs.csv").string(), (dir / "plan.gpkg").string()}
+                           : nlohmann::json{(dir / "mission.plan").string(), (dir / "mission.waypoints").string(),
+                                            (dir / "path.geojson").string(), (dir / "legs.csv").string()}},
           {"notes", notes}};
 }
 
@@ -452,6 +454,7 @@ void runPlan(const PlanOpts& o) {
   const auto& frame = *s.area.frame;
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
   if (!o.no_report) files.push_back("report.html");
+  if (o.gpkg) files.push_back("plan.gpkg");
   for (const auto& f : files)
     if (fs::exists(fs::path(o.out) / f) && !o.force)
       throw std::runtime_error((fs::path(o.out) / f).string() + " exists; pass --force to overwrite it");
@@ -483,7 +486,9 @@ void runPlan(const PlanOpts& o) {
   const std::string plan_text = ms::toQgcPlan(pm.mission);
   writeTextFileAtomic((dir / "mission.plan").string(), plan_text);
   writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
-  writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
+  const std::string path_geojson = geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go);
+  writeTextFileAtomic((dir / "path.geojson").string(), path_geojson);
+  if (o.gpkg) geo::writeGeoPackage((dir / "plan.gpkg").string(), {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
   if (!o.no_report || !o.report_svg.empty()) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
@@ -551,6 +556,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_flag("--no-spiral", o->no_spiral,
                 "straight parallel lines only: spirals do not compete (consistent image headings for photogrammetry)");
   cmd->add_flag("--no-report", o->no_report, "do not write DIR/report.html (the HTML plan report, on by default)");
+  cmd->add_flag("--gpkg", o->gpkg, "also write DIR/plan.gpkg: the legs and the area (holes, home) as GeoPackage layers for QGIS");
   cmd->add_option("--report-svg", o->report_svg, "also write the report's figures as SVG files into this folder");
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {

@@ -73,6 +73,36 @@ TEST(CliGis, PathGeoJsonKeepsEveryFieldThroughShapefileGpxAndGeoPackage) {
   }
 }
 
+TEST(CliGis, GpkgHoldsTheLegsAndTheAreaAsLayers) {
+  const fs::path d = fs::temp_directory_path() / "wattswath_test_gis_gpkg";
+  fs::remove_all(d);
+  const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " +
+                     sourcePath("data/vehicles/iris.json") + " --spacing 15 --out " + d.string() + " --gpkg --no-report 2>&1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto path = nlohmann::json::parse(slurp(d / "path.geojson"));
+  for (const char* layer : {"legs", "area"}) {
+    const fs::path back = d / (std::string(layer) + ".geojson");
+    ASSERT_EQ(run("ogr2ogr -f GeoJSON '" + back.string() + "' '" + (d / "plan.gpkg").string() + "' " + layer + " 2>&1").status, 0)
+        << layer;
+    const auto j = nlohmann::json::parse(slurp(back));
+    if (std::string(layer) == "legs") {
+      EXPECT_EQ(j.at("features").size(), path.at("features").size());  // one feature per leg, as path.geojson
+    } else {
+      EXPECT_EQ(j.at("features").size(), 2u);  // the area (its hole) and home
+    }
+  }
+  // The area layer reads back as the survey area.
+  const auto info = run(cliBinary() + " area info " + (d / "plan.gpkg").string() + " --layer area --json 2>/dev/null");
+  ASSERT_EQ(info.status, 0) << info.output;
+  EXPECT_EQ(nlohmann::json::parse(info.output).at("holes"), 1);
+  // Without --force an existing plan.gpkg is refused before any work (the other outputs removed).
+  for (const char* f : {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"}) fs::remove(d / f);
+  const auto again = run(cliBinary() + " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " +
+                         sourcePath("data/vehicles/iris.json") + " --spacing 15 --out " + d.string() + " --gpkg --no-report 2>&1");
+  EXPECT_NE(again.status, 0);
+  EXPECT_NE(again.output.find("plan.gpkg exists; pass --force"), std::string::npos) << again.output;
+}
+
 TEST(CliGis, OwnMissionPlanReadsBackAsTheFencedArea) {
   const auto area = run(cliBinary() + " area info " + sourcePath("data/areas/iris_area.geojson") + " --json 2>/dev/null");
   const auto plan = run(cliBinary() + " area info " + (plannedIris("plan") / "mission.plan").string() + " --json 2>/dev/null");

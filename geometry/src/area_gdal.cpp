@@ -4,7 +4,6 @@
 // the other readers (area_internal.hpp). GDAL is private to this file.
 #include <atomic>
 #include <memory>
-#include <mutex>
 #include <string>
 
 #include <cpl_error.h>
@@ -15,6 +14,7 @@
 #include <ogrsf_frmts.h>
 
 #include "area_internal.hpp"
+#include "gdal_util.hpp"
 
 namespace wattswath::geometry::detail {
 namespace {
@@ -25,25 +25,6 @@ constexpr int kMaxCollectionDepth = 16;
 constexpr size_t kMaxVertices = 1000000;
 
 [[noreturn]] void fail(const std::string& source, const std::string& what) { throw SurveyAreaError(source + ": " + what); }
-
-/// Keeps GDAL's own messages off stderr while this reader runs (library code never prints); the
-/// last one is quoted in our errors instead. Thread-local in GDAL, so safe with other threads.
-struct QuietGdal {
-  QuietGdal() {
-    static std::once_flag once;
-    std::call_once(once, [] { GDALAllRegister(); });
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-  }
-  ~QuietGdal() { CPLPopErrorHandler(); }
-  QuietGdal(const QuietGdal&) = delete;
-  QuietGdal& operator=(const QuietGdal&) = delete;
-};
-
-std::string gdalSays() {
-  const char* m = CPLGetLastErrorMsg();
-  return (m && *m) ? std::string(" (GDAL: ") + m + ")" : std::string();
-}
 
 /// The string value of field `name` (any case), or "" when the layer has no such field.
 std::string fieldText(OGRFeature& f, const char* name) {

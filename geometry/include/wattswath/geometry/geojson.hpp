@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "wattswath/geometry/frame.hpp"
@@ -37,6 +38,12 @@ std::string coveragePathToGeoJson(const std::vector<CoveragePath>& paths, const 
 /// are the no-fly zones), and the home Point (role "home") when known. Reading it back gives the
 /// same area. Throws SurveyAreaError when the area has no geodetic frame.
 std::string surveyAreaToGeoJson(const SurveyArea& area, int indent = 1);
+
+/// Writes GeoJSON FeatureCollections (lon/lat, WGS84) as the layers of one GeoPackage through
+/// GDAL: `layers` holds (layer name, GeoJSON text) pairs, e.g. the legs of coveragePathToGeoJson()
+/// and the area of surveyAreaToGeoJson(). Replaces `path` only when every layer is written (a
+/// temporary beside it, then a rename). Throws std::runtime_error naming the path and the layer.
+void writeGeoPackage(const std::string& path, const std::vector<std::pair<std::string, std::string>>& layers);
 
 /// Lower-case name of a leg role ("sweep", "turn", "transit", "climb").
 std::string roleName(LegRole role);
