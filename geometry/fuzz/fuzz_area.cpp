@@ -1,7 +1,7 @@
 // libFuzzer target: our own survey-area readers (GeoJSON, KML, WKT, QGC WPL 110, QGC .plan,
 // Mission Planner .poly) on arbitrary bytes, each format forced in turn and then decided by the
 // content. GDAL's drivers (AreaFormat::Gdal) are not forced here: GDAL is fuzzed by OSS-Fuzz, and
-// Auto reaches it only for content none of our readers claims. Any std::exception is an accepted
+// text in memory reaches it only as a GeoJSON whose "crs" is not WGS84. Any std::exception is an accepted
 // answer; a crash, a sanitizer report or an accepted area with a non-finite or non-positive area
 // is a finding.
 #include <cmath>

@@ -44,10 +44,7 @@ AreaFormat sniff(const std::string& text) {
   while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
   if (i >= text.size()) return AreaFormat::Auto;
   if (text[i] == '{') return AreaFormat::GeoJson;  // a QGC plan too: parseGeoJson tells them apart
-  if (text.compare(i, 5, "<?xml") == 0 || text.compare(i, 4, "<kml") == 0) {
-    return text.find("<kml", i) != std::string::npos ? AreaFormat::Kml : AreaFormat::Gdal;  // GML, GPX: GDAL
-  }
-  if (text[i] == '<') return AreaFormat::Kml;
+  if (text[i] == '<') return AreaFormat::Kml;  // GML and GPX are told by their extension (GDAL)
   if (text.compare(i, 7, "QGC WPL") == 0) return AreaFormat::QgcWpl;
   if (text.compare(i, 24, "#saved by Mission Planner") == 0) return AreaFormat::MissionPlannerPoly;
   const std::string head = lowerAscii(text.substr(i, 16));
@@ -94,7 +91,12 @@ AreaFormat decideFormat(const std::string& source, const std::string& text, Area
                           formatName(byContent));
   }
   const AreaFormat f = byExt != AreaFormat::Auto ? byExt : byContent;
-  return f == AreaFormat::Auto ? AreaFormat::Gdal : f;  // GDAL tries its drivers, and names the formats if none reads it
+  if (f == AreaFormat::Auto) {
+    throw SurveyAreaError(source + ": unknown survey area format (expected GeoJSON, KML, WKT, QGC WPL 110, a QGC .plan, "
+                          "a Mission Planner .poly, or a GIS file GDAL reads, named by its extension: .shp, .gpkg, .kmz, "
+                          ".gml, .gpx, .csv, ...)");
+  }
+  return f;
 }
 
 GdalSelection selectionOf(const ReadOptions& o) { return GdalSelection{o.layer, o.where}; }
@@ -125,7 +127,13 @@ RawArea readAny(const std::string& path, const ReadOptions& o) {
     if (!std::ifstream(path)) throw SurveyAreaError(path + ": cannot open the file");
     return readWithGdal(path, path, selectionOf(o));
   }
-  return parseAny(readText(path), path, o);
+  const std::string text = readText(path);
+  // A file whose extension and content no reader of ours claims: GDAL's drivers try it (they
+  // name the formats expected when none reads it). Text in memory (parseSurveyArea, the fuzz
+  // target) is not handed to GDAL unless AreaFormat::Gdal is asked for.
+  const bool unclaimed = o.format == AreaFormat::Auto && formatOfExtension(extensionOf(path)) == AreaFormat::Auto &&
+                         sniff(text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text) == AreaFormat::Auto;
+  return unclaimed ? readWithGdal(path, path, selectionOf(o)) : parseAny(text, path, o);
 }
 
 /// Throws naming the file, ring and vertex when a lon/lat vertex is not finite or out of range.

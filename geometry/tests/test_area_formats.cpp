@@ -155,6 +155,22 @@ TEST(AreaFormats, NoFlyByNameInGdalFormatsAndGeoJson) {
   fs::remove_all(d);
 }
 
+TEST(AreaFormats, OtherExtensionsGoToGdalUnclaimedTextDoesNot) {
+  const fs::path d = tempDir("unknown_ext");
+  ogr2ogr("-f GPKG", d / "field.gpkg", kIris);
+  fs::copy_file(d / "field.gpkg", d / "field.dat");
+  EXPECT_NEAR(geo::readSurveyArea((d / "field.dat").string()).area(), geo::readSurveyArea(kIris).area(), 1e-6);
+  // Text in memory without an extension GDAL could own (.txt, none) that no reader of ours claims
+  // is not handed to GDAL's drivers (the fuzz target's inputs).
+  try {
+    geo::parseSurveyArea("garbage", "mystery.txt");
+    FAIL() << "accepted";
+  } catch (const geo::SurveyAreaError& e) {
+    EXPECT_NE(std::string(e.what()).find("mystery.txt: unknown survey area format"), std::string::npos) << e.what();
+  }
+  fs::remove_all(d);
+}
+
 TEST(AreaFormats, UnreadableFileNamesTheFormatsExpected) {
   const fs::path d = tempDir("unreadable");
   writeFile(d / "area.shp", "not a shapefile");
