@@ -28,6 +28,11 @@ CLI::Option* addJsonFlag(CLI::App* cmd, bool& json) {
   return cmd->add_flag("--json", json, "Print one JSON object on stdout instead of text");
 }
 
+void addAreaSelectOptions(CLI::App* cmd, std::string& layer, std::string& where) {
+  cmd->add_option("--layer", layer, "GIS area files (GeoPackage, Shapefile, KMZ, GPX, ...): read only this layer");
+  cmd->add_option("--where", where, "GIS area files: read only features matching this OGR SQL filter, e.g. \"name = 'field 3'\"");
+}
+
 std::string formatNumber(double x) {
   std::ostringstream os;
   os.precision(10);

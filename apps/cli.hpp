@@ -58,6 +58,9 @@ void writeReport(const report::HtmlReport& report, const std::string& html_path,
 /// --position-source, --airborne-current, --max-gap) to `cmd`, storing into `options`. Use with logs::readFlightLog().
 void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& options);
 
+/// Adds `--layer NAME` and `--where SQL` (which layer and features of a GIS area file GDAL reads) to `cmd`.
+void addAreaSelectOptions(CLI::App* cmd, std::string& layer, std::string& where);
+
 /// Adds the common `--force` flag (allow replacing existing output files) to `cmd`.
 CLI::Option* addForceFlag(CLI::App* cmd, bool& force);
 

@@ -49,18 +49,21 @@ void registerAreaInfo(CLI::App& area) {
   struct Opts {
     std::string path;
     std::vector<std::string> no_fly;
-    std::string wkt_units = "lonlat";
+    std::string wkt_units = "lonlat", layer, where;
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* cmd = area.add_subcommand("info", "Read, validate and describe a survey area (GeoJSON, KML, WKT, QGC .waypoints)");
+  auto* cmd = area.add_subcommand("info", "Read, validate and describe a survey area (GeoJSON, KML, WKT, QGC .waypoints / .plan, Mission Planner .poly, any GDAL vector format)");
   cmd->add_option("AREA", o->path, "survey area file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--no-fly", o->no_fly, "extra no-fly zone file(s), subtracted from the area")->check(CLI::ExistingFile);
   cmd->add_option("--wkt-units", o->wkt_units, "WKT coordinates: lonlat (degrees) or metres")
       ->check(CLI::IsMember({"lonlat", "metres"}));
+  addAreaSelectOptions(cmd, o->layer, o->where);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
     geo::ReadOptions ro;
+    ro.layer = o->layer;
+    ro.where = o->where;
     ro.no_fly_files = o->no_fly;
     ro.wkt_units = o->wkt_units == "metres" ? geo::WktUnits::Metres : geo::WktUnits::LonLatDegrees;
     const geo::SurveyArea a = geo::readSurveyArea(o->path, ro);

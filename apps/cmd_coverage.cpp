@@ -90,7 +90,7 @@ void registerCoverageCommand(CLI::App& app) {
   cmd->add_option("--start-vertex", o->start_vertex, "Spiral: start vertex of the first lap")->capture_default_str();
   cmd->add_flag("--clockwise", o->clockwise, "Spiral: fly the laps clockwise");
   cmd->add_option("--no-fly", o->no_fly, "Extra no-fly zone files, subtracted from the area")->check(CLI::ExistingFile);
-  cmd->add_option("--out", o->out, "Path file to write (GeoJSON LineString, lat/lon, per-vertex properties)");
+  cmd->add_option("--out", o->out, "Path file to write (GeoJSON, lon/lat, one LineString feature per leg with scalar properties)");
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {

@@ -14,7 +14,10 @@
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/path_profile.hpp"
+#include "report_data.hpp"
+#include "wattswath/mission/files.hpp"
 #include "wattswath/report/reports.hpp"
+#include "wattswath/report/svg.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -35,14 +38,14 @@ namespace fs = std::filesystem;
 namespace {
 
 struct PlanOpts {
-  std::string area, vehicle, home, out, corners = "auto", sensor_mm, image_px;
+  std::string area, vehicle, home, out, corners = "auto", sensor_mm, image_px, layer, where;
   std::vector<std::string> no_fly;
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
   double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
   double no_fly_margin = pl::kDefaultNoFlyMargin;
   SortieRequest sorties;
   double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
-  bool force = false, json = false, no_report = false, no_spiral = false;
+  bool force = false, json = false, no_report = false, no_spiral = false, gpkg = false;
   std::string report_svg;
 };
 
@@ -69,6 +72,24 @@ std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
   return pts;
 }
 
+/// The facts a pilot reads first: time in min:s, energy in Wh, battery share and packs needed,
+/// area in ha, farthest distance from home.
+report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr) {
+  const auto& f = r.plan.flown;
+  report::Facts facts = {{"flight time", report::formatMinSec(f.time) + " min:s (" + fixedText(f.time, 0) + " s)"},
+                         {"energy (Wh)", fixedText(f.energy / 3600.0, 1) + " Wh (" + fixedText(f.energy, 0) + " J)"},
+                         {"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"}};
+  if (r.battery && r.battery->usable_energy_j > 0.0) {
+    const double share = 100.0 * r.battery->mission_energy_j / r.battery->usable_energy_j;
+    facts.push_back({"battery", fixedText(share, 0) + " % of one battery's usable energy; " +
+                                    std::to_string(static_cast<int>(std::ceil(share / 100.0 - 1e-9))) + " battery(ies) needed"});
+  }
+  double farthest = 0.0;
+  for (const auto& leg : f.path.legs) farthest = std::max({farthest, (leg.start - pr.home).norm(), (leg.end - pr.home).norm()});
+  facts.push_back({"farthest from home", fixedText(farthest, 0) + " m"});
+  return facts;
+}
+
 /// The plan report's data from the planner's result: map legs, Table III-style breakdown of the
 /// coverage and transit legs (each leg re-profiled with energy::profileFromPath and the same
 /// model), the plan and baselines as scored candidates, and the Hwang battery trace when known.
@@ -86,6 +107,8 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
              {"lower bound", num(r.lower_bound_j, 0) + " J (plan / bound " +
                                  num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ")"},
              {"spacing", num(pr.spacing, 2) + " m, altitude " + num(pr.altitude, 1) + " m"}};
+  const auto pilot = pilotFacts(r, pr);
+  d.facts.insert(d.facts.begin() + 1, pilot.begin(), pilot.end());
   d.areas = {pr.area};
   d.no_fly = pr.no_fly;
   d.home = pr.home;
@@ -257,8 +280,10 @@ nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, 
             {"ground_station_default", candidateJson(r.ground_station_default, e)},
             {"best_spiral", r.best_spiral ? candidateJson(*r.best_spiral, e) : nlohmann::json(nullptr)}}},
           {"battery", batteryJson(r.battery)},
-          {"files", {(dir / "mission.plan").string(), (dir / "mission.waypoints").string(), (dir / "path.geojson").string(),
-                     (dir / "legs.csv").string()}},
+          {"files", o.gpkg ? nlohmann::json{(dir / "mission.plan").string(), (dir / "mission.waypoints").string(),
+                                            (dir / "path.geojson").string(), (dir / "legs.csv").string(), (dir / "plan.gpkg").string()}
+                           : nlohmann::json{(dir / "mission.plan").string(), (dir / "mission.waypoints").string(),
+                                            (dir / "path.geojson").string(), (dir / "legs.csv").string()}},
           {"notes", notes}};
 }
 
@@ -290,10 +315,10 @@ void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin
   for (const auto& [name, c] : {std::pair<const char*, const pl::PlanCandidate*>{"shortest path", &r.shortest_path},
                                 {"ground-station default", &r.ground_station_default}})
     std::cout << name << ": " << c->flown.energy / 1000.0 << " kJ (plan saves "
-              << 100.0 * (c->flown.energy - e) / c->flown.energy << " %)\n";
+              << 100.0 * (c->flown.energy - e) / c->flown.energy << " % of this baseline's energy)\n";
   if (r.best_spiral)
     std::cout << "best spiral: " << r.best_spiral->flown.energy / 1000.0 << " kJ (plan saves "
-              << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " %)\n";
+              << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " % of this baseline's energy)\n";
   if (r.battery)
     std::cout << "battery: mission " << r.battery->mission_energy_j / 1000.0 << " kJ of "
               << r.battery->usable_energy_j / 1000.0 << " kJ usable (margin " << r.battery->margin_pct << " %, "
@@ -371,6 +396,8 @@ PlanSetup setUp(const PlanOpts& o) {
   PlanSetup s;
   geo::ReadOptions ro;
   ro.no_fly_files = o.no_fly;
+  ro.layer = o.layer;
+  ro.where = o.where;
   progress("plan: reading " + o.area);
   s.area = geo::readSurveyArea(o.area, ro);
   if (!s.area.frame) throw std::invalid_argument(o.area + ": the area has no geodetic frame (metric WKT without an origin); missions need lat/lon");
@@ -450,6 +477,7 @@ void runPlan(const PlanOpts& o) {
   const auto& frame = *s.area.frame;
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
   if (!o.no_report) files.push_back("report.html");
+  if (o.gpkg) files.push_back("plan.gpkg");
   // An input in --out under an output's name is refused even with --force (checkWritable).
   std::vector<std::string> inputs = {o.area, o.vehicle};
   inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
@@ -491,9 +519,12 @@ void runPlan(const PlanOpts& o) {
   go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
   go.leg_properties["time_s"] = r.plan.flown.leg_time;
   const fs::path dir(o.out);
-  writeTextFileAtomic((dir / "mission.plan").string(), ms::toQgcPlan(pm.mission));
+  const std::string plan_text = ms::toQgcPlan(pm.mission);
+  writeTextFileAtomic((dir / "mission.plan").string(), plan_text);
   writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
-  writeTextFileAtomic((dir / "path.geojson").string(), geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go));
+  const std::string path_geojson = geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go);
+  writeTextFileAtomic((dir / "path.geojson").string(), path_geojson);
+  if (o.gpkg) geo::writeGeoPackage((dir / "plan.gpkg").string(), {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
   nlohmann::json sorties;
   if (!o.sorties.sorties.empty()) {
@@ -505,8 +536,10 @@ void runPlan(const PlanOpts& o) {
   }
   if (!o.no_report || !o.report_svg.empty()) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
+    data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), frame);  // numbered as the ground station shows them
+    const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
     data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
-                                                   fixedText(s.photos->trigger_distance_m, 2) + " m)"
+                                                   fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
                                              : std::string("no camera commands")});
     writeReport(report::planReport(data), o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
   }
@@ -552,6 +585,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("AREA", o->area, "survey area (GeoJSON, KML, WKT, QGC .waypoints)")->required()->check(CLI::ExistingFile);
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--no-fly", o->no_fly, "no-fly zone file(s)")->check(CLI::ExistingFile);
+  addAreaSelectOptions(cmd, o->layer, o->where);
   cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
   cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
   cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));
@@ -587,6 +621,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_flag("--no-spiral", o->no_spiral,
                 "straight parallel lines only: spirals do not compete (consistent image headings for photogrammetry)");
   cmd->add_flag("--no-report", o->no_report, "do not write DIR/report.html (the HTML plan report, on by default)");
+  cmd->add_flag("--gpkg", o->gpkg, "also write DIR/plan.gpkg: the legs and the area (holes, home) as GeoPackage layers for QGIS");
   cmd->add_option("--report-svg", o->report_svg, "also write the report's figures as SVG files into this folder");
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {

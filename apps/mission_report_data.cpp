@@ -22,6 +22,20 @@ report::MissionPhaseTotals phaseTotals(const std::string& name, const ms::Totals
 
 }  // namespace
 
+std::vector<report::MissionMark> planMapItems(const ms::Mission& m, const geometry::LocalFrame& frame) {
+  std::vector<report::MissionMark> out;
+  for (const auto& it : m.items) {
+    report::MissionMark k;
+    k.seq = it.seq;
+    k.command = ms::commandName(it.command);
+    const bool positioned = std::isfinite(it.lat_deg) && std::isfinite(it.lon_deg) && (it.lat_deg != 0.0 || it.lon_deg != 0.0);
+    // Only the waypoints get a numbered dot; take-off and return are named at home by the report.
+    if (positioned && it.command == static_cast<int>(ms::Command::NavWaypoint)) k.position = frame.toLocal(it.lat_deg, it.lon_deg);
+    out.push_back(std::move(k));
+  }
+  return out;
+}
+
 report::MissionReportData missionReportData(const ms::MissionPrediction& p, double reserve_pct) {
   report::MissionReportData d;
   for (const auto& s : p.flight.samples) {

@@ -11,6 +11,8 @@
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/turns.hpp"
+#include "wattswath/geometry/frame.hpp"
+#include "wattswath/mission/mission.hpp"
 #include "wattswath/mission/predict.hpp"
 #include "wattswath/report/reports.hpp"
 
@@ -39,6 +41,9 @@ std::string fittedValuesText(const std::vector<calibration::FittedCoefficient>& 
 
 /// The diagnosis table rows (best first) from a diagnosis.
 std::vector<report::DiagnosisRow> diagnosisRows(const calibration::Diagnosis& d);
+
+/// The items of a mission (numbers as in the mission file) for the plan map, positioned in `frame` [m].
+std::vector<report::MissionMark> planMapItems(const mission::Mission& m, const geometry::LocalFrame& frame);
 
 /// The mission report's trajectory, items, phase totals, battery and verdict from a prediction
 /// (facts are left to the command); `reserve_pct` [%] is the reserve line.

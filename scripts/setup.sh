@@ -10,6 +10,7 @@ packages=(
   libboost-program-options-dev
   libompl-dev libceres-dev libmuparser-dev libgeographiclib-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libpng-dev
+  libgdal-dev gdal-bin
 )
 # Tests only: headless Chromium renders the HTML reports; clang builds the fuzz targets.
 if [[ "${WATTSWATH_SETUP_TESTS:-1}" == "1" ]]; then

@@ -101,6 +101,10 @@ void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
   EXPECT_NE(html.find("Energy by part and effect"), std::string::npos);
   EXPECT_NE(html.find("Candidate plans"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
+  // What a pilot reads (issue 21): time in min:s, energy in Wh, the area in ha, savings with their base.
+  for (const char* k : {" min:s (", " Wh (", " ha (", "energy [Wh]", "energy above the chosen plan [% of the chosen plan]"})
+    EXPECT_NE(html.find(k), std::string::npos) << k;
+  EXPECT_EQ(html.find("vs chosen"), std::string::npos);
 }
 
 }  // namespace
@@ -129,6 +133,11 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   EXPECT_TRUE(j.at("mission").at("camera").is_null());
   EXPECT_DOUBLE_EQ(j.at("mission").at("no_fly_margin_m").get<double>(), 2.0);
   EXPECT_EQ(j.at("mission").at("waypoint_legs_within_margin").get<int>(), 0);
+  // The caption matches the drawing: the no-fly zone is a hole (white, grey outline).
+  const std::string html = slurp(out + "/report.html");
+  EXPECT_NE(html.find("holes in the area (white, grey outline) are not flown over"), std::string::npos);
+  EXPECT_NE(html.find("farthest from home"), std::string::npos);
+  EXPECT_NE(html.find(", take-off (1), return and landing ("), std::string::npos);  // numbered as in mission.plan
 }
 
 TEST(CliPlan, TextOutputSaysWhenNoCameraCommandsAreWritten) {
@@ -145,8 +154,10 @@ TEST(CliPlan, CameraTriggersAlongEachSweepAtTheFrontalFootprintDistance) {
   const auto out = outDir("sensor");
   const auto j = planJson(sourcePath("data/areas/espiral_rectangle.geojson"), out,
                           "--altitude 50 --sensor-mm 23.2,15.4 --focal-mm 16 --image-px 5456,3632 --overlap 0.7 "
-                          "--frontal-overlap 0.8 --no-spiral --no-report");
+                          "--frontal-overlap 0.8 --no-spiral");
   const auto& cam = j.at("mission").at("camera");
+  // The report gives the photo count with the trigger distance and the GSD (50 x 23.2 / (5456 x 16) m = 1.33 cm/px).
+  EXPECT_NE(slurp(out + "/report.html").find(" m, GSD 1.33 cm/px)"), std::string::npos);
   ASSERT_TRUE(cam.is_object());
   EXPECT_NEAR(cam.at("trigger_distance_m").get<double>(), 0.2 * 48.262463343108504, 1e-9);
   EXPECT_NEAR(cam.at("gsd_m").get<double>(), 50.0 * 23.2 / (5456.0 * 16.0), 1e-12);

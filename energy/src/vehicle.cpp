@@ -150,7 +150,15 @@ Vehicle parseVehicle(const std::string& json_text, const std::string& source) {
   // A field given twice would silently keep the last value: reject it, naming the field.
   std::vector<std::set<std::string>> keys_seen;
   std::string duplicate;
-  const json::parser_callback_t check_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+  // Nesting is bounded while parsing: a value nested ~70k deep would otherwise overflow the stack
+  // later, in the recursive dump() that quotes it in a message.
+  constexpr int kMaxDepth = 64;
+  const json::parser_callback_t check_duplicates = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth > kMaxDepth) {
+      throw std::invalid_argument(prefix(source) + "JSON nested more than " + std::to_string(kMaxDepth) +
+                                  " levels deep, expected a flat vehicle object (nesting of at most " +
+                                  std::to_string(kMaxDepth) + ")");
+    }
     if (event == json::parse_event_t::object_start) {
       keys_seen.emplace_back();
     } else if (event == json::parse_event_t::object_end && !keys_seen.empty()) {

@@ -1,5 +1,7 @@
-// libFuzzer target: the survey-area readers (GeoJSON, KML, WKT, QGC WPL 110) on arbitrary bytes,
-// each format forced in turn and then decided by the content. Any std::exception is an accepted
+// libFuzzer target: our own survey-area readers (GeoJSON, KML, WKT, QGC WPL 110, QGC .plan,
+// Mission Planner .poly) on arbitrary bytes, each format forced in turn and then decided by the
+// content. GDAL's drivers (AreaFormat::Gdal) are not forced here: GDAL is fuzzed by OSS-Fuzz, and
+// text in memory reaches it only as a GeoJSON whose "crs" is not WGS84. Any std::exception is an accepted
 // answer; a crash, a sanitizer report or an accepted area with a non-finite or non-positive area
 // is a finding.
 #include <cmath>
@@ -15,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   namespace geo = wattswath::geometry;
   const std::string text(reinterpret_cast<const char*>(data), size);
   for (geo::AreaFormat f : {geo::AreaFormat::GeoJson, geo::AreaFormat::Kml, geo::AreaFormat::Wkt,
-                            geo::AreaFormat::QgcWpl, geo::AreaFormat::Auto}) {
+                            geo::AreaFormat::QgcWpl, geo::AreaFormat::QgcPlan, geo::AreaFormat::MissionPlannerPoly,
+                            geo::AreaFormat::Auto}) {
     geo::ReadOptions o;
     o.format = f;
     try {

@@ -14,26 +14,18 @@
 
 namespace wattswath::geometry {
 namespace detail {
-namespace {
-
-std::string lower(std::string s) {
+std::string lowerAscii(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
 
-std::string trim(const std::string& s) {
+std::string trimSpace(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r\n");
   if (b == std::string::npos) return "";
   const auto e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
 }
 
-[[noreturn]] void fail(const std::string& source, const std::string& what) {
-  throw SurveyAreaError(source + ": " + what);
-}
-
-/// Closed formats (GeoJSON, KML, WKT) repeat the first vertex at the end: strip it, or note that
-/// the ring was not closed.
 void closeRing(LabeledRing& r, std::vector<std::string>& notes, const std::string& source) {
   if (r.pts.size() >= 2 && r.pts.front() == r.pts.back()) {
     r.pts.pop_back();
@@ -43,17 +35,31 @@ void closeRing(LabeledRing& r, std::vector<std::string>& notes, const std::strin
   }
 }
 
-/// True when a role / name marks a no-fly zone.
 bool isNoFlyName(const std::string& s) {
-  const std::string l = lower(trim(s));
+  const std::string l = lowerAscii(trimSpace(s));
   for (const char* p : {"no_fly", "no-fly", "nofly", "no fly", "obstacle", "exclusion"}) {
     if (l.rfind(p, 0) == 0) return true;
   }
   return false;
 }
 
+namespace {
+
+[[noreturn]] void fail(const std::string& source, const std::string& what) {
+  throw SurveyAreaError(source + ": " + what);
+}
+
+
 // ---------------------------------------------------------------- GeoJSON
 using nlohmann::json;
+
+/// A value as quoted in messages: scalars as written, arrays and objects by size only, so that a
+/// value nested deeply is never dumped recursively.
+std::string brief(const json& v) {
+  if (v.is_array()) return "an array of " + std::to_string(v.size()) + " element(s)";
+  if (v.is_object()) return "an object of " + std::to_string(v.size()) + " member(s)";
+  return v.dump();
+}
 
 LabeledRing geoJsonRing(const json& coords, const std::string& name, const std::string& source,
                         std::vector<std::string>& notes) {
@@ -64,7 +70,7 @@ LabeledRing geoJsonRing(const json& coords, const std::string& name, const std::
     const json& p = coords[i];
     const std::string label = "vertex " + std::to_string(i);
     if (!p.is_array() || p.size() < 2 || !p[0].is_number() || !p[1].is_number()) {
-      fail(source, name + ", " + label + ": expected a position [lon, lat] of numbers, got " + p.dump());
+      fail(source, name + ", " + label + ": expected a position [lon, lat] of numbers, got " + brief(p));
     }
     r.pts.emplace_back(p[0].get<double>(), p[1].get<double>());
     r.labels.push_back(label);
@@ -101,7 +107,7 @@ void geoJsonGeometry(const json& g, const std::string& name, const std::string& 
   } else if (type == "MultiPolygon") {
     if (!c.is_array()) fail(source, name + ": MultiPolygon coordinates must be an array of polygons");
     for (size_t i = 0; i < c.size(); ++i) dest.push_back(geoJsonPolygon(c[i], name + ", polygon " + std::to_string(i), source, out.notes));
-  } else if (type == "Point" && lower(role) == "home") {
+  } else if (type == "Point" && lowerAscii(role) == "home") {
     if (!c.is_array() || c.size() < 2 || !c[0].is_number() || !c[1].is_number()) fail(source, name + ": home Point needs [lon, lat]");
     out.home = GeoPoint{c[1].get<double>(), c[0].get<double>(), c.size() > 2 && c[2].is_number() ? c[2].get<double>() : 0.0};
   } else {
@@ -115,6 +121,7 @@ void geoJsonFeature(const json& f, const std::string& name, const std::string& s
   if (f.contains("properties") && f["properties"].is_object()) {
     const json& p = f["properties"];
     if (p.contains("role") && p["role"].is_string()) role = p["role"].get<std::string>();
+    else if (p.contains("name") && p["name"].is_string()) role = p["name"].get<std::string>();  // as KML and GDAL formats
   }
   if (!f.contains("geometry") || f["geometry"].is_null()) fail(source, name + ": Feature without geometry");
   geoJsonGeometry(f["geometry"], name, role, source, out);
@@ -246,15 +253,46 @@ LabeledPolygon wktPolygon(WktLexer& lx, const std::string& name, int dims, std::
 
 }  // namespace
 
-RawArea parseGeoJson(const std::string& text, const std::string& source) {
-  json j;
+json parseJsonBounded(const std::string& text, const std::string& source) {
+  // Nesting is bounded while parsing (GeoJSON needs 8 levels, a GeometryCollection 2 more each):
+  // deeper input would overflow the stack in the recursive readers or in dump().
+  const json::parser_callback_t bound = [&](int depth, json::parse_event_t, json&) {
+    if (depth > kMaxJsonDepth) {
+      fail(source, "JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep (the limit of an area file)");
+    }
+    return true;
+  };
   try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
+    return json::parse(text, bound);
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
     fail(source, std::string("not valid JSON: ") + e.what());
   }
+}
+
+namespace {
+/// True when a GeoJSON "crs" member names something other than WGS84 lon/lat.
+bool hasOtherCrs(const json& j) {
+  if (!j.contains("crs") || !j["crs"].is_object()) return false;
+  const json& c = j["crs"];
+  const json* name = c.contains("properties") && c["properties"].is_object() && c["properties"].contains("name")
+                         ? &c["properties"]["name"] : nullptr;
+  if (!name || !name->is_string()) return true;  // a linked or odd CRS: GDAL decides
+  const std::string n = lowerAscii(name->get<std::string>());
+  for (const char* wgs : {"urn:ogc:def:crs:ogc:1.3:crs84", "urn:ogc:def:crs:epsg::4326", "epsg:4326", "ogc:crs84"}) {
+    if (n == wgs) return false;
+  }
+  return true;
+}
+}  // namespace
+
+RawArea parseGeoJson(const std::string& text, const std::string& source) {
+  const json j = parseJsonBounded(text, source);
+  if (j.is_object() && j.contains("fileType") && j["fileType"] == "Plan") return parseQgcPlanJson(j, source);
+  if (j.is_object() && hasOtherCrs(j)) return parseWithGdal(text, source, GdalSelection{});
   RawArea out;
-  if (!j.is_object() || !j.contains("type") || !j["type"].is_string()) fail(source, "GeoJSON object without a \"type\"");
+  if (!j.is_object() || !j.contains("type") || !j["type"].is_string()) {
+    fail(source, "GeoJSON object without a \"type\" (expected a FeatureCollection, Feature or geometry; a QGC plan has \"fileType\": \"Plan\")");
+  }
   const std::string type = j["type"].get<std::string>();
   if (type == "FeatureCollection") {
     const json& fs = j.value("features", json::array());
@@ -282,7 +320,10 @@ RawArea parseKml(const std::string& text, const std::string& source) {
   while (true) {
     const size_t lt = text.find('<', cur.pos);
     if (lt == std::string::npos) break;
-    const std::string chars = text.substr(textStart, lt - textStart);
+    // The element's text is copied only at a closing tag: copying it at every '<' was quadratic in
+    // the number of CDATA sections in one element.
+    const size_t charsBegin = textStart;
+    auto chars = [&] { return text.substr(charsBegin, lt - charsBegin); };
     if (text.compare(lt, 4, "<!--") == 0) {
       const size_t e = text.find("-->", lt);
       if (e == std::string::npos) fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": unterminated comment");
@@ -305,12 +346,12 @@ RawArea parseKml(const std::string& text, const std::string& source) {
     if (closing) tag.erase(0, 1);
     const bool selfClosing = !closing && !tag.empty() && tag.back() == '/';
     if (selfClosing) tag.pop_back();
-    if (trim(tag).empty()) {
+    if (trimSpace(tag).empty()) {
       fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": tag <" + text.substr(lt + 1, gt - lt - 1) +
                        "> has no element name");
     }
     const size_t sp = tag.find_first_of(" \t\r\n");
-    const std::string name = localName(trim(tag.substr(0, sp)));
+    const std::string name = localName(trimSpace(tag.substr(0, sp)));
     if (selfClosing) continue;
     if (!closing) {
       stack.push_back(name);
@@ -332,17 +373,17 @@ RawArea parseKml(const std::string& text, const std::string& source) {
     }
     stack.pop_back();
     if (name == "name" && !stack.empty() && stack.back() == "Placemark") {
-      std::string n = chars;
+      std::string n = chars();
       const auto c0 = n.find("<![CDATA[");
       if (c0 != std::string::npos) n = n.substr(c0 + 9, n.find("]]>") - c0 - 9);
-      placemarkName = trim(n);
+      placemarkName = trimSpace(n);
     } else if (name == "coordinates" && inPolygon) {
       const std::string where = (placemark >= 0 ? "placemark " + std::to_string(placemark) : std::string("document")) +
                                 ", polygon " + std::to_string(polygonCount);
       if (inside("outerBoundaryIs")) {
-        polygon.outer = kmlCoordinates(chars, where + ", outer boundary", source, cur.lineAt(lt), out.notes);
+        polygon.outer = kmlCoordinates(chars(), where + ", outer boundary", source, cur.lineAt(lt), out.notes);
       } else if (inside("innerBoundaryIs")) {
-        polygon.holes.push_back(kmlCoordinates(chars, where + ", hole " + std::to_string(polygon.holes.size()), source,
+        polygon.holes.push_back(kmlCoordinates(chars(), where + ", hole " + std::to_string(polygon.holes.size()), source,
                                                cur.lineAt(lt), out.notes));
       }
     } else if (name == "Polygon") {
@@ -372,7 +413,7 @@ RawArea parseWkt(const std::string& text, const std::string& source, bool geodet
   WktLexer lx{s, source};
   int geometry = 0;
   while (!lx.atEnd()) {
-    std::string w = lower(lx.word());
+    std::string w = lowerAscii(lx.word());
     if (w == "srid") {  // EWKT prefix SRID=4326;
       lx.expect('=');
       lx.number();
@@ -382,7 +423,7 @@ RawArea parseWkt(const std::string& text, const std::string& source, bool geodet
     if (w != "polygon" && w != "multipolygon") lx.error("geometry type " + w + " is not an area (expected POLYGON or MULTIPOLYGON)");
     int dims = 2;
     size_t save = lx.pos;
-    const std::string mod = lower(lx.word());
+    const std::string mod = lowerAscii(lx.word());
     if (mod == "z" || mod == "m") dims = 3;
     else if (mod == "zm") dims = 4;
     else if (mod == "empty") lx.error(w + " EMPTY has no area");
@@ -401,64 +442,6 @@ RawArea parseWkt(const std::string& text, const std::string& source, bool geodet
       lx.expect(')');
     }
   }
-  return out;
-}
-
-RawArea parseQgcWpl(const std::string& text, const std::string& source) {
-  RawArea out;
-  std::istringstream in(text);
-  std::string line;
-  int lineNo = 0, row = 0;
-  LabeledPolygon poly;
-  poly.outer.name = "polygon";
-  poly.outer.open = true;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (lineNo == 1) {
-      if (trim(line).rfind("QGC WPL", 0) != 0) fail(source, "line 1: expected the header \"QGC WPL 110\", got \"" + line + "\"");
-      const std::string version = trim(trim(line).substr(7));
-      if (version != "110") {
-        fail(source, "line 1: QGC WPL version \"" + version + "\" is not supported (expected the header \"QGC WPL 110\")");
-      }
-      continue;
-    }
-    if (trim(line).empty()) continue;
-    std::istringstream ls(line);
-    std::vector<std::string> cols;
-    std::string c;
-    while (ls >> c) cols.push_back(c);
-    const std::string where = "line " + std::to_string(lineNo) + " (row " + std::to_string(row) + ")";
-    if (cols.size() < 12) fail(source, where + ": expected 12 tab-separated columns, got " + std::to_string(cols.size()));
-    double v[12];
-    for (int i = 0; i < 12; ++i) {
-      char* end = nullptr;
-      v[i] = std::strtod(cols[i].c_str(), &end);
-      if (end != cols[i].c_str() + cols[i].size()) {
-        fail(source, where + ", column " + std::to_string(i + 1) + ": expected a number, got \"" + cols[i] + "\"");
-      }
-    }
-    const double lat = v[8], lon = v[9], alt = v[10];
-    // MAV_CMD is a 16-bit unsigned integer: anything else (2e35, -1, 16.5, nan) is not a command.
-    if (!(v[3] >= 0.0 && v[3] <= 65535.0 && v[3] == std::floor(v[3]))) {
-      fail(source, where + ", column 4 (command): expected a MAV_CMD number, an integer in [0, 65535], got \"" +
-                       cols[3] + "\"");
-    }
-    const int command = static_cast<int>(v[3]);
-    if (row == 0) {
-      if (lat == 0.0 && lon == 0.0) out.notes.push_back(source + ": " + where + ": home row has no position (0, 0); no home point");
-      else out.home = GeoPoint{lat, lon, alt};
-    } else if (command != 16) {
-      out.notes.push_back(source + ": " + where + ": skipped MAV_CMD " + std::to_string(command) +
-                          " (not a NAV_WAYPOINT, so not a vertex)");
-    } else {
-      poly.outer.pts.emplace_back(lon, lat);
-      poly.outer.labels.push_back("vertex " + std::to_string(poly.outer.pts.size() - 1) + " (row " + std::to_string(row) + ", line " + std::to_string(lineNo) + ")");
-    }
-    ++row;
-  }
-  if (lineNo == 0) fail(source, "empty file (expected the header \"QGC WPL 110\")");
-  out.polygons.push_back(std::move(poly));
   return out;
 }
 

@@ -2,6 +2,7 @@
 // Internal to geometry/src: raw polygons as parsed (before projection), shared by the format
 // parsers (area_formats.cpp), the read pipeline (area_readers.cpp; both without CGAL) and the
 // validation (area_validate.cpp, CGAL).
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,10 +37,41 @@ struct RawArea {
   std::vector<std::string> notes;        ///< format-level repair notes
 };
 
+/// ASCII lower case.
+std::string lowerAscii(std::string s);
+/// `s` without leading and trailing spaces, tabs and line ends.
+std::string trimSpace(const std::string& s);
+/// Closed formats repeat the first vertex at the end: strips it, or notes that the ring was not closed.
+void closeRing(LabeledRing& r, std::vector<std::string>& notes, const std::string& source);
+/// True when a role or name marks a no-fly zone (no-fly, no_fly, nofly, no fly, obstacle, exclusion...).
+bool isNoFlyName(const std::string& s);
+
+/// JSON nesting beyond which an area file is refused.
+inline constexpr int kMaxJsonDepth = 64;
+/// Parses JSON with nesting bounded by kMaxJsonDepth; throws SurveyAreaError naming `source`.
+nlohmann::json parseJsonBounded(const std::string& text, const std::string& source);
+/// A QGC plan already parsed (see parseQgcPlan).
+RawArea parseQgcPlanJson(const nlohmann::json& j, const std::string& source);
+
+/// GeoJSON text; a QGC plan ("fileType": "Plan") is read as one, a "crs" other than WGS84 through GDAL.
 RawArea parseGeoJson(const std::string& text, const std::string& source);
 RawArea parseKml(const std::string& text, const std::string& source);
 RawArea parseWkt(const std::string& text, const std::string& source, bool geodetic);
 RawArea parseQgcWpl(const std::string& text, const std::string& source);
+/// QGroundControl `.plan` (JSON): survey polygons, geofence inclusions and exclusions, planned home.
+RawArea parseQgcPlan(const std::string& text, const std::string& source);
+/// Mission Planner `.poly`: "lat lon" per line, '#' comments.
+RawArea parseMissionPlannerPoly(const std::string& text, const std::string& source);
+
+/// Options of the GDAL reader.
+struct GdalSelection {
+  std::string layer;  ///< only this layer (empty: all)
+  std::string where;  ///< OGR SQL attribute filter (empty: none)
+};
+/// Any vector dataset GDAL opens at `path` (a file, or a /vsimem/ name), reprojected to WGS84 lon/lat.
+RawArea readWithGdal(const std::string& path, const std::string& source, const GdalSelection& sel);
+/// Same on bytes in memory; `source`'s extension tells GDAL's drivers the format.
+RawArea parseWithGdal(const std::string& bytes, const std::string& source, const GdalSelection& sel);
 
 /// Validates and repairs one labelled polygon in ENU metres (CGAL); returns repair notes.
 std::vector<std::string> validateLabeled(LabeledPolygon& poly, const std::string& source, const RepairSettings& s);

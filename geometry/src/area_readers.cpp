@@ -16,9 +16,17 @@ namespace wattswath::geometry {
 namespace {
 using namespace detail;
 
+/// Reads a text-format area file whole, refusing files over kMaxAreaFileBytes before reading.
 std::string readText(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) throw SurveyAreaError(path + ": cannot open the file");
+  const auto size = static_cast<long long>(f.tellg());
+  if (size > kMaxAreaFileBytes) {
+    throw SurveyAreaError(path + ": the file has " + std::to_string(size) + " bytes; area files of at most " +
+                          std::to_string(kMaxAreaFileBytes) + " bytes (64 MiB) are read (simplify the polygon, e.g. "
+                          "ogr2ogr -simplify 0.5)");
+  }
+  f.seekg(0);
   std::ostringstream s;
   s << f.rdbuf();
   return s.str();
@@ -28,21 +36,19 @@ std::string extensionOf(const std::string& path) {
   const auto slash = path.find_last_of('/');
   const auto dot = path.find_last_of('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string e = path.substr(dot + 1);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
+  return lowerAscii(path.substr(dot + 1));
 }
 
 AreaFormat sniff(const std::string& text) {
   size_t i = 0;
   while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
   if (i >= text.size()) return AreaFormat::Auto;
-  if (text[i] == '{') return AreaFormat::GeoJson;
-  if (text[i] == '<') return AreaFormat::Kml;
+  if (text[i] == '{') return AreaFormat::GeoJson;  // a QGC plan too: parseGeoJson tells them apart
+  if (text[i] == '<') return AreaFormat::Kml;  // GML and GPX are told by their extension (GDAL)
   if (text.compare(i, 7, "QGC WPL") == 0) return AreaFormat::QgcWpl;
-  std::string head;
-  for (size_t j = i; j < text.size() && j < i + 16; ++j) head.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(text[j]))));
-  if (head.rfind("POLYGON", 0) == 0 || head.rfind("MULTIPOLYGON", 0) == 0 || head.rfind("SRID=", 0) == 0) return AreaFormat::Wkt;
+  if (text.compare(i, 24, "#saved by Mission Planner") == 0) return AreaFormat::MissionPlannerPoly;
+  const std::string head = lowerAscii(text.substr(i, 16));
+  if (head.rfind("polygon", 0) == 0 || head.rfind("multipolygon", 0) == 0 || head.rfind("srid=", 0) == 0) return AreaFormat::Wkt;
   return AreaFormat::Auto;
 }
 
@@ -52,30 +58,48 @@ const char* formatName(AreaFormat f) {
     case AreaFormat::Kml: return "KML";
     case AreaFormat::Wkt: return "WKT";
     case AreaFormat::QgcWpl: return "QGC WPL";
+    case AreaFormat::QgcPlan: return "QGC plan";
+    case AreaFormat::MissionPlannerPoly: return "Mission Planner poly";
+    case AreaFormat::Gdal: return "a GDAL format";
     case AreaFormat::Auto: return "unknown";
   }
   return "unknown";
 }
 
+/// The format an extension names; Gdal for every extension our text readers do not own.
+AreaFormat formatOfExtension(const std::string& ext) {
+  if (ext == "geojson" || ext == "json") return AreaFormat::GeoJson;
+  if (ext == "kml") return AreaFormat::Kml;
+  if (ext == "wkt") return AreaFormat::Wkt;
+  if (ext == "waypoints") return AreaFormat::QgcWpl;
+  if (ext == "plan") return AreaFormat::QgcPlan;
+  if (ext == "poly") return AreaFormat::MissionPlannerPoly;
+  if (ext.empty() || ext == "txt" || ext == "area") return AreaFormat::Auto;
+  return AreaFormat::Gdal;
+}
+
+/// Decides the format of text already read (parseSurveyArea, and files our readers own).
 AreaFormat decideFormat(const std::string& source, const std::string& text, AreaFormat requested) {
   if (requested != AreaFormat::Auto) return requested;
-  const std::string ext = extensionOf(source);
-  AreaFormat byExt = AreaFormat::Auto;
-  if (ext == "geojson" || ext == "json") byExt = AreaFormat::GeoJson;
-  else if (ext == "kml") byExt = AreaFormat::Kml;
-  else if (ext == "wkt") byExt = AreaFormat::Wkt;
-  else if (ext == "waypoints") byExt = AreaFormat::QgcWpl;
+  AreaFormat byExt = formatOfExtension(extensionOf(source));
+  if (byExt == AreaFormat::Gdal) return byExt;
   const AreaFormat byContent = sniff(text);
-  if (byExt != AreaFormat::Auto && byContent != AreaFormat::Auto && byExt != byContent) {
+  // A .plan and a .json are both JSON; the JSON reader tells GeoJSON and QGC plans apart.
+  const bool jsonAlike = byExt == AreaFormat::QgcPlan && byContent == AreaFormat::GeoJson;
+  if (byExt != AreaFormat::Auto && byContent != AreaFormat::Auto && byExt != byContent && !jsonAlike) {
     throw SurveyAreaError(source + ": the extension says " + formatName(byExt) + " but the content looks like " +
                           formatName(byContent));
   }
   const AreaFormat f = byExt != AreaFormat::Auto ? byExt : byContent;
   if (f == AreaFormat::Auto) {
-    throw SurveyAreaError(source + ": unknown survey area format (expected GeoJSON, KML, WKT or QGC WPL 110)");
+    throw SurveyAreaError(source + ": unknown survey area format (expected GeoJSON, KML, WKT, QGC WPL 110, a QGC .plan, "
+                          "a Mission Planner .poly, or a GIS file GDAL reads, named by its extension: .shp, .gpkg, .kmz, "
+                          ".gml, .gpx, .csv, ...)");
   }
   return f;
 }
+
+GdalSelection selectionOf(const ReadOptions& o) { return GdalSelection{o.layer, o.where}; }
 
 RawArea parseAny(const std::string& withBom, const std::string& source, const ReadOptions& o) {
   // A UTF-8 byte order mark (Windows editors) is not content in any of the formats.
@@ -86,14 +110,44 @@ RawArea parseAny(const std::string& withBom, const std::string& source, const Re
     case AreaFormat::Kml: return parseKml(text, source);
     case AreaFormat::Wkt: return parseWkt(text, source, o.wkt_units == WktUnits::LonLatDegrees);
     case AreaFormat::QgcWpl: return parseQgcWpl(text, source);
+    case AreaFormat::QgcPlan: return parseQgcPlan(text, source);
+    case AreaFormat::MissionPlannerPoly: return parseMissionPlannerPoly(text, source);
+    case AreaFormat::Gdal: return parseWithGdal(withBom, source, selectionOf(o));
     case AreaFormat::Auto: break;
   }
   throw SurveyAreaError(source + ": unknown survey area format");
 }
 
+/// Reads a file: formats GDAL owns (Shapefile with its sidecars, GeoPackage, ...) are opened by
+/// GDAL in place; the text formats are read into memory (bounded) and parsed.
+RawArea readAny(const std::string& path, const ReadOptions& o) {
+  const bool gdal = o.format == AreaFormat::Gdal ||
+                    (o.format == AreaFormat::Auto && formatOfExtension(extensionOf(path)) == AreaFormat::Gdal);
+  if (gdal) {
+    if (!std::ifstream(path)) throw SurveyAreaError(path + ": cannot open the file");
+    return readWithGdal(path, path, selectionOf(o));
+  }
+  const std::string text = readText(path);
+  // A file whose extension and content no reader of ours claims: GDAL's drivers try it (they
+  // name the formats expected when none reads it). Text in memory (parseSurveyArea, the fuzz
+  // target) is not handed to GDAL unless AreaFormat::Gdal is asked for.
+  const bool unclaimed = o.format == AreaFormat::Auto && formatOfExtension(extensionOf(path)) == AreaFormat::Auto &&
+                         sniff(text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text) == AreaFormat::Auto;
+  return unclaimed ? readWithGdal(path, path, selectionOf(o)) : parseAny(text, path, o);
+}
+
 /// Throws naming the file, ring and vertex when a lon/lat vertex is not finite or out of range.
 void checkGeodeticRing(const LabeledRing& r, const std::string& source) {
   for (size_t i = 0; i < r.pts.size(); ++i) {
+    const Point& p = r.pts[i];
+    // Projected metres (UTM, a national grid) in a file without a CRS: say so, not "lon/lat swapped?".
+    const double big = std::max(std::abs(p.x()), std::abs(p.y()));
+    if (big > 360.0 && big < 1e8) {
+      throw SurveyAreaError(source + ": " + r.name + ", " + r.labels[i] + ": (" + std::to_string(p.x()) + ", " +
+                            std::to_string(p.y()) + ") is not lon/lat in degrees; it looks like projected metres. Give "
+                            "the file its CRS (a GeoJSON \"crs\" member as ogr2ogr writes it, a .prj beside a "
+                            "Shapefile) or reproject it to WGS84 (ogr2ogr -t_srs EPSG:4326); WKT: --wkt-units metres");
+    }
     try {
       validateGeoPoint(GeoPoint{r.pts[i].y(), r.pts[i].x(), 0.0}, source + ": " + r.name + ", " + r.labels[i]);
     } catch (const std::invalid_argument& e) {
@@ -216,8 +270,9 @@ Point SurveyArea::bboxMax() const {
   return m;
 }
 
-SurveyArea parseSurveyArea(const std::string& text, const std::string& source, const ReadOptions& options) {
-  RawArea raw = parseAny(text, source, options);
+namespace {
+/// Frame, projection, validation and the file's own no-fly zones, for a RawArea from any reader.
+SurveyArea buildArea(RawArea raw, const std::string& source, const ReadOptions& options) {
   if (raw.polygons.empty()) throw SurveyAreaError(source + ": no polygon found (expected at least one area polygon)");
   SurveyArea area;
   area.source = source;
@@ -254,14 +309,20 @@ SurveyArea parseSurveyArea(const std::string& text, const std::string& source, c
   return area;
 }
 
+}  // namespace
+
+SurveyArea parseSurveyArea(const std::string& text, const std::string& source, const ReadOptions& options) {
+  return buildArea(parseAny(text, source, options), source, options);
+}
+
 SurveyArea readSurveyArea(const std::string& path, const ReadOptions& options) {
-  SurveyArea area = parseSurveyArea(readText(path), path, options);
+  SurveyArea area = buildArea(readAny(path, options), path, options);
   for (const auto& f : options.no_fly_files) subtractNoFlyZones(area, readNoFlyZones(f, area, options));
   return area;
 }
 
 NoFlyZones readNoFlyZones(const std::string& path, const SurveyArea& area, const ReadOptions& options) {
-  RawArea raw = parseAny(readText(path), path, options);
+  RawArea raw = readAny(path, options);
   std::vector<LabeledPolygon> all = std::move(raw.polygons);
   for (auto& p : raw.no_fly) all.push_back(std::move(p));
   if (all.empty()) throw SurveyAreaError(path + ": no polygon found (expected at least one no-fly zone)");

@@ -48,6 +48,33 @@ std::string roleName(LegRole role) {
   return "sweep";
 }
 
+namespace {
+/// The vertices of one leg: its start, an arc's samples, its end (a turn in place: its vertex twice).
+json legCoordinates(const PathLeg& l, const LocalFrame& frame, double arc_step_rad) {
+  json c = json::array({position(frame, l.start)});
+  if (l.kind == PrimitiveKind::Arc && l.radius > 0.0) {
+    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(l.turn_angle) / arc_step_rad)));
+    const double a0 = std::atan2(l.start.y() - l.center.y(), l.start.x() - l.center.x());
+    for (int s = 1; s < n; ++s) {
+      const double a = a0 + l.turn_angle * s / n;
+      c.push_back(position(frame, l.center + l.radius * Point(std::cos(a), std::sin(a))));
+    }
+  }
+  c.push_back(position(frame, l.end));
+  return c;
+}
+
+void checkLegProperties(const CoveragePath& path, size_t pi, const PathGeoJsonOptions& options) {
+  for (const auto& [key, values] : options.leg_properties) {
+    if (values.size() != path.legs.size()) {
+      throw std::invalid_argument("leg property \"" + key + "\" has " + std::to_string(values.size()) +
+                                  " values but path " + std::to_string(pi) + " has " + std::to_string(path.legs.size()) +
+                                  " legs; expected one value per leg");
+    }
+  }
+}
+}  // namespace
+
 std::string coveragePathToGeoJson(const std::vector<CoveragePath>& paths, const LocalFrame& frame,
                                   const PathGeoJsonOptions& options) {
   if (!(options.arc_step_rad > 0.0) || options.arc_step_rad > kPi / 2) {
@@ -57,52 +84,24 @@ std::string coveragePathToGeoJson(const std::vector<CoveragePath>& paths, const 
   json features = json::array();
   for (size_t pi = 0; pi < paths.size(); ++pi) {
     const CoveragePath& path = paths[pi];
-    for (const auto& [key, values] : options.leg_properties) {
-      if (values.size() != path.legs.size()) {
-        throw std::invalid_argument("leg property \"" + key + "\" has " + std::to_string(values.size()) +
-                                    " values but path " + std::to_string(pi) + " has " + std::to_string(path.legs.size()) +
-                                    " legs; expected one value per leg");
-      }
-    }
-    json coords = json::array(), legIdx = json::array(), role = json::array(), kind = json::array(), alt = json::array();
-    std::map<std::string, json> extra;
-    for (const auto& kv : options.leg_properties) extra[kv.first] = json::array();
-    auto add = [&](const Point& p, size_t leg) {
-      const PathLeg& l = path.legs[leg];
-      coords.push_back(position(frame, p));
-      legIdx.push_back(leg);
-      role.push_back(roleName(l.role));
-      kind.push_back(kindName(l.kind));
-      alt.push_back(l.altitude);
-      for (const auto& [key, values] : options.leg_properties) extra[key].push_back(values[leg]);
-    };
+    checkLegProperties(path, pi, options);
     for (size_t i = 0; i < path.legs.size(); ++i) {
       const PathLeg& l = path.legs[i];
-      if (i == 0) add(l.start, 0);
-      if (l.kind == PrimitiveKind::Arc && l.radius > 0.0) {
-        const int n = std::max(1, static_cast<int>(std::ceil(std::abs(l.turn_angle) / options.arc_step_rad)));
-        const double a0 = std::atan2(l.start.y() - l.center.y(), l.start.x() - l.center.x());
-        for (int s = 1; s < n; ++s) {
-          const double a = a0 + l.turn_angle * s / n;
-          add(l.center + l.radius * Point(std::cos(a), std::sin(a)), i);
-        }
-      }
-      add(l.end, i);
+      // Scalar attributes only, names of at most 10 characters: Shapefile, GPX and GeoPackage keep them.
+      json props = {{"path", pi},
+                    {"leg", i},
+                    {"role", roleName(l.role)},
+                    {"kind", kindName(l.kind)},
+                    {"pattern", path.pattern},
+                    {"cell", path.cell},
+                    {"sweep_deg", path.sweep_angle * 180.0 / kPi},
+                    {"altitude_m", l.altitude},
+                    {"length_m", l.length()}};
+      for (const auto& [key, values] : options.leg_properties) props[key] = values[i];
+      features.push_back({{"type", "Feature"},
+                          {"properties", std::move(props)},
+                          {"geometry", {{"type", "LineString"}, {"coordinates", legCoordinates(l, frame, options.arc_step_rad)}}}});
     }
-    json props = {{"pattern", path.pattern},
-                  {"cell", path.cell},
-                  {"sweep_angle_deg", path.sweep_angle * 180.0 / kPi},
-                  {"length_m", path.length()},
-                  {"legs", path.legs.size()},
-                  {"turns", path.turnCount()},
-                  {"leg", legIdx},
-                  {"role", role},
-                  {"kind", kind},
-                  {"altitude_m", alt}};
-    for (auto& [key, arr] : extra) props[key] = std::move(arr);
-    features.push_back({{"type", "Feature"},
-                        {"properties", std::move(props)},
-                        {"geometry", {{"type", "LineString"}, {"coordinates", std::move(coords)}}}});
   }
   const GeoPoint& o = frame.origin();
   json fc = {{"type", "FeatureCollection"},

@@ -7,28 +7,20 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "area_test_util.hpp"
 #include "test_util.hpp"
 #include "wattswath/geometry/frame.hpp"
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 
 namespace geo = wattswath::geometry;
+using wattswath::test::errorOf;
 using wattswath::test::sourcePath;
 
 namespace {
 
 std::string area(const std::string& name) { return sourcePath("tests/data/areas/" + name); }
 std::string bad(const std::string& name) { return sourcePath("tests/data/bad/" + name); }
-
-/// Message of the SurveyAreaError thrown by reading `path` ("" when none is thrown).
-std::string errorOf(const std::string& path, const geo::ReadOptions& o = {}) {
-  try {
-    geo::readSurveyArea(path, o);
-  } catch (const geo::SurveyAreaError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 bool anyContains(const std::vector<std::string>& notes, const std::string& s) {
   for (const auto& n : notes)
@@ -273,7 +265,7 @@ TEST(WriteGeoJson, AreaRoundTrip) {
   EXPECT_LT((*b.home - *a.home).norm(), 1e-6);
 }
 
-TEST(WriteGeoJson, PathWithPerVertexProperties) {
+TEST(WriteGeoJson, PathOneFeaturePerLegWithScalarProperties) {
   const geo::LocalFrame f({45.0, 7.0, 0.0});
   geo::CoveragePath path;
   path.pattern = "boustrophedon";
@@ -301,19 +293,30 @@ TEST(WriteGeoJson, PathWithPerVertexProperties) {
   geo::PathGeoJsonOptions o;
   o.leg_properties["speed_mps"] = {8.0, 4.4, 0.0, 8.0};
   const auto j = nlohmann::json::parse(geo::coveragePathToGeoJson({path}, f, o));
-  const auto& feat = j["features"][0];
-  const auto& c = feat["geometry"]["coordinates"];
-  // 1 start + 1 line end + 18 arc vertices (10 deg steps over 180 deg) + 1 spin + 1 line end.
-  ASSERT_EQ(c.size(), 22u);
-  for (const char* key : {"leg", "role", "kind", "altitude_m", "speed_mps"}) EXPECT_EQ(feat["properties"][key].size(), c.size()) << key;
-  EXPECT_EQ(feat["properties"]["role"][5], "turn");
-  EXPECT_EQ(feat["properties"]["speed_mps"][5], 4.4);
-  EXPECT_EQ(feat["properties"]["legs"], 4);
-  EXPECT_EQ(feat["properties"]["turns"], 2);
+  // One feature per leg with scalar properties (GIS formats without lists keep them).
+  const auto& feats = j["features"];
+  ASSERT_EQ(feats.size(), 4u);
+  for (size_t i = 0; i < feats.size(); ++i) {
+    EXPECT_EQ(feats[i]["properties"]["leg"], i);
+    for (const auto& [key, value] : feats[i]["properties"].items()) {
+      EXPECT_TRUE(value.is_primitive()) << key;
+      EXPECT_LE(key.size(), 10u) << key;  // Shapefile's limit on field names
+    }
+  }
+  // A line: its 2 ends; the arc: 19 vertices (10 deg steps over 180 deg); a turn in place: its vertex twice.
+  EXPECT_EQ(feats[0]["geometry"]["coordinates"].size(), 2u);
+  const auto& c = feats[1]["geometry"]["coordinates"];
+  ASSERT_EQ(c.size(), 19u);
+  EXPECT_EQ(feats[2]["geometry"]["coordinates"].size(), 2u);
+  EXPECT_EQ(feats[1]["properties"]["role"], "turn");
+  EXPECT_EQ(feats[1]["properties"]["kind"], "arc");
+  EXPECT_EQ(feats[1]["properties"]["speed_mps"], 4.4);
+  EXPECT_NEAR(feats[1]["properties"]["length_m"].get<double>(), 10.0 * M_PI, 1e-9);
   // Every vertex projects back onto the path to < 1e-6 m; the arc's middle vertex is at (110, 10).
-  const geo::Point mid = f.toLocal(c[10][1].get<double>(), c[10][0].get<double>());
+  const geo::Point mid = f.toLocal(c[9][1].get<double>(), c[9][0].get<double>());
   EXPECT_LT((mid - geo::Point(110, 10)).norm(), 1e-6);
-  const geo::Point last = f.toLocal(c[21][1].get<double>(), c[21][0].get<double>());
+  const auto& c3 = feats[3]["geometry"]["coordinates"];
+  const geo::Point last = f.toLocal(c3[1][1].get<double>(), c3[1][0].get<double>());
   EXPECT_LT((last - geo::Point(0, 20)).norm(), 1e-6);
   o.leg_properties["speed_mps"].pop_back();
   EXPECT_THROW(geo::coveragePathToGeoJson({path}, f, o), std::invalid_argument);

@@ -96,30 +96,6 @@ Series thinned(const std::string& name, const std::vector<double>& x, const std:
 /// The item's number in the mission file; "" for steps the autopilot model added (their tick keeps a tooltip).
 std::string seqLabel(const MissionMark& m) { return m.seq >= 0 ? std::to_string(m.seq) : ""; }
 
-/// Waypoint dots with their numbers; items at the same place share one dot ("3, 27").
-void addWaypointMarkers(MapView& m, const std::vector<MissionMark>& items) {
-  struct Spot {
-    geometry::Point p;
-    std::string label;
-  };
-  std::vector<Spot> spots;
-  for (const auto& it : items) {
-    if (!it.position || it.seq < 0) continue;
-    auto same =
-        std::find_if(spots.begin(), spots.end(), [&](const Spot& s) { return (s.p - *it.position).norm() < 1.0; });
-    if (same == spots.end()) {
-      spots.push_back({*it.position, std::to_string(it.seq)});
-    } else {
-      same->label += ", " + std::to_string(it.seq);
-    }
-  }
-  for (const auto& s : spots) {
-    MapMarker k{s.p, s.label, MapMarker::Shape::Circle, "#222222"};
-    k.size = 3.0;
-    m.markers.push_back(k);
-  }
-}
-
 /// " Take-off and landing are vertical ..." for the phases that hardly move on the map ("" if none).
 std::string verticalPhasesNote(const MissionReportData& d) {
   std::vector<std::string> vertical;

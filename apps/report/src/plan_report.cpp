@@ -17,6 +17,17 @@ namespace {
 
 std::string J(double joules) { return formatNumber(joules, 0); }
 
+/// The home marker's label: home, the path's start, and the take-off and return items there
+/// with their numbers ("home: take-off (1), return and landing (42)").
+std::string homeLabel(const std::vector<MissionMark>& items, bool startAtHome) {
+  std::string label = startAtHome ? "home, start" : "home";
+  for (const auto& it : items) {
+    if (it.command == "NAV_TAKEOFF") label += ", take-off (" + std::to_string(it.seq) + ")";
+    if (it.command == "NAV_RETURN_TO_LAUNCH") label += ", return and landing (" + std::to_string(it.seq) + ")";
+  }
+  return label;
+}
+
 void planMap(HtmlReport& r, const PlanReportData& d) {
   MapView m;
   m.title = d.colour_by == PlanColour::Speed ? "Chosen path, coloured by cruise speed" : "Chosen path, coloured by mean power";
@@ -45,21 +56,29 @@ void planMap(HtmlReport& r, const PlanReportData& d) {
     }
   }
   const bool startAtHome = d.home && start && (*d.home - *start).norm() < 1.0;
-  if (d.home) m.markers.push_back({*d.home, startAtHome ? "home, start" : "home", MapMarker::Shape::Square, "#000000"});
+  addWaypointMarkers(m, d.items);
+  if (d.home) m.markers.push_back({*d.home, homeLabel(d.items, startAtHome), MapMarker::Shape::Square, "#000000"});
   if (start && !startAtHome) m.markers.push_back({*start, "start", MapMarker::Shape::Triangle, "#009E73"});
   if (m.areas.empty() && m.path.empty() && m.markers.empty()) {
     r.paragraph("No area or path was given: no map.");
     return;
   }
   if (m.path.empty()) m.value_label.clear();
+  std::size_t holes = 0;
+  for (const auto& a : d.areas) holes += a.holes.size();
   r.figure({"plan-map", renderSvg(m),
             "Map in local metres (east right, north up). Hover a leg for its number, speed, length, time and energy; "
-            "dashed legs are transits, red dashed areas are no-fly zones."});
-  Table t{"Legs", {"leg", "role", "speed [m/s]", "length [m]", "time [s]", "energy [kJ]"}, {}, {true, false, true, true, true, true}, true};
+            "dashed legs are transits" +
+                std::string(d.items.empty() ? "" : "; numbers are the mission items' numbers (seq) as QGroundControl and "
+                                                   "Mission Planner show them") +
+                std::string(holes > 0 ? "; holes in the area (white, grey outline) are not flown over" : "") +
+                (d.no_fly.empty() ? "" : "; red dashed areas are no-fly zones") + "."});
+  Table t{"Legs", {"leg", "role", "speed [m/s]", "length [m]", "time [s]", "energy [kJ]", "energy [Wh]"}, {},
+          {true, false, true, true, true, true, true}, true};
   for (std::size_t i = 0; i < d.legs.size(); ++i) {
     const auto& l = d.legs[i];
     t.rows.push_back({std::to_string(i + 1), l.role, formatNumber(l.speed, 2), formatNumber(l.length, 1),
-                      formatNumber(l.time, 1), kJ(l.energy)});
+                      formatNumber(l.time, 1), kJ(l.energy), formatNumber(l.energy / 3600.0, 2)});
   }
   if (!t.rows.empty()) r.table(t);
   if (!d.cells.empty()) {
@@ -209,7 +228,7 @@ void planCandidates(HtmlReport& r, const PlanReportData& d) {
             "placed at the angle of its largest boustrophedon cell). The scan scores each corner as a stop or the "
             "widest arc at its largest speed; the chosen plan is flown with arcs at chain speeds too, so it can lie "
             "below the curve."});
-  Table t{"Baselines", {"plan", "energy [kJ]", "length [m]", "time [s]", "vs chosen [%]"}, {}, {false, true, true, true, true}, false};
+  Table t{"Baselines", {"plan", "energy [kJ]", "length [m]", "time [s]", "energy above the chosen plan [% of the chosen plan]"}, {}, {false, true, true, true, true}, false};
   double chosen = std::numeric_limits<double>::quiet_NaN();
   for (const auto& k : d.candidates) {
     if (k.chosen) chosen = k.energy;

@@ -1,6 +1,8 @@
 #pragma once
-// Internal to apps/report/src: what the plan, validation, turn and speed reports share.
+// Internal to apps/report/src: what the plan, mission, validation, turn and speed reports share.
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "wattswath/report/charts.hpp"
 #include "wattswath/report/reports.hpp"
@@ -17,6 +19,30 @@ inline std::string kJ(double joules) { return formatNumber(joules / 1000.0, 3); 
 /// Adds the facts table to `r` unless there are none.
 inline void addFacts(HtmlReport& r, const Facts& f) {
   if (!f.empty()) r.facts(f);
+}
+
+/// Waypoint dots with their numbers; items at the same place share one dot ("3, 27").
+inline void addWaypointMarkers(MapView& m, const std::vector<MissionMark>& items) {
+  struct Spot {
+    geometry::Point p;
+    std::string label;
+  };
+  std::vector<Spot> spots;
+  for (const auto& it : items) {
+    if (!it.position || it.seq < 0) continue;
+    auto same =
+        std::find_if(spots.begin(), spots.end(), [&](const Spot& s) { return (s.p - *it.position).norm() < 1.0; });
+    if (same == spots.end()) {
+      spots.push_back({*it.position, std::to_string(it.seq)});
+    } else {
+      same->label += ", " + std::to_string(it.seq);
+    }
+  }
+  for (const auto& s : spots) {
+    MapMarker k{s.p, s.label, MapMarker::Shape::Circle, "#222222"};
+    k.size = 3.0;
+    m.markers.push_back(k);
+  }
 }
 
 }  // namespace wattswath::report::detail

@@ -41,6 +41,13 @@ inline wr::PlanReportData samplePlan() {
     }
   }
   d.legs.push_back({{{10, 190}, {-20, -20}}, "transit", 8.0, 6000, 30, 212});
+  // Mission items as the ground station numbers them: take-off, a waypoint per sweep end, return.
+  d.items.push_back({1, "NAV_TAKEOFF", std::nullopt});
+  for (int i = 0; i < 10; ++i) {
+    const bool east = i % 2 == 0;
+    d.items.push_back({2 + i, "NAV_WAYPOINT", geometry::Point(east ? 300 : 10, 10 + 20 * i)});
+  }
+  d.items.push_back({12, "NAV_RETURN_TO_LAUNCH", std::nullopt});
   d.colour_by = wr::PlanColour::Speed;
   d.coverage.effects = {"hover", "kinetic", "parasitic_drag"};
   d.coverage.energy = {{8560, 27286, 6848, 1601, 0, 0, 0, 0}, {506, 0, 434, 0, 0, 0, 0, 0}, {131, 1096, 128, 13, 0, 0, 0, 0}};

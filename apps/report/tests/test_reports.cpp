@@ -31,6 +31,15 @@ TEST(Reports, PlanReportHasMapBreakdownCandidatesAndBattery) {
   EXPECT_NE(html.find("<td>total by effect</td>"), std::string::npos);
   EXPECT_NE(html.find(">50995</td>"), std::string::npos);  // hover: 44295 J coverage (the paper's total) + 6700 J transit
   EXPECT_NE(html.find("home, start"), std::string::npos);   // the path starts at home: one marker
+  // Issue 21: the mission items' numbers on the map, take-off and return named at home, a caption
+  // that matches the drawing (a hole and a red dashed no-fly zone), Wh beside kJ, savings' base named.
+  EXPECT_NE(html.find("home, start, take-off (1), return and landing (12)"), std::string::npos);
+  EXPECT_NE(html.find(">11</text>"), std::string::npos);
+  EXPECT_NE(html.find("numbers are the mission items"), std::string::npos);
+  EXPECT_NE(html.find("holes in the area (white, grey outline) are not flown over; red dashed areas are no-fly zones."),
+            std::string::npos);
+  EXPECT_NE(html.find("energy [Wh]"), std::string::npos);
+  EXPECT_NE(html.find("energy above the chosen plan [% of the chosen plan]"), std::string::npos);
   EXPECT_NE(html.find("chosen: boustrophedon"), std::string::npos);
   EXPECT_NE(html.find("ground-station default"), std::string::npos);
 }

@@ -1,8 +1,11 @@
 #pragma once
 /// @file survey_area.hpp
-/// Survey areas in: GeoJSON, KML, WKT and QGC WPL 110 `.waypoints` files are read, projected to a
-/// local ENU frame, validated and (only where unambiguous) repaired. Extra no-fly zones are
-/// subtracted from the area. Every error names the file and the feature / vertex.
+/// Survey areas in: every vector format GDAL/OGR reads (Shapefile, GeoPackage, KMZ, GML, GPX,
+/// CSV with a WKT column, FlatGeobuf, GeoJSON in any CRS, ...; reprojected to WGS84), our own
+/// GeoJSON (WGS84), KML and WKT readers, and the formats GDAL has no driver for: QGC WPL 110
+/// `.waypoints`, QGroundControl `.plan` and Mission Planner `.poly`. Areas are projected to a local
+/// ENU frame, validated and (only where unambiguous) repaired. Extra no-fly zones are subtracted
+/// from the area. Every error names the file and the layer / feature / ring / vertex.
 
 #include <optional>
 #include <stdexcept>
@@ -22,7 +25,19 @@ class SurveyAreaError : public std::runtime_error {
 };
 
 /// Input file formats.
-enum class AreaFormat { Auto, GeoJson, Kml, Wkt, QgcWpl };
+enum class AreaFormat {
+  Auto,                ///< by extension, then by content, then whatever GDAL opens
+  GeoJson,             ///< GeoJSON in WGS84 (one with another "crs" goes through GDAL)
+  Kml,                 ///< KML (KMZ goes through GDAL)
+  Wkt,                 ///< WKT / EWKT text
+  QgcWpl,              ///< QGC WPL 110 `.waypoints`: rows 1..n are the vertices
+  QgcPlan,             ///< QGroundControl `.plan`: survey polygons, geofence inclusions (area) and exclusions (no-fly)
+  MissionPlannerPoly,  ///< Mission Planner `.poly`: one "lat lon" per line, '#' comments
+  Gdal                 ///< any vector dataset GDAL/OGR opens, reprojected to WGS84
+};
+
+/// Largest area file read into memory [byte] (text formats; GDAL streams its own): 64 MiB.
+inline constexpr long long kMaxAreaFileBytes = 64LL * 1024 * 1024;
 
 /// Units of WKT coordinates (GeoJSON and KML are always lon/lat, QGC files always lat/lon).
 enum class WktUnits {
@@ -54,6 +69,8 @@ struct ReadOptions {
   std::optional<GeoPoint> origin;                    ///< the origin for OriginChoice::Given (and for WKT in metres)
   std::vector<std::string> no_fly_files;             ///< extra no-fly zone files, subtracted from the area
   RepairSettings repair;                             ///< tolerances of checks and repairs
+  std::string layer;                                 ///< GDAL formats: read only this layer (default: every layer)
+  std::string where;                                 ///< GDAL formats: OGR SQL attribute filter on features, e.g. "name = 'field 3'"
 };
 
 /// A validated survey area in the local ENU frame.
@@ -79,8 +96,12 @@ struct SurveyArea {
 };
 
 /// Reads, projects, validates and repairs a survey area, then subtracts options.no_fly_files.
-/// Formats (AreaFormat::Auto): `.geojson`/`.json` GeoJSON, `.kml` KML, `.wkt` WKT, `.waypoints`
-/// (or a file starting "QGC WPL") QGC WPL 110; an unknown extension is decided by the content.
+/// Formats (AreaFormat::Auto): `.geojson`/`.json` GeoJSON (a `.plan` inside is read as QGC plan,
+/// a "crs" other than WGS84 through GDAL), `.kml` KML, `.wkt` WKT, `.waypoints` QGC WPL 110,
+/// `.plan` QGroundControl plan, `.poly` Mission Planner polygon; any other file is decided by its
+/// content, else opened by GDAL (Shapefile, GeoPackage, KMZ, GML, GPX, CSV with WKT, ...).
+/// No-fly zones in the file: a feature whose "role" (or, failing that, "name") starts with
+/// no-fly, no_fly, nofly, obstacle or exclusion; a QGC geofence exclusion.
 /// Throws SurveyAreaError naming the file (and line / feature / vertex) on any problem.
 SurveyArea readSurveyArea(const std::string& path, const ReadOptions& options = {});
 

@@ -20,6 +20,17 @@ using Facts = std::vector<std::pair<std::string, std::string>>;
 
 // ---------------------------------------------------------------- plan report
 
+/// One mission item as drawn: its number on the map and its reached time on the time axis.
+struct MissionMark {
+  int seq = -1;                             ///< the item's number in the mission file (-1: added by the autopilot model)
+  std::string command;                      ///< MAVLink command name, e.g. "NAV_WAYPOINT"
+  std::optional<geometry::Point> position;  ///< [m] ENU target from home (none: no position, e.g. land in place)
+  double reached_s = 0.0;                   ///< [s] since the take-off command when reached (NaN: never)
+  double energy_j = 0.0;                    ///< [J] energy while the item was active
+  double time_s = 0.0;                      ///< [s] time while the item was active
+  double distance_m = 0.0;                  ///< [m] distance flown while the item was active
+};
+
 /// One leg of the chosen plan, as drawn on the map.
 struct PlanLeg {
   std::vector<geometry::Point> points;  ///< [m] local ENU polyline (arcs sampled; >= 2 points, or 1 for a turn in place)
@@ -80,6 +91,7 @@ struct PlanReportData {
   std::vector<PlanCell> cells;                       ///< per-cell choices of the plan, in flight order (may be empty)
   std::vector<PlanBaseline> baselines;               ///< baselines drawn as horizontal lines
   std::optional<BatteryTrace> battery;               ///< battery over the mission, when known
+  std::vector<MissionMark> items;                    ///< the mission's items, numbered as in the mission file (map labels)
 };
 
 /// Builds the plan report (map, Table III-style breakdown + bar chart, candidates, battery).
@@ -220,17 +232,6 @@ HtmlReport speedReport(const SpeedReportData& data);
 std::string speedReportHtml(const SpeedReportData& data);
 
 // ---------------------------------------------------------------- mission report (predict)
-
-/// One mission item as drawn: its number on the map and its reached time on the time axis.
-struct MissionMark {
-  int seq = -1;                             ///< the item's number in the mission file (-1: added by the autopilot model)
-  std::string command;                      ///< MAVLink command name, e.g. "NAV_WAYPOINT"
-  std::optional<geometry::Point> position;  ///< [m] ENU target from home (none: no position, e.g. land in place)
-  double reached_s = 0.0;                   ///< [s] since the take-off command when reached (NaN: never)
-  double energy_j = 0.0;                    ///< [J] energy while the item was active
-  double time_s = 0.0;                      ///< [s] time while the item was active
-  double distance_m = 0.0;                  ///< [m] distance flown while the item was active
-};
 
 /// Time, energy and distance of one flight phase (or of the whole flight).
 struct MissionPhaseTotals {

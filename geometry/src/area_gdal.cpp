@@ -1,0 +1,228 @@
+// Survey areas through GDAL/OGR: every vector dataset GDAL opens (Shapefile, GeoPackage, KMZ,
+// GML, GPX tracks and routes, CSV with a WKT column, FlatGeobuf, GeoJSON in any CRS, ...), each
+// layer and feature reprojected to WGS84 lon/lat by GDAL's PROJ, then labelled for messages like
+// the other readers (area_internal.hpp). GDAL is private to this file.
+#include <atomic>
+#include <memory>
+#include <string>
+
+#include <cpl_error.h>
+#include <cpl_vsi.h>
+#include <gdal_priv.h>
+#include <ogr_geometry.h>
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
+
+#include "area_internal.hpp"
+#include "gdal_util.hpp"
+
+namespace wattswath::geometry::detail {
+namespace {
+
+/// Collections nested deeper than this are refused (a GeometryCollection bomb).
+constexpr int kMaxCollectionDepth = 16;
+/// Vertices over all features beyond which a file is refused (before validation's CGAL work).
+constexpr size_t kMaxVertices = 1000000;
+
+[[noreturn]] void fail(const std::string& source, const std::string& what) { throw SurveyAreaError(source + ": " + what); }
+
+/// The string value of field `name` (any case), or "" when the layer has no such field.
+std::string fieldText(OGRFeature& f, const char* name) {
+  const OGRFeatureDefn* d = f.GetDefnRef();
+  for (int i = 0; i < d->GetFieldCount(); ++i) {
+    if (lowerAscii(d->GetFieldDefn(i)->GetNameRef()) == name && f.IsFieldSetAndNotNull(i)) return f.GetFieldAsString(i);
+  }
+  return "";
+}
+
+/// What one feature's geometries are read into, and how they are named.
+struct FeatureContext {
+  const std::string& source;
+  std::string role;  ///< the feature's role (or name when it has no role)
+  RawArea& out;
+  size_t& vertices;
+};
+
+LabeledRing ringOf(const OGRSimpleCurve& c, const std::string& name, FeatureContext& fc) {
+  LabeledRing r;
+  r.name = name;
+  const int n = c.getNumPoints();
+  fc.vertices += static_cast<size_t>(n);
+  if (fc.vertices > kMaxVertices) {
+    fail(fc.source, name + ": more than " + std::to_string(kMaxVertices) + " vertices in the file (the limit of a survey area)");
+  }
+  for (int i = 0; i < n; ++i) {
+    r.pts.emplace_back(c.getX(i), c.getY(i));
+    r.labels.push_back("vertex " + std::to_string(i));
+  }
+  closeRing(r, fc.out.notes, fc.source);
+  return r;
+}
+
+void addPolygon(const OGRPolygon& p, const std::string& name, FeatureContext& fc) {
+  const OGRLinearRing* ext = p.getExteriorRing();
+  if (!ext || ext->getNumPoints() == 0) fail(fc.source, name + ": polygon without an outer boundary (empty geometry)");
+  LabeledPolygon poly;
+  poly.outer = ringOf(*ext, name + ", outer boundary", fc);
+  for (int k = 0; k < p.getNumInteriorRings(); ++k) {
+    poly.holes.push_back(ringOf(*p.getInteriorRing(k), name + ", hole " + std::to_string(k), fc));
+  }
+  (isNoFlyName(fc.role) ? fc.out.no_fly : fc.out.polygons).push_back(std::move(poly));
+}
+
+void addGeometry(const OGRGeometry& g, const std::string& name, FeatureContext& fc, int depth);
+
+/// Lines (GPX tracks and routes, KML LineStrings) are rings: each line one ring, holes found by
+/// containment (OGRGeometryFactory::organizePolygons), so a track of outline + obstacle works.
+void addLines(const OGRGeometry& g, const std::string& name, FeatureContext& fc) {
+  std::vector<OGRGeometry*> polys;
+  auto addLine = [&](const OGRLineString& l) {
+    auto* ring = new OGRLinearRing();
+    ring->addSubLineString(&l);
+    ring->closeRings();
+    auto* p = new OGRPolygon();
+    p->addRingDirectly(ring);
+    polys.push_back(p);
+  };
+  if (wkbFlatten(g.getGeometryType()) == wkbLineString) {
+    addLine(*g.toLineString());
+  } else {
+    for (const auto* l : *g.toMultiLineString()) addLine(*l);
+  }
+  if (polys.empty()) fail(fc.source, name + ": empty line geometry");
+  int valid = 0;
+  std::unique_ptr<OGRGeometry> organized(
+      OGRGeometryFactory::organizePolygons(polys.data(), static_cast<int>(polys.size()), &valid, nullptr));
+  fc.out.notes.push_back(fc.source + ": " + name + ": lines read as closed rings (holes by containment)");
+  addGeometry(*organized, name, fc, 1);
+}
+
+void addGeometry(const OGRGeometry& g, const std::string& name, FeatureContext& fc, int depth) {
+  if (depth > kMaxCollectionDepth) {
+    fail(fc.source, name + ": geometry collections nested more than " + std::to_string(kMaxCollectionDepth) + " deep");
+  }
+  const OGRwkbGeometryType t = wkbFlatten(g.getGeometryType());
+  if (OGR_GT_IsNonLinear(g.getGeometryType())) {  // GML / GPKG curves: GDAL's default stroking
+    std::unique_ptr<OGRGeometry> lin(g.getLinearGeometry());
+    if (!lin) fail(fc.source, name + ": cannot linearise the curved geometry" + gdalSays());
+    addGeometry(*lin, name, fc, depth + 1);
+  } else if (t == wkbPolygon) {
+    addPolygon(*g.toPolygon(), name, fc);
+  } else if (t == wkbMultiPolygon || t == wkbGeometryCollection) {
+    const auto& c = *g.toGeometryCollection();
+    for (int i = 0; i < c.getNumGeometries(); ++i) {
+      addGeometry(*c.getGeometryRef(i), name + (t == wkbMultiPolygon ? ", polygon " : ", geometry ") + std::to_string(i), fc,
+                  depth + 1);
+    }
+  } else if (t == wkbLineString || t == wkbMultiLineString) {
+    addLines(g, name, fc);
+  } else if (t == wkbPoint && lowerAscii(fc.role) == "home") {
+    const auto& p = *g.toPoint();
+    fc.out.home = GeoPoint{p.getY(), p.getX(), p.Is3D() ? p.getZ() : 0.0};
+  } else if (t == wkbPoint || t == wkbMultiPoint) {
+    fc.out.notes.push_back(fc.source + ": " + name + ": point ignored (only a point with role or name \"home\" is used)");
+  } else {
+    fail(fc.source, name + ": geometry type " + OGRGeometryTypeToName(g.getGeometryType()) +
+                        " is not an area (expected Polygon, MultiPolygon, closed lines, or a home Point)");
+  }
+}
+
+/// The transformation of a layer's CRS to WGS84 lon/lat, or none when it has no CRS (taken as WGS84).
+std::unique_ptr<OGRCoordinateTransformation> toWgs84(OGRLayer& layer, const std::string& where) {
+  const OGRSpatialReference* src = layer.GetSpatialRef();
+  if (!src) return nullptr;
+  OGRSpatialReference wgs84;
+  wgs84.SetWellKnownGeogCS("WGS84");
+  wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  std::unique_ptr<OGRSpatialReference> s(src->Clone());
+  s->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(s.get(), &wgs84));
+  if (!ct) {
+    const char* n = src->GetName();
+    throw SurveyAreaError(where + ": cannot transform its CRS \"" + std::string(n ? n : "?") + "\" to WGS84" + gdalSays());
+  }
+  return ct;
+}
+
+void readLayer(OGRLayer& layer, const std::string& source, const GdalSelection& sel, RawArea& out, size_t& vertices) {
+  const std::string lname = "layer \"" + std::string(layer.GetName()) + "\"";
+  if (!sel.where.empty() && layer.SetAttributeFilter(sel.where.c_str()) != OGRERR_NONE) {
+    fail(source, lname + ": --where \"" + sel.where + "\" is not a valid OGR SQL filter on its fields" + gdalSays());
+  }
+  const auto ct = toWgs84(layer, source + ": " + lname);
+  CPLErrorReset();
+  long index = 0;
+  for (auto& feature : layer) {
+    const std::string name = lname + ", feature " + std::to_string(index++);
+    OGRGeometry* g = feature->GetGeometryRef();
+    if (!g || g->IsEmpty()) {
+      out.notes.push_back(source + ": " + name + ": no geometry; ignored");
+      continue;
+    }
+    if (ct && g->transform(ct.get()) != OGRERR_NONE) fail(source, name + ": cannot reproject to WGS84" + gdalSays());
+    std::string role = fieldText(*feature, "role");
+    if (role.empty()) role = fieldText(*feature, "name");
+    FeatureContext fc{source, role, out, vertices};
+    addGeometry(*g, name, fc, 0);
+  }
+  // Drivers report a broken feature or a filter that fails on the data (a GeoPackage evaluates
+  // --where in SQLite only now) by ending the iteration with an error.
+  if (CPLGetLastErrorType() >= CE_Failure) {
+    fail(source, lname + ": reading stopped after feature " + std::to_string(index) + gdalSays() +
+                     (sel.where.empty() ? std::string() : "; --where \"" + sel.where + "\" is not a valid OGR SQL filter on its fields?"));
+  }
+}
+
+}  // namespace
+
+RawArea readWithGdal(const std::string& path, const std::string& source, const GdalSelection& sel) {
+  QuietGdal quiet;
+  // CSV: a column named WKT (or geometry / geom / the_geom) holds the geometry.
+  const char* const csvOptions[] = {"GEOM_POSSIBLE_NAMES=WKT,geometry,geom,the_geom", "KEEP_GEOM_COLUMNS=NO", nullptr};
+  const bool csv = path.size() > 4 && lowerAscii(path.substr(path.size() - 4)) == ".csv";
+  GDALDatasetUniquePtr ds(
+      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, csv ? csvOptions : nullptr, nullptr));
+  if (!ds) {
+    fail(source, "not a survey area file wattswath or GDAL can read" + gdalSays() +
+                     "; expected GeoJSON, KML/KMZ, WKT, Shapefile, GeoPackage, GML, GPX, CSV with a WKT column, "
+                     "QGC .plan / .waypoints or Mission Planner .poly");
+  }
+  RawArea out;
+  size_t vertices = 0;
+  if (!sel.layer.empty()) {
+    OGRLayer* l = ds->GetLayerByName(sel.layer.c_str());
+    if (!l) {
+      std::string names;
+      for (auto* x : ds->GetLayers()) names += (names.empty() ? "" : ", ") + std::string(x->GetName());
+      fail(source, "no layer named \"" + sel.layer + "\" (--layer); the file has: " + names);
+    }
+    readLayer(*l, source, sel, out, vertices);
+    return out;
+  }
+  const bool gpx = std::string(ds->GetDriverName()) == "GPX";
+  for (auto* l : ds->GetLayers()) {
+    const std::string n = l->GetName();
+    if (gpx && (n == "track_points" || n == "route_points")) continue;  // the same vertices as tracks / routes
+    readLayer(*l, source, sel, out, vertices);
+  }
+  return out;
+}
+
+RawArea parseWithGdal(const std::string& bytes, const std::string& source, const GdalSelection& sel) {
+  static std::atomic<unsigned> counter{0};
+  const auto slash = source.find_last_of('/');
+  const std::string base = slash == std::string::npos ? source : source.substr(slash + 1);
+  const std::string name = "/vsimem/wattswath_area_" + std::to_string(counter++) + "_" + base;
+  QuietGdal quiet;  // registers the drivers before the memory file is made
+  VSILFILE* f = VSIFileFromMemBuffer(name.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
+                                     static_cast<vsi_l_offset>(bytes.size()), FALSE);
+  if (!f) fail(source, "cannot make an in-memory file for GDAL" + gdalSays());
+  VSIFCloseL(f);
+  struct Unlink {
+    const std::string& n;
+    ~Unlink() { VSIUnlink(n.c_str()); }
+  } unlink{name};
+  return readWithGdal(name, source, sel);
+}
+
+}  // namespace wattswath::geometry::detail
