@@ -16,7 +16,7 @@ REPO = pathlib.Path(__file__).resolve().parents[2]
 DATA = REPO / "data"
 TESTDATA = REPO / "tests" / "data"
 SHARED = pathlib.Path(os.environ.get("WATTSWATH_SHARED_DATA", REPO.parent / "shared" / "data"))
-CLI = pathlib.Path(os.environ.get("WATTSWATH_CLI", REPO / "build" / "bin" / "wattswath"))
+CLI = pathlib.Path(os.environ.get("WATTSWATH_CLI", REPO / "build" / "bin" / "wattswath")).resolve()
 
 IRIS = str(DATA / "vehicles" / "iris.json")
 IRIS_PLUS = str(DATA / "vehicles" / "iris-plus-arducopter3.json")
