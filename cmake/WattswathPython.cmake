@@ -32,4 +32,7 @@ if(WATTSWATH_PYTHON)
   endif()
   message(STATUS "wattswath: Python bindings for ${Python_EXECUTABLE} (${Python_VERSION}), "
     "pybind11 ${pybind11_VERSION}")
+else()
+  message(STATUS "wattswath: no Python bindings (WATTSWATH_PYTHON is OFF: pybind11-dev and python3-dev "
+    "are needed; scripts/setup.sh installs them)")
 endif()

@@ -30,5 +30,7 @@ def cli_json(*args):
     """Runs the wattswath command line with --json from the repository root and parses its output."""
     if not CLI.is_file():
         pytest.fail(f"the command line {CLI} is not built (set WATTSWATH_CLI)")
-    out = subprocess.run([str(CLI), *map(str, args), "--json"], cwd=REPO, check=True, capture_output=True, text=True)
+    out = subprocess.run([str(CLI), *map(str, args), "--json"], cwd=REPO, capture_output=True, text=True)
+    if out.returncode != 0:
+        pytest.fail(f"wattswath {' '.join(map(str, args))} exited with {out.returncode}: {out.stderr}")
     return json.loads(out.stdout)

@@ -26,7 +26,7 @@ def test_replay_of_an_iris_plus_flight_matches_the_cli():
     model = ws.build_model(vehicle, EFFECTS)
     r = ws.replay(model, ws.prepare_log(ws.read_log(str(IRIS_FLIGHT)), vehicle))
     ref = cli_json("replay", "--vehicle", IRIS_PLUS, "--effects", ",".join(EFFECTS), "--log", IRIS_FLIGHT)
-    flight = ref["logs"][0]["flight"] if "logs" in ref else ref["flight"]
+    flight = ref["flights"][0]
     assert r.flight["measured_j"] == pytest.approx(flight["measured_j"], rel=1e-9)
     assert r.flight["modelled_j"] == pytest.approx(flight["modelled_j"], rel=1e-9)
     m = ws.error_metrics([r])
