@@ -99,8 +99,11 @@ py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energ
   s.threads = threads;
   pl::PlanResult r;
   {
-    py::gil_scoped_release release;  // the search runs worker threads; other Python threads may run
-    r = pl::planCoverage(problem, v, model, s);
+    // Other Python threads may run during the search; it works on copies they cannot change.
+    const energy::Vehicle vehicle = v;
+    const energy::EnergyModel scoring = model;
+    py::gil_scoped_release release;
+    r = pl::planCoverage(problem, vehicle, scoring, s);
   }
   py::dict d = candidateDict(r.plan);
   d["lower_bound_j"] = r.lower_bound_j;
