@@ -33,6 +33,6 @@ if(WATTSWATH_PYTHON)
   message(STATUS "wattswath: Python bindings for ${Python_EXECUTABLE} (${Python_VERSION}), "
     "pybind11 ${pybind11_VERSION}")
 else()
-  message(STATUS "wattswath: no Python bindings (WATTSWATH_PYTHON is OFF: pybind11-dev and python3-dev "
-    "are needed; scripts/setup.sh installs them)")
+  message(STATUS "wattswath: no Python bindings (WATTSWATH_PYTHON is OFF; it is ON by default when "
+    "pybind11-dev and python3-dev are found, which scripts/setup.sh installs)")
 endif()
