@@ -42,6 +42,12 @@ GeographicLib, nlohmann_json, Ceres, OMPL: the Debian packages `scripts/setup.sh
 folder and builds example 1 against it. The headers document every call (units in brackets);
 `docs/architecture.md` says which library holds what.
 
+From Python: the module `wattswath` (`python/`, pybind11) offers the same workflows with NumPy
+arrays (README, section "Python"); `python/examples/plot_replay.py` is its example, a script that
+replays the physics model on an IRIS+ flight, fits translational lift on the two other flights and
+plots measured against modelled power and the residuals by speed (run by the ctest test
+`python_example_plot_replay`, which writes `build/python/plot_replay.png`).
+
 | example | shows | links |
 |---|---|---|
 """

@@ -11,10 +11,12 @@ packages=(
   libompl-dev libceres-dev libmuparser-dev libgeographiclib-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libpng-dev
   libgdal-dev gdal-bin
+  pybind11-dev python3-dev python3-numpy
 )
-# Tests only: headless Chromium renders the HTML reports; clang builds the fuzz targets.
+# Tests only: headless Chromium renders the HTML reports; clang builds the fuzz targets; pytest runs
+# the Python bindings' tests and matplotlib their example script (python/).
 if [[ "${WATTSWATH_SETUP_TESTS:-1}" == "1" ]]; then
-  packages+=(chromium clang libclang-rt-14-dev)
+  packages+=(chromium clang libclang-rt-14-dev python3-pytest python3-matplotlib)
 fi
 
 missing=()

@@ -1,0 +1,143 @@
+// Python bindings of the planner: the minimum-energy coverage plan of a survey area (planCoverage),
+// its energy, time and path as NumPy arrays, its baselines and its mission as QGroundControl .plan text.
+#include <cmath>
+
+#include "bindings.hpp"
+#include "wattswath/geometry/survey_area.hpp"
+#include "wattswath/mission/planned_mission.hpp"
+#include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/mission_from_plan.hpp"
+
+namespace wattswath::python {
+namespace {
+
+namespace geo = geometry;
+namespace pl = planner;
+
+const char* kindName(geo::PrimitiveKind k) {
+  switch (k) {
+    case geo::PrimitiveKind::Line: return "line";
+    case geo::PrimitiveKind::Arc: return "arc";
+    case geo::PrimitiveKind::TurnInPlace: return "turn_in_place";
+  }
+  return "?";
+}
+
+const char* roleName(geo::LegRole r) {
+  switch (r) {
+    case geo::LegRole::Sweep: return "sweep";
+    case geo::LegRole::Turn: return "turn";
+    case geo::LegRole::Transit: return "transit";
+    case geo::LegRole::Climb: return "climb";
+  }
+  return "?";
+}
+
+// The path as a polyline [m]: each leg's start, arcs sampled at most 10 deg apart, the last end.
+py::array_t<double> polyline(const geo::CoveragePath& path) {
+  std::vector<geo::Point> pts;
+  for (const auto& leg : path.legs) {
+    pts.push_back(leg.start);
+    if (leg.kind != geo::PrimitiveKind::Arc) continue;
+    const geo::Point r0 = leg.start - leg.center;
+    const double phi0 = std::atan2(r0.y(), r0.x());
+    const int n = std::max(2, static_cast<int>(std::ceil(std::abs(leg.turn_angle) / (M_PI / 18.0))));
+    for (int k = 1; k < n; ++k) {
+      const double phi = phi0 + leg.turn_angle * k / n;
+      pts.emplace_back(leg.center + leg.radius * geo::Point(std::cos(phi), std::sin(phi)));
+    }
+  }
+  if (!path.legs.empty()) pts.push_back(path.legs.back().end);
+  return rowsOf<2>(pts.size(), [&](std::size_t i) { return pts[i]; });
+}
+
+py::dict legsDict(const pl::FlownPath& f) {
+  const auto& legs = f.path.legs;
+  std::vector<std::string> kind, role;
+  for (const auto& l : legs) {
+    kind.emplace_back(kindName(l.kind));
+    role.emplace_back(roleName(l.role));
+  }
+  const auto at = [](const std::vector<double>& v, std::size_t i) { return i < v.size() ? v[i] : std::nan(""); };
+  py::dict d;
+  d["start"] = rowsOf<2>(legs.size(), [&](std::size_t i) { return legs[i].start; });
+  d["end"] = rowsOf<2>(legs.size(), [&](std::size_t i) { return legs[i].end; });
+  d["length_m"] = arrayOf(legs.size(), [&](std::size_t i) { return legs[i].length(); });
+  d["energy_j"] = arrayOf(legs.size(), [&](std::size_t i) { return at(f.leg_energy, i); });
+  d["time_s"] = arrayOf(legs.size(), [&](std::size_t i) { return at(f.leg_time, i); });
+  d["cruise_mps"] = arrayOf(legs.size(), [&](std::size_t i) { return at(f.speeds.cruise, i); });
+  d["kind"] = kind;
+  d["role"] = role;
+  return d;
+}
+
+py::dict candidateDict(const pl::PlanCandidate& c) {
+  return py::dict(py::arg("energy_j") = c.flown.energy, py::arg("time_s") = c.flown.time,
+                  py::arg("length_m") = c.flown.length, py::arg("pattern") = c.pattern,
+                  py::arg("sweep_angle_deg") = c.sweep_angle_deg, py::arg("cells") = c.cells,
+                  py::arg("coverage_pct") = c.coverage_pct, py::arg("sharp_corners") = c.flown.sharp_corners,
+                  py::arg("rounded_corners") = c.flown.rounded_corners);
+}
+
+pl::SurveyProblem problemOf(const geo::SurveyArea& area, double spacing, double altitude, double footprint) {
+  pl::SurveyProblem p;
+  p.area = area.polygon();
+  p.no_fly = area.no_fly;
+  p.home = area.home ? *area.home : p.area.outer.front();
+  p.spacing = spacing;
+  p.footprint = footprint > 0.0 ? footprint : spacing;
+  p.altitude = altitude;
+  return p;
+}
+
+py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energy::EnergyModel& model, double spacing,
+              double altitude, double footprint, bool spirals, bool per_cell, int threads) {
+  const pl::SurveyProblem problem = problemOf(area, spacing, altitude, footprint);
+  pl::PlannerSettings s;
+  s.spirals = spirals;
+  s.per_cell = per_cell;
+  s.threads = threads;
+  pl::PlanResult r;
+  {
+    // Other Python threads may run during the search; it works on copies they cannot change.
+    const energy::Vehicle vehicle = v;
+    const energy::EnergyModel scoring = model;
+    py::gil_scoped_release release;
+    r = pl::planCoverage(problem, vehicle, scoring, s);
+  }
+  py::dict d = candidateDict(r.plan);
+  d["lower_bound_j"] = r.lower_bound_j;
+  d["candidates"] = r.candidates;
+  d["path"] = polyline(r.plan.flown.path);
+  d["legs"] = legsDict(r.plan.flown);
+  d["shortest_path"] = candidateDict(r.shortest_path);
+  d["ground_station_default"] = candidateDict(r.ground_station_default);
+  d["best_spiral"] = r.best_spiral ? py::object(candidateDict(*r.best_spiral)) : py::object(py::none());
+  d["sweep_scan_deg"] = arrayOf(r.sweep_scan.size(), [&](std::size_t i) { return r.sweep_scan[i].sweep_angle_deg; });
+  d["sweep_scan_j"] = arrayOf(r.sweep_scan.size(), [&](std::size_t i) { return r.sweep_scan[i].energy_j; });
+  d["notes"] = r.notes;
+  if (area.frame) {
+    const auto pm = pl::missionFromPlan(r.plan.flown, problem, *area.frame,
+                                        area.home_alt_m.value_or(area.frame->origin().alt_m));
+    d["qgc_plan"] = mission::toQgcPlan(pm.mission);
+    d["mission_notes"] = pm.notes;
+  } else {
+    d["qgc_plan"] = py::none();
+  }
+  return d;
+}
+
+}  // namespace
+
+void bindPlanner(py::module_& m) {
+  m.def("plan", &plan, py::arg("area"), py::arg("vehicle"), py::arg("model"), py::arg("spacing") = 15.0,
+        py::arg("altitude") = 10.0, py::arg("footprint") = 0.0, py::arg("spirals") = true, py::arg("per_cell") = true,
+        py::arg("threads") = 2,
+        "Plans the minimum-energy coverage of a SurveyArea (single region) with lines `spacing` [m] apart at "
+        "`altitude` [m] (footprint [m], default the spacing): dict energy_j, time_s, length_m, pattern, "
+        "sweep_angle_deg, coverage_pct, path (M x 2 polyline [m]), legs (per-leg arrays), the baselines "
+        "shortest_path, ground_station_default, best_spiral, lower_bound_j and qgc_plan (.plan text, None "
+        "without a geodetic frame).");
+}
+
+}  // namespace wattswath::python

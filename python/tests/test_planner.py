@@ -1,0 +1,51 @@
+"""The minimum-energy coverage plan of an area."""
+import json
+
+import numpy as np
+import pytest
+import wattswath as ws
+
+from conftest import IRIS, IRIS_AREA
+
+
+@pytest.fixture(scope="module")
+def plan():
+    vehicle = ws.load_vehicle(IRIS)
+    return ws.plan(ws.read_area(IRIS_AREA), vehicle, ws.marins_model(vehicle), spacing=15.0, altitude=10.0)
+
+
+def test_plan_as_example_3(plan):
+    # Example 3 (examples/03_plan_and_write.cpp, the same call): boustrophedon at 60 deg, 4 cells,
+    # 1818 m, 369 s, 84290 J, coverage 99.1 %; baselines 92293 J, 118512 J.
+    assert plan["pattern"] == "boustrophedon" and plan["sweep_angle_deg"] == pytest.approx(60, abs=0.5)
+    assert plan["energy_j"] == pytest.approx(84290, abs=1)
+    assert plan["time_s"] == pytest.approx(369, abs=1)
+    assert plan["length_m"] == pytest.approx(1818, abs=1)
+    assert plan["coverage_pct"] == pytest.approx(99.1, abs=0.05)
+    assert plan["shortest_path"]["energy_j"] == pytest.approx(92293, abs=1)
+    assert plan["ground_station_default"]["energy_j"] == pytest.approx(118512, abs=1)
+    assert plan["lower_bound_j"] < plan["energy_j"] < plan["shortest_path"]["energy_j"]
+
+
+def test_path_arrays(plan):
+    legs = plan["legs"]
+    assert legs["start"].shape == legs["end"].shape == (len(legs["kind"]), 2)
+    assert np.sum(legs["length_m"]) == pytest.approx(plan["length_m"], rel=1e-9)
+    assert np.sum(legs["energy_j"]) == pytest.approx(plan["energy_j"], rel=1e-9)
+    assert np.sum(legs["time_s"]) == pytest.approx(plan["time_s"], rel=1e-9)
+    path = plan["path"]
+    assert path.shape[1] == 2 and np.allclose(path[0], legs["start"][0]) and np.allclose(path[-1], legs["end"][-1])
+    # The polyline follows the legs: its length is the flown length within the arcs' chord error.
+    assert np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)) == pytest.approx(plan["length_m"], rel=0.005)
+    assert len(plan["sweep_scan_deg"]) == len(plan["sweep_scan_j"]) > 10
+
+
+def test_mission_of_the_plan(plan):
+    qgc = json.loads(plan["qgc_plan"])
+    assert qgc["fileType"] == "Plan" and len(qgc["mission"]["items"]) > 40
+
+
+def test_bad_spacing_is_refused():
+    vehicle = ws.load_vehicle(IRIS)
+    with pytest.raises(ValueError, match="spacing"):
+        ws.plan(ws.read_area(IRIS_AREA), vehicle, ws.marins_model(vehicle), spacing=-1.0)
