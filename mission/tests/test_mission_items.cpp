@@ -146,7 +146,7 @@ TEST(MissionItems, PlannedMissionFilesReadBack) {
   PlannedMission p;
   p.home = {43.7200, 10.4200};
   p.home_altitude_amsl_m = 3.0;
-  p.waypoints = {{{43.7201, 10.4201}, 10.0, 6.5}, {{43.7202, 10.4203}, 10.0, 3.0}};
+  p.waypoints = {{{43.7201, 10.4201}, 10.0, 6.5, 0.0, {}}, {{43.7202, 10.4203}, 10.0, 3.0, 0.0, {}}};
   const Mission a = parseQgcPlan(toQgcPlan(p), "planned.plan");
   const Mission b = parseQgcWpl(toQgcWpl(p), "planned.waypoints");
   ASSERT_EQ(a.items.size(), 6u);  // take-off, speed, waypoint, speed, waypoint, return
