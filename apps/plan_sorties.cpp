@@ -163,7 +163,7 @@ void printSorties(const nlohmann::json& j) {
               j["naive"]["all_fit"].get<bool>() ? "" : " (not all keep the reserve)");
   for (const auto& s : j["sorties"]) {
     const long t = std::lround(s["time_s"].get<double>());
-    std::printf("  %s: sweeps %d-%d, %.1f kJ, %ld:%02ld min:s, lands with %.0f %% of the usable charge, %d photos\n",
+    std::printf("  %s: sweep pieces %d-%d, %.1f kJ, %ld:%02ld min:s, lands with %.0f %% of the usable charge, %d photos\n",
                 s["file"].get<std::string>().c_str(), s["first_sweep"].get<int>(), s["last_sweep"].get<int>(),
                 s["energy_j"].get<double>() / 1000.0, t / 60, t % 60, s["usable_left_pct"].get<double>(), s["photos"].get<int>());
   }
