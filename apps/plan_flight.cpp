@@ -32,6 +32,8 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   scoring.model = &setup.model;
   scoring.autopilot = setup.autopilot;
   scoring.settings = setup.settings;
+  // The mission names the autopilot that flies it (QGC's firmwareType).
+  scoring.mission.firmware = setup.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
   std::vector<std::pair<std::string, const planner::PlanCandidate*>> cands = {{"plan", &r.plan}};
   if (r.per_cell && r.per_cell->valid) cands.push_back({"per-cell", &*r.per_cell});
   if (r.best_spiral && r.best_spiral->valid) cands.push_back({"best spiral", &*r.best_spiral});

@@ -119,6 +119,7 @@ nlohmann::json planSorties(const pl::PlanCandidate& plan, double single_flight_j
   scoring.model = &setup.model;
   scoring.autopilot = setup.autopilot;
   scoring.settings = setup.settings;
+  scoring.mission.firmware = setup.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
   pl::RouteScorer scorer(setup.model, pl::SpeedSettings::fromVehicle(v));
   const double usable = pl::predictBatteryUse(plan.flown, *v.battery).usable_energy_j;
   pl::SortieSettings ss;

@@ -82,8 +82,9 @@ void checkPlanOutput(const nlohmann::json& j, const std::string& out) {
   }
   const double search_cov = j.at("flight").at("finalists").at(0).at("coverage_pct").get<double>();
   for (const auto& f : j.at("flight").at("finalists"))
-    if (f.at("coverage_pct").get<double>() >= search_cov - 0.1 && !f.at("baseline").get<bool>())
+    if (f.at("coverage_pct").get<double>() >= search_cov - 0.1 && !f.at("baseline").get<bool>()) {
       EXPECT_LE(j.at("flight").at("energy_j").get<double>(), f.at("energy_j").get<double>() * (1 + 1e-12)) << f.at("label");
+    }
   EXPECT_TRUE(j.contains("battery"));
   for (const char* f : {"mission.plan", "mission.waypoints", "path.geojson"})
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
@@ -325,13 +326,16 @@ TEST(CliPlan, BatteryWhenTheVehicleHasOne) {
 // an ArduCopter 4.x vehicle (S-curve model) and the calibrated ArduCopter 3.x IRIS+ (leash model);
 // the finalists are all flown and the written one is the cheapest flight.
 TEST(CliPlan, PredictOnTheWrittenMissionGivesThePlansFlight) {
-  for (const std::string vehicle : {"data/vehicles/iris.json", "data/vehicles/iris-plus-arducopter3.json"}) {
+  for (const std::string vehicle : {"data/vehicles/iris.json", "data/vehicles/iris-plus-arducopter3.json", "tests/data/iris-px4.json"}) {
     const auto out = outDir("flight");
     const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + sourcePath(vehicle) +
                        " --spacing 15 --out " + out + " --json 2>/dev/null");
     ASSERT_EQ(r.status, 0) << r.output;
     const auto flight = nlohmann::json::parse(r.output).at("flight");
     ASSERT_GE(flight.at("finalists").size(), 2u);
+    // The mission names the autopilot that flies it (QGC firmwareType: 3 ArduPilot, 12 PX4).
+    const int firmware = nlohmann::json::parse(slurp(out + "/mission.plan")).at("mission").at("firmwareType");
+    EXPECT_EQ(firmware, vehicle.find("px4") != std::string::npos ? 12 : 3) << vehicle;
     // The written flight is the cheapest of the finalists covering at least the search's choice.
     const double search_cov = flight.at("finalists").at(0).at("coverage_pct").get<double>();
     double cheapest = 1e300;

@@ -202,6 +202,7 @@ PlanMission missionFromPlan(const FlownPath& flown, const SurveyProblem& problem
   m.home = frame.toGeodetic(problem.home);
   m.home_altitude_amsl_m = home_altitude_amsl_m;
   m.takeoff_altitude_m = problem.altitude;
+  m.firmware = options.firmware;
   auto wps = missionWaypoints(flown, options);
   double fastest = 0.0;
   for (const auto& w : wps.waypoints) {
