@@ -538,6 +538,9 @@ void runPlan(const PlanOpts& o) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
     data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), frame);  // numbered as the ground station shows them
     const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
+    data.facts.push_back({"flown by", flight.autopilot + ": " + fixedText(flight.prediction.total.energy_j / 1000.0, 1) + " kJ, " +
+                                          fixedText(flight.prediction.total.time_s / 60.0, 1) +
+                                          " min from take-off to landing (what predict gives for mission.plan)"});
     data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
                                                    fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
                                              : std::string("no camera commands")});
