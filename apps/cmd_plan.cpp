@@ -42,6 +42,7 @@ struct PlanOpts {
   std::vector<std::string> no_fly;
   double spacing = 0.0, altitude = 10.0, fov_deg = 0.0, overlap = -1.0, camera_max_speed = 0.0;
   double fov_along_deg = 0.0, frontal_overlap = -1.0, focal_mm = 0.0;
+  double gsd_cm = 0.0, trigger_interval_s = 0.0;  // --gsd [cm/px], --trigger-interval [s] (0: not given)
   double no_fly_margin = pl::kDefaultNoFlyMargin;
   SortieRequest sorties;
   double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
@@ -372,9 +373,10 @@ pl::Camera cameraOf(const PlanOpts& o) {
 /// Spacing and footprint of `s.problem` from --spacing, or from the camera with its overlaps.
 void setSpacing(const PlanOpts& o, PlanSetup& s) {
   auto& pr = s.problem;
-  const bool camera = o.fov_deg > 0.0 || o.fov_along_deg > 0.0 || !o.sensor_mm.empty() || o.focal_mm > 0.0 || o.overlap >= 0.0;
+  const bool camera = o.fov_deg > 0.0 || o.fov_along_deg > 0.0 || !o.sensor_mm.empty() || o.focal_mm > 0.0 || o.overlap >= 0.0 ||
+                      o.gsd_cm > 0.0;
   if (o.spacing > 0.0) {
-    if (camera) throw std::invalid_argument("give either --spacing or --altitude/--fov/--overlap, not both");
+    if (camera) throw std::invalid_argument("give either --spacing or a camera (--fov or --sensor-mm/--focal-mm, --overlap, --gsd), not both");
     if (o.frontal_overlap >= 0.0)
       throw std::invalid_argument("--frontal-overlap needs a camera (--fov or --sensor-mm/--focal-mm with --overlap), not --spacing");
     pr.spacing = pr.footprint = o.spacing;
@@ -387,7 +389,17 @@ void setSpacing(const PlanOpts& o, PlanSetup& s) {
   if (o.frontal_overlap < 0.0)
     s.notes.push_back("camera: frontal overlap " + fixedText(100.0 * s.frontal_overlap, 0) +
                       " % taken from the side overlap (give --frontal-overlap)");
-  s.photos = pl::photoGeometry(cameraOf(o), o.altitude, s.side_overlap, s.frontal_overlap);
+  const pl::Camera cam = cameraOf(o);
+  if (o.gsd_cm > 0.0) {  // the altitude that gives this GSD (QGC's CameraCalc "fixed GSD" mode)
+    if (cam.image_width_px <= 0)
+      throw std::invalid_argument("--gsd " + fixedText(o.gsd_cm, 2) + " cm/px needs the image width: give --sensor-mm, --focal-mm and --image-px");
+    pr.altitude = o.gsd_cm / 100.0 * cam.image_width_px / (2.0 * std::tan(0.5 * cam.fov_across_rad));
+    if (!(pr.altitude >= 0.1 && pr.altitude <= 1000.0))
+      throw std::invalid_argument("--gsd " + fixedText(o.gsd_cm, 2) + " cm/px gives an altitude of " + fixedText(pr.altitude, 1) +
+                                  " m, outside 0.1..1000 m");
+    s.notes.push_back("camera: altitude " + fixedText(pr.altitude, 1) + " m for a GSD of " + fixedText(o.gsd_cm, 2) + " cm/px");
+  }
+  s.photos = pl::photoGeometry(cam, pr.altitude, s.side_overlap, s.frontal_overlap);
   pr.footprint = s.photos->footprint_across_m;
   pr.spacing = s.photos->line_spacing_m;
 }
@@ -486,6 +498,13 @@ void runPlan(const PlanOpts& o) {
   pl::PlannerSettings ps;
   ps.corners = pl::cornerStrategyFromString(o.corners);
   ps.camera_max_speed = o.camera_max_speed;
+  if (o.trigger_interval_s > 0.0) {  // one photo per trigger distance at most every interval
+    if (!s.photos) throw std::invalid_argument("--trigger-interval needs a camera (--fov or --sensor-mm/--focal-mm with --overlap)");
+    const double cap = s.photos->trigger_distance_m / o.trigger_interval_s;
+    ps.camera_max_speed = ps.camera_max_speed > 0.0 ? std::min(ps.camera_max_speed, cap) : cap;
+    s.notes.push_back("camera: sweeps at most " + fixedText(ps.camera_max_speed, 2) + " m/s (a photo every " +
+                      fixedText(s.photos->trigger_distance_m, 2) + " m, at least " + fixedText(o.trigger_interval_s, 2) + " s apart)");
+  }
   ps.spirals = !o.no_spiral;
   ps.overshoot = o.overshoot;
   const auto model = energy::marinsModel(vehicle);
@@ -591,7 +610,12 @@ void registerPlanCommand(CLI::App& app) {
   addAreaSelectOptions(cmd, o->layer, o->where);
   cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
   cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
-  cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));
+  auto* altitude = cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));
+  cmd->add_option("--gsd", o->gsd_cm, "ground sampling distance [cm/px] that sets the altitude (with --sensor-mm, --focal-mm, --image-px; instead of --altitude)")
+      ->check(CLI::Range(0.01, 1000.0))
+      ->excludes(altitude);
+  cmd->add_option("--trigger-interval", o->trigger_interval_s, "shortest time between photos the camera allows [s]: caps the sweep speed at trigger distance / interval")
+      ->check(CLI::Range(0.01, 3600.0));
   cmd->add_option("--fov", o->fov_deg, "camera field of view across track [deg]");
   cmd->add_option("--fov-along", o->fov_along_deg, "camera field of view along track [deg] (default: --fov, a square footprint)")
       ->check(CLI::Range(0.0, 180.0));

@@ -392,3 +392,37 @@ TEST(CliPlan, SortiesEachLandWithTheReserveAndTogetherFlyTheWholePlan) {
   EXPECT_NE(nb.status, 0);
   EXPECT_NE(nb.output.find("--sorties needs the vehicle's battery"), std::string::npos) << nb.output;
 }
+
+// A GSD sets the altitude as QGC's CameraCalc does (altitude = GSD x image width x focal length /
+// sensor width: 2 cm/px on a 13.2 mm, 5472 px sensor behind 8.8 mm is 72.96 m), and a camera that
+// needs 2 s between photos caps the sweeps at trigger distance / 2 s.
+TEST(CliPlan, GsdSetsTheAltitudeAndTheTriggerIntervalCapsTheSweepSpeed) {
+  const auto out = outDir("gsd");
+  const auto j = planJson(sourcePath("data/areas/iris_area.geojson"), out,
+                          "--sensor-mm 13.2,8.8 --focal-mm 8.8 --image-px 5472,3648 --gsd 2 --overlap 0.7 --trigger-interval 2");
+  const auto& cam = j.at("mission").at("camera");
+  EXPECT_NEAR(cam.at("gsd_m").get<double>(), 0.02, 1e-9);
+  const double trigger = cam.at("trigger_distance_m").get<double>();
+  const auto plan = nlohmann::json::parse(slurp(out + "/mission.plan"));
+  for (const auto& item : plan.at("mission").at("items")) {
+    if (item.at("command") == 16) {
+      EXPECT_NEAR(item.at("params").at(6).get<double>(), 72.96, 0.01);
+    }
+  }
+  bool noted = false;
+  for (const auto& n : j.at("notes")) noted = noted || n.get<std::string>().find("sweeps at most") != std::string::npos;
+  EXPECT_TRUE(noted);
+  // Sweeps are flown at most at trigger distance / interval (camera on from its start to its end).
+  double cap_speed = 0.0, speed = 0.0;
+  for (const auto& item : plan.at("mission").at("items")) {
+    if (item.at("command") == 178) speed = item.at("params").at(1).get<double>();
+    if (item.at("command") == 206 && item.at("params").at(0).get<double>() > 0.0) cap_speed = std::max(cap_speed, speed);
+  }
+  EXPECT_LE(cap_speed, trigger / 2.0 + 1e-6);
+  expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --out " + outDir("gsd2") +
+                  " --spacing 10 --gsd 2",
+              "not both");
+  expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --out " + outDir("gsd3") +
+                  " --sensor-mm 13.2,8.8 --focal-mm 8.8 --gsd 2 --overlap 0.7",
+              "needs the image width");
+}
