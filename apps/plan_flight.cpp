@@ -7,15 +7,16 @@
 #include <iostream>
 
 #include "prediction_setup.hpp"
+#include "wattswath/report/svg.hpp"
 
 namespace wattswath::apps {
 namespace {
 
-std::string minSec(double s) {
-  char buf[32];
-  const long t = std::lround(s);
-  std::snprintf(buf, sizeof buf, "%ld:%02ld", t / 60, t % 60);
-  return buf;
+// One row of the table: the flight of score `s`.
+FlightRow rowOf(const planner::FlightScore& s, bool baseline) {
+  const auto& mission = s.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)];
+  return {s.label,          s.closed_form_energy_j, s.prediction.total.energy_j, s.prediction.total.time_s,
+          mission.energy_j, mission.time_s,         s.candidate->coverage_pct,   baseline};
 }
 
 std::string kj(double j) {
@@ -26,32 +27,29 @@ std::string kj(double j) {
 
 }  // namespace
 
-PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, const std::string& vehicle_path,
-                        std::vector<std::string>& notes) {
-  const PredictionSetup setup = predictionSetup(*scoring.vehicle, vehicle_path, "", 25.0);
+planner::FlightScoring withSetup(planner::FlightScoring scoring, const PredictionSetup& setup) {
   scoring.model = &setup.model;
   scoring.autopilot = setup.autopilot;
   scoring.settings = setup.settings;
-  // The mission names the autopilot that flies it (QGC's firmwareType).
   scoring.mission.firmware = setup.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
+  return scoring;
+}
+
+PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, const std::string& vehicle_path,
+                        std::vector<std::string>& notes) {
+  const PredictionSetup setup = predictionSetup(*scoring.vehicle, vehicle_path, "", 25.0);
+  scoring = withSetup(scoring, setup);
   std::vector<std::pair<std::string, const planner::PlanCandidate*>> cands = {{"plan", &r.plan}};
   if (r.per_cell && r.per_cell->valid) cands.push_back({"per-cell", &*r.per_cell});
   if (r.best_spiral && r.best_spiral->valid) cands.push_back({"best spiral", &*r.best_spiral});
   cands.push_back({"shortest path", &r.shortest_path});
   auto scores = planner::scoreByFlight(cands, scoring);
   PlanFlight f;
-  for (const auto& s : scores) {
-    f.rows.push_back({s.label, s.closed_form_energy_j, s.prediction.total.energy_j, s.prediction.total.time_s,
-                      s.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].energy_j,
-                      s.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].time_s, s.candidate->coverage_pct});
-  }
+  for (const auto& s : scores) f.rows.push_back(rowOf(s, false));
   f.chosen = planner::cheapestFlight(scores);
   // The ground-station default flown too, as a baseline (never written).
-  for (const auto& g : planner::scoreByFlight({{"ground-station default", &r.ground_station_default}}, scoring)) {
-    f.rows.push_back({g.label, g.closed_form_energy_j, g.prediction.total.energy_j, g.prediction.total.time_s,
-                      g.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].energy_j,
-                      g.prediction.phases[static_cast<int>(mission::FlightPhase::Mission)].time_s, g.candidate->coverage_pct, true});
-  }
+  for (const auto& g : planner::scoreByFlight({{"ground-station default", &r.ground_station_default}}, scoring))
+    f.rows.push_back(rowOf(g, true));
   f.chosen_by_search = r.plan.pattern;
   f.autopilot = setup.autopilot.firmware + " " + setup.autopilot.version + " (" + mission::toString(setup.autopilot.family) +
                 " model" + (setup.autopilot.from_file ? "" : ", firmware defaults") + (setup.calibrated ? ", calibrated" : "") + ")";
@@ -78,8 +76,8 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
 void printFlight(const PlanFlight& f) {
   const auto& p = f.prediction;
   const auto& m = p.phases[static_cast<int>(mission::FlightPhase::Mission)];
-  std::cout << "flown by " << f.autopilot << ": " << kj(p.total.energy_j) << ", " << minSec(p.total.time_s)
-            << " min:s from take-off to landing (survey part " << kj(m.energy_j) << ", " << minSec(m.time_s)
+  std::cout << "flown by " << f.autopilot << ": " << kj(p.total.energy_j) << ", " << report::formatMinSec(p.total.time_s)
+            << " min:s from take-off to landing (survey part " << kj(m.energy_j) << ", " << report::formatMinSec(m.time_s)
             << "); `wattswath predict` on mission.plan gives these numbers\n";
   if (f.max_chord_offset_m > 0.0) {
     char buf[160];

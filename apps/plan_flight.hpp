@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "prediction_setup.hpp"
 #include "wattswath/planner/coverage.hpp"
 #include "wattswath/planner/flight_score.hpp"
 
@@ -35,6 +36,10 @@ struct PlanFlight {
   mission::MissionPrediction prediction;  ///< its flight
   std::string autopilot;               ///< "ArduCopter 4.5 (arducopter-scurve model, ...)"
 };
+
+/// `scoring` with the model, autopilot and settings of `setup`, and the mission naming that
+/// autopilot (QGC's firmwareType). `setup` must outlive the result (its model is referenced).
+planner::FlightScoring withSetup(planner::FlightScoring scoring, const PredictionSetup& setup);
 
 /// Flies the plan and its alternatives (per-cell plan, best spiral, shortest path) and makes
 /// r.plan the cheapest flight among those covering at least the search's choice (less 0.1 %) (a note says so when

@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 
 #include "cli.hpp"
-#include "prediction_setup.hpp"
+#include "plan_flight.hpp"
+#include "wattswath/report/svg.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/planned_mission.hpp"
 #include "wattswath/planner/battery_use.hpp"
@@ -32,8 +32,7 @@ std::vector<FlownSortie> flySorties(const pl::SortieSplit& split, const pl::Flig
   fits = true;
   for (const auto& so : split.sorties) {
     FlownSortie f{so, pl::missionFromPlan(so.flown, *s.problem, *s.frame, s.home_altitude_amsl_m, s.mission), {}};
-    const auto m = mission::parseQgcPlan(mission::toQgcPlan(f.mission.mission), "sortie mission.plan");
-    f.prediction = mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+    f.prediction = pl::flyWrittenMission(f.mission, s, "sortie mission.plan");
     fits = fits && f.prediction.battery.fits;
     out.push_back(std::move(f));
   }
@@ -116,10 +115,7 @@ nlohmann::json planSorties(const pl::PlanCandidate& plan, double single_flight_j
   const auto& v = *scoring.vehicle;
   if (!v.battery) throw std::runtime_error(vehicle_path + ": --sorties needs the vehicle's battery (a 'battery' object)");
   const PredictionSetup setup = predictionSetup(v, vehicle_path, "", req.reserve_pct);
-  scoring.model = &setup.model;
-  scoring.autopilot = setup.autopilot;
-  scoring.settings = setup.settings;
-  scoring.mission.firmware = setup.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
+  scoring = withSetup(scoring, setup);
   pl::RouteScorer scorer(setup.model, pl::SpeedSettings::fromVehicle(v));
   const double usable = pl::predictBatteryUse(plan.flown, *v.battery).usable_energy_j;
   pl::SortieSettings ss;
@@ -163,10 +159,9 @@ void printSorties(const nlohmann::json& j) {
               j["count"].get<int>(), e / 1000.0, one / 1000.0, 100.0 * (e / one - 1.0), j["naive"]["count"].get<int>(), en / 1000.0,
               j["naive"]["all_fit"].get<bool>() ? "" : " (not all keep the reserve)");
   for (const auto& s : j["sorties"]) {
-    const long t = std::lround(s["time_s"].get<double>());
-    std::printf("  %s: sweep pieces %d-%d, %.1f kJ, %ld:%02ld min:s, lands with %.0f %% of the usable charge, %d photos\n",
+    std::printf("  %s: sweep pieces %d-%d, %.1f kJ, %s min:s, lands with %.0f %% of the usable charge, %d photos\n",
                 s["file"].get<std::string>().c_str(), s["first_sweep"].get<int>(), s["last_sweep"].get<int>(),
-                s["energy_j"].get<double>() / 1000.0, t / 60, t % 60, s["usable_left_pct"].get<double>(), s["photos"].get<int>());
+                s["energy_j"].get<double>() / 1000.0, report::formatMinSec(s["time_s"].get<double>()).c_str(), s["usable_left_pct"].get<double>(), s["photos"].get<int>());
   }
 }
 

@@ -324,11 +324,12 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   std::vector<double> x0;
   for (const auto& fp : free) x0.push_back(std::clamp((autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo), 0.0, 1.0));
   x0.push_back(0.05);
+  const mission::Airframe airframe = mission::airframeOfVehicle(v, v.name);  // once, not per evaluation
   auto cost = [&](const std::vector<double>& x, int variant) {
     mission::AutopilotConfig ap = autopilot;
     mission::FlightSettings fs;
     fs.dt = s.sim_dt;
-    fs.airframe = mission::airframeOfVehicle(v, v.name);
+    fs.airframe = airframe;
     fs.stop_at_waypoints = variant & 1;
     fs.speed_change_late = variant & 2;
     apply(x, ap, fs.takeoff_delay_s);

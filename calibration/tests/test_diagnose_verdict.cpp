@@ -54,6 +54,13 @@ bool firstSignalIs(const Diagnosis& d, const std::string& signal) {
   return g.signal == signal || std::find(g.same_as.begin(), g.same_as.end(), signal) != g.same_as.end();
 }
 
+// An effect outside the candidates: nothing found, "unexplained", `signal` the first signature.
+void expectUnexplainedFollowing(const Diagnosis& d, const std::string& signal) {
+  EXPECT_EQ(d.verdict, "unexplained") << describe(d);
+  EXPECT_TRUE(d.found.empty()) << describe(d);
+  EXPECT_TRUE(firstSignalIs(d, signal)) << describe(d);
+}
+
 void expectFound(const Diagnosis& d, const std::vector<std::string>& names) {
   EXPECT_EQ(d.verdict, "missing_effect") << describe(d);
   EXPECT_EQ(foundNames(d), names) << describe(d);
@@ -111,31 +118,23 @@ TEST(Verdict, PayloadFoundWithThreeFiveAndTenFolds) {
 
 TEST(Verdict, SensorLagUnexplainedFollowingPowerRate) {
   const auto d = diagnoseLog(test::simulateLog(buildModel(test::iris(), kPaper), kSeed, {"sensor_lag", 1.0}));
-  EXPECT_EQ(d.verdict, "unexplained") << describe(d);
-  EXPECT_TRUE(d.found.empty()) << describe(d);
-  EXPECT_TRUE(firstSignalIs(d, "power_rate")) << describe(d);
+  expectUnexplainedFollowing(d, "power_rate");
 }
 
 TEST(Verdict, GroundEffectUnexplainedFollowingHeight) {
   const auto d = diagnoseLog(test::simulateLog(buildModel(test::iris(), kPaper), kSeed, {"ground_effect", 0.15}));
-  EXPECT_EQ(d.verdict, "unexplained") << describe(d);
-  EXPECT_TRUE(d.found.empty()) << describe(d);
-  EXPECT_TRUE(firstSignalIs(d, "height")) << describe(d);
+  expectUnexplainedFollowing(d, "height");
 }
 
 TEST(Verdict, MotorHeatingUnexplainedFollowingTime) {
   const auto d = diagnoseLog(test::simulateLog(buildModel(test::iris(), kPaper), kSeed, {"motor_heating", 0.06}));
-  EXPECT_EQ(d.verdict, "unexplained") << describe(d);
-  EXPECT_TRUE(d.found.empty()) << describe(d);
-  EXPECT_TRUE(firstSignalIs(d, "time")) << describe(d);
+  expectUnexplainedFollowing(d, "time");
 }
 
 TEST(Verdict, AirDensityUnexplainedFollowingAltitude) {
   const auto d = diagnoseLog(test::simulateLog(buildModel(test::iris(), kPaper), kSeed, {"air_density", 1.0},
                                                test::surveyPath(15.0, 400.0)));
-  EXPECT_EQ(d.verdict, "unexplained") << describe(d);
-  EXPECT_TRUE(d.found.empty()) << describe(d);
-  EXPECT_TRUE(firstSignalIs(d, "altitude")) << describe(d);
+  expectUnexplainedFollowing(d, "altitude");
 }
 
 TEST(Verdict, BatteryResistanceUnexplained) {

@@ -42,7 +42,7 @@ Series velocity(const dataflash::Log& L) {
   return {};
 }
 
-// Linear interpolation of (tx, x) at t (x unwrapped when `angle`).
+// Linear interpolation of (tx, x) at t, held at the ends (tx increasing).
 double interp(const std::vector<double>& tx, const std::vector<double>& x, double t) {
   const auto it = std::lower_bound(tx.begin(), tx.end(), t);
   if (it == tx.begin()) return x.front();

@@ -10,6 +10,12 @@
 
 namespace wattswath::planner {
 
+mission::MissionPrediction flyWrittenMission(const PlanMission& written, const FlightScoring& s, const std::string& source) {
+  // The very text `wattswath predict mission.plan` reads.
+  const mission::Mission m = mission::parseQgcPlan(mission::toQgcPlan(written.mission), source);
+  return mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+}
+
 std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,
                                        const FlightScoring& s) {
   if (!s.problem || !s.frame || !s.vehicle || !s.model) throw std::invalid_argument("scoreByFlight: FlightScoring is incomplete");
@@ -30,9 +36,7 @@ std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, 
       f.mission = missionFromPlan(c->flown, *s.problem, *s.frame, s.home_altitude_amsl_m, mo);
       // A chord that comes within the no-fly margin is not offered (the waypoints along the arc are).
       if (!arc_waypoints && has_arcs && f.mission.legs_within_margin > 0) continue;
-      // The very text `wattswath predict mission.plan` reads.
-      const mission::Mission m = mission::parseQgcPlan(mission::toQgcPlan(f.mission.mission), label + " mission.plan");
-      f.prediction = mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+      f.prediction = flyWrittenMission(f.mission, s, label + " mission.plan");
       out.push_back(std::move(f));
     }
   }

@@ -40,6 +40,10 @@ struct FlightScore {
   mission::MissionPrediction prediction;  ///< its flight, take-off to landing
 };
 
+/// `written` flown by the autopilot model exactly as `predict` flies the `.plan` text of it
+/// (`source` names that text in errors).
+mission::MissionPrediction flyWrittenMission(const PlanMission& written, const FlightScoring& scoring, const std::string& source);
+
 /// Flies each labelled candidate's mission (in order); a candidate with arcs twice: its arcs as
 /// chords flown by the autopilot's own cornering (unless a chord comes within the no-fly margin)
 /// and as waypoints along them (MissionOptions::arc_waypoints). Throws what missionFromPlan,
