@@ -350,6 +350,15 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
            std::string("derived ") + (x.velocity.allFinite() ? "acceleration" : "velocity") + " at time " + fmt(x.t) +
                " s is not finite, expected finite derivatives (check for huge positions or near-zero time steps)");
     }
+    // A derivative beyond the bound would be written back as vx_mps... and not read back.
+    const bool vel_big = x.velocity.cwiseAbs().maxCoeff() > tol::kLogMaxMagnitude;
+    if (vel_big || x.acceleration.cwiseAbs().maxCoeff() > tol::kLogMaxMagnitude) {
+      const Eigen::Vector3d& v = vel_big ? x.velocity : x.acceleration;
+      fail(source, rows[i].first,
+           std::string("derived ") + (vel_big ? "velocity " : "acceleration ") + fmt(v.cwiseAbs().maxCoeff()) +
+               (vel_big ? " m/s" : " m/s^2") + " at time " + fmt(x.t) + " s is too large, expected a magnitude of at most " +
+               fmt(tol::kLogMaxMagnitude) + " (check for position jumps or near-zero time steps)");
+    }
   }
   return log;
 }
