@@ -27,7 +27,7 @@ const std::map<std::string, double> kArduCopter4 = {
 const std::map<std::string, double> kArduCopter3 = {
     {"WPNAV_SPEED", 500},   {"WPNAV_SPEED_UP", 250}, {"WPNAV_SPEED_DN", 150},  {"WPNAV_ACCEL", 100},
     {"WPNAV_ACCEL_Z", 100}, {"WPNAV_RADIUS", 200},   {"POS_XY_P", 1.0},        {"POS_Z_P", 1.0},
-    {"VEL_XY_P", 1.0},      {"VEL_XY_I", 0.5},       {"ANGLE_MAX", 4500},      {"RTL_ALT", 1500},
+    {"VEL_XY_P", 1.0},      {"VEL_XY_I", 0.5},       {"VEL_XY_IMAX", 1000},    {"ANGLE_MAX", 4500},      {"RTL_ALT", 1500},
     {"RTL_ALT_FINAL", 0},   {"RTL_CLIMB_MIN", 0},    {"RTL_LOIT_TIME", 5000},  {"LAND_SPEED", 50},
     {"LAND_ALT_LOW", 1000}, {"MOT_SPOOL_TIME", 0.5}, {"ATC_SLEW_YAW", 6000},   {"WP_YAW_BEHAVIOR", 2},
 };

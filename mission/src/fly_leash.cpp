@@ -8,6 +8,8 @@
 // (docs/autopilots.md, section "ArduCopter before 4.1").
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "flight_internal.hpp"
 
@@ -21,9 +23,18 @@ using detail::sqrtController;
 constexpr double kAttitudeLag = 0.15;  // [s] attitude response time constant (docs/autopilots.md)
 
 struct Params {
-  double speed, speed_up, speed_dn, accel, accel_z, radius, pos_xy_p, pos_z_p, vel_xy_p, accel_max;
+  double speed, speed_up, speed_dn, accel, accel_z, radius, pos_xy_p, pos_z_p, vel_xy_p, vel_xy_i, vel_xy_imax, accel_max;
   double rtl_alt, rtl_alt_final, rtl_climb_min, rtl_loiter_s, land_speed, land_alt_low, spool_s;
+  bool linear_slack;  // before 3.4: the leash slack shrinks linearly with the cross-track error
 };
+
+// True for ArduCopter versions before 3.4 ("3.2", "3.3.3"), whose advance_wp_target_along_track
+// scales the leash slack linearly; 3.4 to 4.0 (and an unspecified "3.x") use the Pythagorean form.
+bool linearSlackVersion(const std::string& version) {
+  int major = 0, minor = -1;
+  if (std::sscanf(version.c_str(), "%d.%d", &major, &minor) < 2) return false;
+  return major < 3 || (major == 3 && minor < 4);
+}
 
 Params readParams(const AutopilotConfig& ap) {
   using detail::checkParameter;
@@ -37,6 +48,8 @@ Params readParams(const AutopilotConfig& ap) {
   p.pos_xy_p = checkParameter("POS_XY_P", ap.get("POS_XY_P"), 0.1, 10, "1/s");
   p.pos_z_p = checkParameter("POS_Z_P", ap.get("POS_Z_P"), 0.1, 10, "1/s");
   p.vel_xy_p = checkParameter("VEL_XY_P", ap.get("VEL_XY_P"), 0.1, 10, "1/s");
+  p.vel_xy_i = checkParameter("VEL_XY_I", ap.get("VEL_XY_I"), 0, 10, "1/s/s");
+  p.vel_xy_imax = checkParameter("VEL_XY_IMAX", ap.get("VEL_XY_IMAX"), 0, 4500, "cm/s/s") / 100.0;
   const double angle_max = checkParameter("ANGLE_MAX", ap.get("ANGLE_MAX"), 1000, 8000, "cdeg") / 100.0;
   p.accel_max = std::min(9.8, kGravity * std::tan(angle_max * M_PI / 180.0));
   p.rtl_alt = checkParameter("RTL_ALT", ap.get("RTL_ALT"), 0, 300000, "cm") / 100.0;
@@ -46,6 +59,7 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_speed = checkParameter("LAND_SPEED", ap.get("LAND_SPEED"), 30, 200, "cm/s") / 100.0;
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
+  p.linear_slack = linearSlackVersion(ap.version);
   return p;
 }
 
@@ -59,6 +73,7 @@ double leashLength(double speed, double accel, double kp) {
 struct Vehicle {
   Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
   Eigen::Vector2d v_cmd_prev = Eigen::Vector2d::Zero();  // the previous step's velocity command (feed-forward)
+  Eigen::Vector2d integ = Eigen::Vector2d::Zero();       // [m/s^2] the velocity loop's integrator (VEL_XY_I)
 };
 
 struct Leg {
@@ -68,7 +83,10 @@ struct Leg {
   Eigen::Vector3d carrot() const { return origin + u * desired; }
 };
 
-Leg startLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool fast, const Vehicle& veh, const Params& P) {
+// `leash_speed` [m/s]: the speed of the position controller's horizontal leash when the leg starts
+// (see Flyer::leash_speed).
+Leg startLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, double leash_speed, bool fast,
+             const Vehicle& veh, const Params& P) {
   Leg g;
   g.origin = from;
   g.dest = to;
@@ -79,7 +97,7 @@ Leg startLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double spee
   if (g.length <= 1e-9) return g;
   g.track_speed = detail::kinematicLimit(g.u, speed, P.speed_up, P.speed_dn);
   g.track_accel = detail::kinematicLimit(g.u, P.accel, P.accel_z, P.accel_z);
-  g.leash = std::min(detail::kinematicLimit(g.u, leashLength(speed, P.accel, P.pos_xy_p), 1e300, 1e300),
+  g.leash = std::min(detail::kinematicLimit(g.u, leashLength(leash_speed, P.accel, P.pos_xy_p), 1e300, 1e300),
                      detail::kinematicLimit(g.u, 1e300, leashLength(P.speed_up, P.accel_z, P.pos_z_p),
                                             leashLength(P.speed_dn, P.accel_z, P.pos_z_p)));
   g.slow_down = g.track_speed * g.track_speed / (4.0 * g.track_accel);
@@ -88,12 +106,21 @@ Leg startLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double spee
 }
 
 // Moves the carrot one step (AC_WPNav::advance_wp_target_along_track of 3.x).
-void advanceCarrot(Leg& g, const Vehicle& veh, const Params& P, double dt) {
+void advanceCarrot(Leg& g, const Vehicle& veh, double speed, const Params& P, double dt) {
   if (g.length <= 1e-9) return;
   const Eigen::Vector3d rel = veh.p - g.origin;
   const double covered = rel.dot(g.u);
-  const double cross = (rel - g.u * covered).norm();
-  const double slack = g.leash > cross ? std::sqrt(g.leash * g.leash - cross * cross) : 0.0;
+  // How far ahead of the vehicle's along-track position the carrot may run: the cross-track error
+  // as a fraction of the position controller's own leashes (horizontal, and up or down) scales
+  // the track leash; before 3.4 the slack is the track leash minus that scaled error, from 3.4 on
+  // the other side of the right triangle whose hypotenuse is the track leash. 0 beyond the leash.
+  const Eigen::Vector3d err = rel - g.u * covered;
+  const double leash_xy = leashLength(speed, P.accel, P.pos_xy_p);
+  const double leash_z = err.z() >= 0.0 ? leashLength(P.speed_up, P.accel_z, P.pos_z_p) : leashLength(P.speed_dn, P.accel_z, P.pos_z_p);
+  const double scaled_err = std::max(g.leash * err.head<2>().norm() / leash_xy, g.leash * std::abs(err.z()) / leash_z);
+  const double slack = scaled_err >= g.leash ? 0.0
+                       : P.linear_slack ? g.leash - scaled_err
+                                        : std::sqrt(g.leash * g.leash - scaled_err * scaled_err);
   const double max_desired = covered + slack;
   const bool at_leash = g.desired > max_desired;
   const double v_along = veh.v.dot(g.u), v_lin = g.track_accel / P.pos_xy_p;
@@ -118,9 +145,10 @@ void advanceCarrot(Leg& g, const Vehicle& veh, const Params& P, double dt) {
   g.desired = std::clamp(g.desired, 0.0, g.length + (g.fast ? 2.0 : 0.0));
 }
 
-// The vehicle chases `carrot` one step: square-root position controller, velocity loop, lean
-// limit, attitude lag; vertical: square-root controller to a climb or descent speed.
-void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, double dt) {
+// The vehicle chases `carrot` one step: square-root position controller, PI velocity loop
+// (AC_PosControl::rate_to_accel_xy of 3.x: the integrator holds at the lean limit), lean limit,
+// attitude lag, the airframe's drag; vertical: square-root controller to a climb or descent speed.
+void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, const Airframe& af, double dt) {
   Eigen::Vector2d err = (carrot - veh.p).head<2>();
   const double leash = leashLength(speed, P.accel, P.pos_xy_p);
   if (err.norm() > leash) err *= leash / err.norm();
@@ -132,26 +160,48 @@ void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Para
   Eigen::Vector2d ff = (v_cmd - veh.v_cmd_prev) / dt;
   if (ff.norm() > P.accel_max) ff *= P.accel_max / ff.norm();
   veh.v_cmd_prev = v_cmd;
-  Eigen::Vector2d a_cmd = ff + P.vel_xy_p * (v_cmd - veh.v.head<2>());
-  if (a_cmd.norm() > P.accel_max) a_cmd *= P.accel_max / a_cmd.norm();
+  const Eigen::Vector2d verr = v_cmd - veh.v.head<2>();
+  Eigen::Vector2d a_cmd = ff + P.vel_xy_p * verr + veh.integ;
+  if (a_cmd.norm() > P.accel_max) {
+    a_cmd *= P.accel_max / a_cmd.norm();
+  } else {
+    veh.integ += P.vel_xy_i * verr * dt;
+    if (veh.integ.norm() > P.vel_xy_imax) veh.integ *= P.vel_xy_imax / veh.integ.norm();
+  }
   veh.a.head<2>() += (a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
   const double vz_cmd = std::clamp(sqrtController(carrot.z() - veh.p.z(), P.pos_z_p, P.accel_z), -P.speed_dn, P.speed_up);
   veh.a.z() = std::clamp((vz_cmd - veh.v.z()) / std::max(dt, 0.2), -P.accel_z, P.accel_z);
-  veh.v += veh.a * dt;
+  const Eigen::Vector2d vh = veh.v.head<2>();
+  const double v = vh.norm();
+  Eigen::Vector2d drag = Eigen::Vector2d::Zero();
+  if (v > 1e-9) drag = -vh / v * (af.drag_linear_per_s * v + af.drag_quadratic_per_m * v * v);
+  veh.v.head<2>() += (veh.a.head<2>() + drag) * dt;
+  veh.v.z() += veh.a.z() * dt;
   veh.p += veh.v * dt;
 }
 
 struct Flyer {
   Recorder& rec;
   const Params& P;
+  const Airframe& af;
   Vehicle veh;
+  // [m/s] The speed the position controller's leash was last computed with. A DO_CHANGE_SPEED runs
+  // in AP_Mission's advance loop just before the next waypoint starts: AC_PosControl::set_speed_xy
+  // only flags its leash for recalculation at its next update, while AC_WPNav's
+  // set_wp_origin_and_destination computes the track leash at once from that stale leash and
+  // clears its own recalculation flag. The leg is therefore flown with the previous speed's leash:
+  // an increase takes effect one waypoint late (the carrot cannot run further ahead than the old
+  // leash, and the square-root controller turns that distance into the old speed); a decrease at
+  // once (AC_PosControl caps the velocity at the new speed).
+  double leash_speed;
 
   // Flies one leg to `to`; returns when the autopilot declares it reached.
   void leg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool fast, FlightPhase phase, int step) {
-    Leg g = startLeg(from, to, speed, fast, veh, P);
+    Leg g = startLeg(from, to, speed, leash_speed, fast, veh, P);
+    leash_speed = speed;  // recalculated at the position controller's first update on this leg
     while (true) {
-      advanceCarrot(g, veh, P, rec.dt());
-      chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, rec.dt());
+      advanceCarrot(g, veh, speed, P, rec.dt());
+      chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, af, rec.dt());
       rec.tick(veh.p, veh.v, phase, step);
       const bool carrot_there = g.length <= 1e-9 || g.desired >= g.length;  // a degenerate leg has no carrot to move
       if (carrot_there && (fast || (veh.p - to).norm() <= P.radius)) return;
@@ -161,7 +211,7 @@ struct Flyer {
   void hold(const Eigen::Vector3d& at, double seconds, double speed, FlightPhase phase, int step) {
     const long n = std::lround(seconds / rec.dt());
     for (long i = 0; i < n; ++i) {
-      chase(veh, at, speed, P, rec.dt());
+      chase(veh, at, speed, P, af, rec.dt());
       rec.tick(veh.p, veh.v, phase, step);
     }
   }
@@ -179,7 +229,7 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
   const Params P = readParams(ap);
   Recorder rec(s, steps.size());
   rec.startOnGround(P.spool_s);
-  Flyer f{rec, P, {}};
+  Flyer f{rec, P, s.airframe, {}, P.speed};  // wp_and_spline_init sets the leash from WPNAV_SPEED
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  // where the carrot is
   double speed = P.speed;  // DO_CHANGE_SPEED overwrites WPNAV_SPEED in memory (RTL inherits it)
   for (std::size_t k = 0; k < steps.size(); ++k) {

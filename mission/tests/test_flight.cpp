@@ -214,6 +214,32 @@ TEST(ArduCopterLeash, StopWaypointIsReachedWithinTheRadiusAndHoldsStill) {
   }
 }
 
+double maxSpeedBetween(const FlownMission& f, double t0, double t1) {
+  double v = 0.0;
+  for (const auto& s : f.samples)
+    if (s.t >= t0 && s.t <= t1) v = std::max(v, s.velocity.head<2>().norm());
+  return v;
+}
+
+TEST(ArduCopterLeash, SpeedIncreaseTakesEffectOneWaypointLateADecreaseAtOnce) {
+  // AC_WPNav 3.x computes a leg's track leash from the position controller's leash before that
+  // controller has applied the DO_CHANGE_SPEED run just before the leg: the carrot cannot run
+  // further ahead than the old speed's leash, which the square-root controller turns into the old
+  // speed; a decrease is capped by the position controller at once.
+  const AutopilotConfig ac3 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.3"})", "test");
+  auto steps = sequenceMission(localMission({{200, 0, 10}, {400, 0, 10}, {600, 0, 10}, {800, 0, 10}}));
+  ASSERT_EQ(steps.size(), 6u);
+  steps[1].speed_xy = 3.0;  // 3 m/s from the take-off point
+  steps[2].speed_xy = 8.0;  // raised before the second leg: flown at 3 m/s
+  steps[3].speed_xy = 8.0;  // the third leg flies 8 m/s
+  steps[4].speed_xy = 2.0;  // lowered before the fourth leg: 2 m/s at once
+  const FlownMission f = flyMission(steps, ac3);
+  const auto& e = f.events;
+  EXPECT_LT(maxSpeedBetween(f, e[1].reached_s, e[2].reached_s), 3.3);
+  EXPECT_GT(maxSpeedBetween(f, e[2].reached_s, e[3].reached_s), 7.5);
+  EXPECT_LT(maxSpeedBetween(f, e[3].reached_s + 20.0, e[4].reached_s), 2.1);
+}
+
 TEST(ArduCopterLeash, ReturnFromAboveRtlAltFliesHomeAndLands) {
   // Above RTL_ALT (15 m) the RTL climb leg is (nearly) zero long; it used to wait for a carrot
   // that never moves until the 6 h limit.
