@@ -136,6 +136,38 @@ std::vector<double> residualOf(const EnergyModel& m, const std::vector<PreparedL
   return r;
 }
 
+// The fitted model's sensitivity to each of its coefficients over every log, concatenated
+// [W per coefficient unit]: forward differences of 1e-4 of the value (or of 1e-6 near 0), stepped
+// back when the step would leave the coefficient's bounds.
+std::vector<std::vector<double>> modelColumns(const EnergyModel& m, const std::vector<PreparedLog>& logs) {
+  std::vector<double> base;
+  for (const auto& l : logs) {
+    const auto p = modelPower(m, l);
+    base.insert(base.end(), p.begin(), p.end());
+  }
+  std::vector<std::vector<double>> cols;
+  for (const auto& name : m.effectNames()) {
+    const auto& coeffs = m.effect(name).coefficients();
+    for (size_t k = 0; k < coeffs.size(); ++k) {
+      EnergyModel moved = m;
+      std::vector<double> v;
+      for (const auto& c : coeffs) v.push_back(c.value);
+      double h = std::max(1e-4 * std::abs(v[k]), 1e-6);
+      if (v[k] + h > coeffs[k].upper) h = -h;
+      v[k] += h;
+      moved.effect(name).setCoefficientValues(v);
+      std::vector<double> col;
+      for (const auto& l : logs) {
+        const auto p = modelPower(moved, l);
+        col.insert(col.end(), p.begin(), p.end());
+      }
+      for (size_t i = 0; i < col.size(); ++i) col[i] = (col[i] - base[i]) / h;
+      cols.push_back(std::move(col));
+    }
+  }
+  return cols;
+}
+
 double rmsOf(const std::vector<double>& r) {
   double s = 0.0;
   for (double x : r) s += x * x;
@@ -205,7 +237,7 @@ Diagnosis diagnose(const EnergyModel& model, const Vehicle& v, const std::vector
   d.staircase.insert(d.staircase.begin(), {physics, refit});
   d.final_heldout = fin.heldout;
   d.final_rmse_w = rmsOf(residualOf(fin.full.model, logs, &d.final_power));
-  d.signatures = residualSignatures(logs, d.final_power, s.signatures);
+  d.signatures = residualSignatures(logs, d.final_power, s.signatures, modelColumns(fin.full.model, logs));
   conclude(d);
   return d;
 }

@@ -7,6 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include <Eigen/Dense>
+
 #include "time_series.hpp"
 
 namespace wattswath::calibration {
@@ -113,13 +115,30 @@ double linearShare(const Signal& s, const std::vector<double>& r, double& slope,
   return std::abs(rcs) < 0.999 ? std::max(0.0, (rc * rc + rs * rs - 2 * rc * rs * rcs) / (1 - rcs * rcs)) : rc * rc;
 }
 
-ResidualSignature test(const Signal& s, const std::vector<double>& r, const SignatureSettings& set) {
+// The columns a signal is cleared of: a constant and the model's sensitivities, with their QR.
+struct Basis {
+  Eigen::MatrixXd X;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
+};
+
+// `x` minus its least-squares fit by the columns of `b`.
+std::vector<double> partialOut(const Basis& b, const std::vector<double>& x) {
+  const Eigen::Map<const Eigen::VectorXd> v(x.data(), static_cast<Eigen::Index>(x.size()));
+  const Eigen::VectorXd rest = v - b.X * b.qr.solve(v);
+  return std::vector<double>(rest.data(), rest.data() + rest.size());
+}
+
+// `partial`: the signal cleared of the model's columns (added-variable test), or null.
+ResidualSignature test(const Signal& s, const std::vector<double>& r, const SignatureSettings& set,
+                       const Signal* partial = nullptr, const std::vector<double>* r_partial = nullptr) {
   ResidualSignature g;
   g.signal = s.name;
   g.unit = s.unit;
-  g.effective_samples = detail::pairEffectiveSize(s.x, r);
+  const Signal& ls = partial ? *partial : s;
+  const std::vector<double>& lr = r_partial ? *r_partial : r;
+  g.effective_samples = detail::pairEffectiveSize(ls.x, lr);
   int dof_lin = 1, dof_bin = 1;
-  const double lin = linearShare(s, r, g.slope, dof_lin);
+  const double lin = linearShare(ls, lr, g.slope, dof_lin);
   const double bin = binnedShare(s.x, r, set.bins, g.bins, dof_bin);
   const double n = g.effective_samples;
   const double lin_strength = lin - dof_lin / n, bin_strength = bin - dof_bin / n;
@@ -161,7 +180,8 @@ const std::vector<std::string>& signalNames() {
 
 std::vector<ResidualSignature> residualSignatures(const std::vector<PreparedLog>& logs,
                                                   const std::vector<std::vector<double>>& modelled,
-                                                  const SignatureSettings& set) {
+                                                  const SignatureSettings& set,
+                                                  const std::vector<std::vector<double>>& model_columns) {
   validate(set);
   if (logs.size() != modelled.size()) throw std::invalid_argument("residualSignatures: one modelled series per log expected");
   static const char* units[] = {"s", "-", "A^2", "W^2", "W/s", "m", "m", "m/s", "m^2/s^2", "m/s^2", "m/s", "rad/s", "rad"};
@@ -174,12 +194,34 @@ std::vector<ResidualSignature> residualSignatures(const std::vector<PreparedLog>
     appendSignals(logs[j], modelled[j], sig);
     for (size_t i = 0; i < logs[j].states.size(); ++i) r.push_back(logs[j].measured[i] - modelled[j][i]);
   }
+  // The added-variable basis: a constant and the model's sensitivity columns (those that vary).
+  std::vector<const std::vector<double>*> cols;
+  for (const auto& c : model_columns) {
+    if (c.size() != r.size()) throw std::invalid_argument("residualSignatures: a model column has the wrong length");
+    if (std::all_of(c.begin(), c.end(), [](double v) { return std::isfinite(v); })) cols.push_back(&c);
+  }
+  const bool partial = !cols.empty() && r.size() > 10 * (cols.size() + 1);
+  Basis basis;
+  std::vector<double> r_partial;
+  if (partial) {
+    basis.X.resize(static_cast<Eigen::Index>(r.size()), static_cast<Eigen::Index>(cols.size() + 1));
+    basis.X.col(0).setOnes();
+    for (size_t k = 0; k < cols.size(); ++k)
+      basis.X.col(static_cast<Eigen::Index>(k + 1)) = Eigen::Map<const Eigen::VectorXd>(cols[k]->data(), basis.X.rows());
+    basis.qr.compute(basis.X);
+    r_partial = partialOut(basis, r);
+  }
   std::vector<ResidualSignature> out;
   std::vector<const Signal*> used;
   for (const auto& s : sig) {
     const bool usable = std::all_of(s.x.begin(), s.x.end(), [](double v) { return std::isfinite(v); });
     if (!usable || r.size() < 10) continue;  // e.g. current squared without current or voltage
-    out.push_back(test(s, r, set));
+    if (partial && s.name != "heading") {  // heading's cos/sin test keeps the raw signal
+      const Signal ps{s.name, s.unit, partialOut(basis, s.x)};
+      out.push_back(test(s, r, set, &ps, &r_partial));
+    } else {
+      out.push_back(test(s, r, set));
+    }
     used.push_back(&s);
   }
   std::vector<size_t> order(out.size());

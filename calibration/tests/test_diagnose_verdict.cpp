@@ -143,9 +143,16 @@ TEST(Verdict, BatteryResistanceUnexplained) {
   EXPECT_EQ(d.verdict, "unexplained") << describe(d);
   EXPECT_EQ(foundNames(d), std::vector<std::string>{"climb"}) << describe(d);
   ASSERT_FALSE(d.signatures.empty());
-  // Known miss (docs/validation.md): with the voltage sagging 12.4 -> 11.2 V over the flight, I^2 R
-  // grows mostly with time in this flight, and current squared is not the first signal.
-  EXPECT_TRUE(firstSignalIs(d, "time") || firstSignalIs(d, "current_squared")) << describe(d);
+  // With the voltage sagging 12.4 -> 11.2 V, I^2 R also grows with time and state of charge; the
+  // added-variable test (signals cleared of what the fitted hover and climb terms absorb) lifts
+  // current squared from 4th (1.5 %) to level with them: first here (6.5 % vs 6.4 %), tied on the
+  // tuning seed. The data cannot rank the two further (docs/validation.md), so the test asks for
+  // current squared first or within 10 % of the first's strength.
+  ASSERT_GE(d.signatures.size(), 2u);
+  const auto& top = d.signatures[0];
+  const bool tied = d.signatures[1].signal == "current_squared" && d.signatures[1].strength >= 0.9 * top.strength;
+  EXPECT_TRUE(firstSignalIs(d, "current_squared") || tied) << describe(d);
+  EXPECT_TRUE(top.significant) << describe(d);
 }
 
 TEST(Verdict, SettingsOutOfRangeNamed) {

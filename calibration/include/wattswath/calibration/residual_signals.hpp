@@ -52,9 +52,16 @@ struct ResidualSignature {
 /// the logs allow (current squared, the modelled power over the logged voltage squared, needs a
 /// logged voltage), strongest significant
 /// first, signals that cannot be told apart merged into the stronger one's `same_as`.
+/// `model_columns` (optional): the fitted model's sensitivity to each of its coefficients [W per
+/// coefficient unit], one column over all samples of all logs in order. When given, each signal's
+/// straight-line test is an added-variable test: the signal and the residual are first cleared of
+/// what a constant and those columns explain, so a signal scores only what refitting the model
+/// with it added could explain (a climb effect that absorbed part of I^2 R no longer hands the rest
+/// to the signal that tracks it only roughly, such as time).
 std::vector<ResidualSignature> residualSignatures(const std::vector<PreparedLog>& logs,
                                                   const std::vector<std::vector<double>>& modelled,
-                                                  const SignatureSettings& s = {});
+                                                  const SignatureSettings& s = {},
+                                                  const std::vector<std::vector<double>>& model_columns = {});
 
 /// Names of every signal residualSignatures tests, in its order.
 const std::vector<std::string>& signalNames();
