@@ -198,7 +198,7 @@ void registerDiagnose(CLI::App& app) {
   cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable; 2+ logs: leave-one-flight-out)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--folds", o->folds, "Contiguous time blocks held out in turn when only one log is given")
+  cmd->add_option("--folds", o->folds, "Folds of contiguous time blocks held out in turn when only one log is given (2: alternate quarters, so each training half spans the flight)")
       ->check(CLI::Range(2, 10))
       ->capture_default_str();
   cmd->add_option("--p-value", o->p_value,

@@ -25,14 +25,19 @@ Folds makeFolds(const std::vector<PreparedLog>& logs, const DiagnoseSettings& s)
   }
   // Contiguous blocks: a held-out block is predicted from the flight before and after it, so an
   // effect that switches at a time (a payload release) is estimated on the training part.
+  // With 2 folds each held-out half would hide from its training half whatever happens in it: the
+  // log is cut into 4 quarters instead and each fold holds out two that are not adjacent (1 and 3,
+  // 2 and 4), so each training half spans the whole flight.
   const PreparedLog& L = logs.at(0);
-  f.label = std::to_string(s.folds) + " contiguous time blocks";
+  const int blocks = s.folds == 2 ? 4 : s.folds;
+  f.label = s.folds == 2 ? "2 folds of alternate quarters (contiguous time blocks)"
+                         : std::to_string(s.folds) + " contiguous time blocks";
   const double t0 = L.states.front().t, t1 = L.states.back().t;
   f.train.assign(s.folds, {SampleSet{&L, {}}});
   f.test.assign(s.folds, {SampleSet{&L, {}}});
   for (size_t i = 0; i < L.states.size(); ++i) {
     const double u = t1 > t0 ? (L.states[i].t - t0) / (t1 - t0) : 0.0;
-    const int fold = std::min(s.folds - 1, static_cast<int>(u * s.folds));
+    const int fold = std::min(blocks - 1, static_cast<int>(u * blocks)) % s.folds;
     for (int k = 0; k < s.folds; ++k) (k == fold ? f.test : f.train)[k][0].index.push_back(static_cast<int>(i));
   }
   return f;
