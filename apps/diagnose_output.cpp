@@ -1,6 +1,7 @@
 // What `diagnose` prints, as JSON and in words (issue 18).
 #include "diagnose_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -87,7 +88,8 @@ json diagnosisJson(const calibration::Diagnosis& d) {
           {"final", fin},
           {"search", d.search},
           {"candidates", cands},
-          {"staircase", stair}};
+          {"staircase", stair},
+          {"final_effects", d.final_effects}};
 }
 
 void printDiagnosis(const calibration::Diagnosis& d) {
@@ -95,6 +97,15 @@ void printDiagnosis(const calibration::Diagnosis& d) {
   for (const auto& f : d.found) {
     std::cout << "found: " << f.effect << " - " << f.summary << " (held-out " << f.rmse_w << " W, likelihood ratio "
               << f.lr_statistic << " > " << f.lr_threshold << ")\n";
+  }
+  if (!d.found.empty()) {
+    std::string set;
+    for (const auto& e : d.final_effects) set += (set.empty() ? "" : ",") + e;
+    std::cout << "to fit the model with what was found: wattswath fit --effects " << set << " ..."
+              << (std::find(d.final_effects.begin(), d.final_effects.end(), "wind") != d.final_effects.end()
+                      ? " (wind replaces parasitic_drag: it is drag at air speed)"
+                      : "")
+              << "\n";
   }
   if (d.verdict == "unexplained") {
     std::cout << "the residual (measured - modelled) carries:\n";

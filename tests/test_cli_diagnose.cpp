@@ -61,3 +61,25 @@ TEST(CliDiagnose, MalformedEffectFileNamesFileFieldAndValue) {
 }
 
 }  // namespace
+
+// diagnose and fit agree on the effect sets (issue 19): a found wind replaces parasitic_drag, and
+// the final set diagnose names is one that fit accepts and fits.
+TEST(CliDiagnose, FoundWindNamesAnEffectSetFitAccepts) {
+  const std::string log = tempPath("wind.csv");
+  Outcome r = runCli({"simulate", "--vehicle", "data/vehicles/iris.json", "--effects", "hover,kinetic,wind", "--set",
+                      "wind.wind_east=4", "--set", "wind.wind_north=-2", "--seed", "3", "--out", log, "--force"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--log", log, "--json"}, 120);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.at("found").size(), 1u) << j.at("conclusion");
+  EXPECT_EQ(j.at("found")[0].at("effect"), "wind");
+  const auto set = j.at("final_effects").get<std::vector<std::string>>();
+  EXPECT_EQ(set, (std::vector<std::string>{"hover", "kinetic", "wind"}));
+  std::string effects;
+  for (const auto& e : set) effects += (effects.empty() ? "" : ",") + e;
+  r = runCli({"fit", "--vehicle", "data/vehicles/iris.json", "--effects", effects, "--log", log, "--json"}, 120);
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--log", log}, 120);
+  EXPECT_NE(r.out.find("wattswath fit --effects hover,kinetic,wind"), std::string::npos) << r.out;
+}

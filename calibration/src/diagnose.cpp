@@ -237,6 +237,7 @@ Diagnosis diagnose(const EnergyModel& model, const Vehicle& v, const std::vector
   d.staircase.insert(d.staircase.begin(), {physics, refit});
   d.final_heldout = fin.heldout;
   d.final_rmse_w = rmsOf(residualOf(fin.full.model, logs, &d.final_power));
+  d.final_effects = fin.full.model.effectNames();
   d.signatures = residualSignatures(logs, d.final_power, s.signatures, modelColumns(fin.full.model, logs));
   conclude(d);
   return d;

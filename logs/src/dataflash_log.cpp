@@ -49,10 +49,13 @@ void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& r
     auto v = L.column(name, "Volt"), i = L.column(name, "Curr");
     std::string unit_note;
     const char vc = L.columnType(name, "Volt");
-    if (vc == 'h' || vc == 'H' || vc == 'i' || vc == 'I') {  // ArduCopter <= 3.3: centivolts, centiamps
+    // Integer columns are centivolts and centiamps: the format of ArduCopter 3.3 and older and of
+    // early 3.4 development builds (the type, not a version, decides: a 3.4-dev log carries it too).
+    if (vc == 'h' || vc == 'H' || vc == 'i' || vc == 'I') {
       for (double& x : v) x /= 100.0;
       for (double& x : i) x /= 100.0;
-      unit_note = "; Volt/Curr integer centi-units divided by 100 (ArduPilot <= 3.3)";
+      unit_note = "; Volt/Curr logged as integers: centi-units, divided by 100 (the format of ArduPilot up to early 3.4 "
+                  "development builds)";
     }
     std::vector<double> inst(t.size(), (name.back() == '2') ? 1.0 : 0.0);
     for (const char* col : {"Inst", "I", "Instance"})

@@ -151,6 +151,9 @@ struct Diagnosis {
   /// strongest significant first
   std::vector<ResidualSignature> signatures;
   std::vector<std::vector<double>> final_power;  ///< [W] per log, the model with the found effects
+  /// The effects of the final model, in order: the set `fit --effects` accepts (wind replaces
+  /// parasitic_drag, being drag at air speed, so the two never appear together)
+  std::vector<std::string> final_effects;
   std::string conclusion;                   ///< the verdict in one or two sentences
 };
 
