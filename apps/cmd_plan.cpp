@@ -10,6 +10,7 @@
 
 #include "cli.hpp"
 #include "plan_flight.hpp"
+#include "plan_limits.hpp"
 #include "plan_sorties.hpp"
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
@@ -47,6 +48,7 @@ struct PlanOpts {
   SortieRequest sorties;
   double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
   bool force = false, json = false, no_report = false, no_spiral = false, gpkg = false;
+  bool allow_large = false;  // --allow-large: plan beyond kMaxSweepLinesWithoutOverride lines
   std::string report_svg;
 };
 
@@ -418,6 +420,9 @@ PlanSetup setUp(const PlanOpts& o) {
   pr.no_fly = s.area.no_fly;
   pr.altitude = o.altitude;
   setSpacing(o, s);
+  const PlanWorkEstimate work = estimatePlanWork(pr.area, pr.spacing);
+  progress(work.summary);
+  checkPlanWork(work, pr.spacing, !o.sorties.sorties.empty(), o.allow_large, o.area);
   if (!o.home.empty()) pr.home = parseHome(o.home, *s.area.frame);
   else if (s.area.home) pr.home = *s.area.home;
   else pr.home = pr.area.outer.front();
@@ -610,6 +615,9 @@ void registerPlanCommand(CLI::App& app) {
   addAreaSelectOptions(cmd, o->layer, o->where);
   cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
   cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
+  cmd->add_flag("--allow-large", o->allow_large,
+                "Plan even when the area needs more than 5000 sweep lines at this spacing (refused by default: "
+                "planning time and memory grow with the line count)");
   auto* altitude = cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));
   cmd->add_option("--gsd", o->gsd_cm, "ground sampling distance [cm/px] that sets the altitude (with --sensor-mm, --focal-mm, --image-px; instead of --altitude)")
       ->check(CLI::Range(0.01, 1000.0))

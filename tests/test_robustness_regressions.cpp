@@ -248,3 +248,24 @@ TEST(Regression, DataFlashPositionTimesBackwardsReadPastTheEnd) {
               std::string::npos) << e.what();
   }
 }
+
+// Issue 20: absurd plans are refused before any work, from the area's minimum width (CGAL's
+// minimum enclosing strip): 1 km^2 at 0.05 m spacing (20,000 lines) used to run 9 minutes.
+TEST(Regression, PlanWorkIsEstimatedAndAbsurdPlansRefusedUpFront) {
+  const auto dir = std::filesystem::temp_directory_path() / ("wattswath_planwork_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string area = (dir / "km.geojson").string();
+  std::ofstream(area) << R"({"type":"Polygon","coordinates":[[[10.0,43.0],[10.0125,43.0],[10.0125,43.009],[10.0,43.009],[10.0,43.0]]]})";
+  auto r = runCli({"plan", area, "--vehicle", "data/vehicles/iris.json", "--spacing", "0.05", "--out", (dir / "o").string()}, 20);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("needs at least 19996 sweep lines"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--allow-large"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("at least 999.8 m wide"), std::string::npos) << r.err;
+  r = runCli({"plan", area, "--vehicle", "data/vehicles/iris.json", "--spacing", "0.01", "--allow-large", "--out",
+              (dir / "o").string()}, 20);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("199966 waypoints: more than one mission can hold (65534 items"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Widen --spacing to at least 0.04 m, or split the survey with --sorties"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o" / "mission.plan"));
+  std::filesystem::remove_all(dir);
+}

@@ -89,3 +89,22 @@ TEST(SweepLines, AngleRotatesTheLines) {
 }
 
 }  // namespace
+
+// The minimum width bounds the sweep lines of any direction (plan's up-front work estimate).
+TEST(MinimumWidth, RectangleTriangleAndConcaveRing) {
+  using wattswath::geometry::minimumWidth;
+  using wattswath::geometry::Point;
+  // A 100 x 30 m rectangle, rotated by 30 degrees: 30 m whatever the rotation.
+  wattswath::geometry::Ring rect;
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (const Point& p : {Point(0, 0), Point(100, 0), Point(100, 30), Point(0, 30)})
+    rect.emplace_back(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+  EXPECT_NEAR(minimumWidth(rect), 30.0, 1e-9);
+  // A right triangle with legs 30 and 40: the height over the hypotenuse, 24 m.
+  EXPECT_NEAR(minimumWidth({Point(0, 0), Point(40, 0), Point(0, 30)}), 24.0, 1e-9);
+  // An L (100 x 100 with a 60 x 60 bite): its hull decides, narrowest across the cut corner's
+  // edge x + y = 140, at 140 / sqrt 2 from the origin.
+  EXPECT_NEAR(minimumWidth({Point(0, 0), Point(100, 0), Point(100, 40), Point(40, 40), Point(40, 100), Point(0, 100)}),
+              140.0 / std::sqrt(2.0), 1e-9);
+  EXPECT_EQ(minimumWidth({Point(0, 0), Point(1, 1)}), 0.0);
+}

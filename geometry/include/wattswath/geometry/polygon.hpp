@@ -27,4 +27,9 @@ double signedArea(const Ring& ring);
 /// Area of the polygon minus its holes [m^2].
 double area(const PolygonWithHoles& poly);
 
+/// [m] The minimum width of `ring`: the narrowest strip between two parallel lines that holds
+/// every vertex (CGAL::min_strip_2 on the convex hull); 0 for fewer than 3 distinct points. No
+/// sweep direction crosses the ring with fewer than width / spacing lines.
+double minimumWidth(const Ring& ring);
+
 }  // namespace wattswath::geometry

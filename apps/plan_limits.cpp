@@ -1,0 +1,55 @@
+// The work of a plan estimated before it starts (issue 20).
+#include "plan_limits.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "wattswath/mission/files.hpp"
+
+namespace wattswath::apps {
+namespace {
+
+std::string fixed(double v, int decimals) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(decimals);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, double spacing) {
+  if (!(spacing > 0.0)) throw std::invalid_argument("estimatePlanWork: spacing must be > 0");
+  PlanWorkEstimate e;
+  e.min_width_m = geometry::minimumWidth(area.outer);
+  e.min_lines = std::floor(e.min_width_m / spacing);
+  e.sweep_km = geometry::area(area) / spacing / 1000.0;
+  e.summary = "plan: the area is at least " + fixed(e.min_width_m, 1) + " m wide: at least " + fixed(e.min_lines, 0) +
+              " sweep lines at " + fixed(spacing, 2) + " m spacing, about " + fixed(e.sweep_km, 1) + " km of sweeps";
+  return e;
+}
+
+void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool allow_large, const std::string& source) {
+  const double items = 2.0 * e.min_lines;  // every line is entered and left: two waypoints at least
+  const double max_items = static_cast<double>(mission::kMaxMissionItems);
+  if (!split && items > max_items) {
+    throw std::invalid_argument(
+        source + ": at " + fixed(spacing, 2) + " m spacing the area (at least " + fixed(e.min_width_m, 1) +
+        " m wide) needs at least " + fixed(e.min_lines, 0) + " sweep lines, so at least " + fixed(items, 0) +
+        " waypoints: more than one mission can hold (" + std::to_string(mission::kMaxMissionItems) +
+        " items, MAVLink's limit). Widen --spacing to at least " + fixed(std::ceil(e.min_width_m * 2.0 / max_items * 100.0) / 100.0, 2) +
+        " m, or split the survey with --sorties");
+  }
+  if (!allow_large && e.min_lines > kMaxSweepLinesWithoutOverride) {
+    throw std::invalid_argument(source + ": at " + fixed(spacing, 2) + " m spacing the area (at least " +
+                                fixed(e.min_width_m, 1) + " m wide) needs at least " + fixed(e.min_lines, 0) +
+                                " sweep lines (about " + fixed(e.sweep_km, 0) + " km of sweeps), more than the " +
+                                fixed(kMaxSweepLinesWithoutOverride, 0) +
+                                " planned without --allow-large (planning time and memory grow with the line count); "
+                                "check --spacing, or give --allow-large to plan it anyway");
+  }
+}
+
+}  // namespace wattswath::apps
