@@ -40,6 +40,14 @@ std::string formatNumber(double x) {
   return os.str();
 }
 
+std::string fixedText(double v, int precision) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(precision);
+  os << v;
+  return os.str();
+}
+
 void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& o) {
   cmd->add_option("--from", o.from_s, "Keep samples from this time on [s, log clock: autopilot boot time]");
   cmd->add_option("--to", o.to_s, "Keep samples up to this time [s, log clock]");

@@ -30,6 +30,9 @@ CLI::Option* addJsonFlag(CLI::App* cmd, bool& json);
 /// `x` with 10 significant digits (for messages naming an offending value).
 std::string formatNumber(double x);
 
+/// `v` with exactly `precision` decimals (fixed notation), e.g. fixedText(0.0305, 2) = "0.03".
+std::string fixedText(double v, int precision);
+
 /// Prints a progress line on stderr (never on stdout, which --json owns).
 void progress(const std::string& message);
 

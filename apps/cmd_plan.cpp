@@ -52,15 +52,6 @@ struct PlanOpts {
   std::string report_svg;
 };
 
-/// `v` with `precision` decimals.
-std::string fixedText(double v, int precision) {
-  std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
-
 /// Polyline of one leg for the map [m] (arcs sampled every 10 deg; a turn in place is one point).
 std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
   if (leg.kind == geo::PrimitiveKind::TurnInPlace) return {leg.start};

@@ -2,23 +2,12 @@
 #include "plan_limits.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
+#include "cli.hpp"
 #include "wattswath/mission/files.hpp"
 
 namespace wattswath::apps {
-namespace {
-
-std::string fixed(double v, int decimals) {
-  std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(decimals);
-  os << v;
-  return os.str();
-}
-
-}  // namespace
 
 PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, double spacing) {
   if (!(spacing > 0.0)) throw std::invalid_argument("estimatePlanWork: spacing must be > 0");
@@ -26,8 +15,8 @@ PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, double
   e.min_width_m = geometry::minimumWidth(area.outer);
   e.min_lines = std::floor(e.min_width_m / spacing);
   e.sweep_km = geometry::area(area) / spacing / 1000.0;
-  e.summary = "plan: the area is at least " + fixed(e.min_width_m, 1) + " m wide: at least " + fixed(e.min_lines, 0) +
-              " sweep lines at " + fixed(spacing, 2) + " m spacing, about " + fixed(e.sweep_km, 1) + " km of sweeps";
+  e.summary = "plan: the area is at least " + fixedText(e.min_width_m, 1) + " m wide: at least " + fixedText(e.min_lines, 0) +
+              " sweep lines at " + fixedText(spacing, 2) + " m spacing, about " + fixedText(e.sweep_km, 1) + " km of sweeps";
   return e;
 }
 
@@ -36,17 +25,17 @@ void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool a
   const double max_items = static_cast<double>(mission::kMaxMissionItems);
   if (!split && items > max_items) {
     throw std::invalid_argument(
-        source + ": at " + fixed(spacing, 2) + " m spacing the area (at least " + fixed(e.min_width_m, 1) +
-        " m wide) needs at least " + fixed(e.min_lines, 0) + " sweep lines, so at least " + fixed(items, 0) +
+        source + ": at " + fixedText(spacing, 2) + " m spacing the area (at least " + fixedText(e.min_width_m, 1) +
+        " m wide) needs at least " + fixedText(e.min_lines, 0) + " sweep lines, so at least " + fixedText(items, 0) +
         " waypoints: more than one mission can hold (" + std::to_string(mission::kMaxMissionItems) +
-        " items, MAVLink's limit). Widen --spacing to at least " + fixed(std::ceil(e.min_width_m * 2.0 / max_items * 100.0) / 100.0, 2) +
+        " items, MAVLink's limit). Widen --spacing to at least " + fixedText(std::ceil(e.min_width_m * 2.0 / max_items * 100.0) / 100.0, 2) +
         " m, or split the survey with --sorties");
   }
   if (!allow_large && e.min_lines > kMaxSweepLinesWithoutOverride) {
-    throw std::invalid_argument(source + ": at " + fixed(spacing, 2) + " m spacing the area (at least " +
-                                fixed(e.min_width_m, 1) + " m wide) needs at least " + fixed(e.min_lines, 0) +
-                                " sweep lines (about " + fixed(e.sweep_km, 0) + " km of sweeps), more than the " +
-                                fixed(kMaxSweepLinesWithoutOverride, 0) +
+    throw std::invalid_argument(source + ": at " + fixedText(spacing, 2) + " m spacing the area (at least " +
+                                fixedText(e.min_width_m, 1) + " m wide) needs at least " + fixedText(e.min_lines, 0) +
+                                " sweep lines (about " + fixedText(e.sweep_km, 0) + " km of sweeps), more than the " +
+                                fixedText(kMaxSweepLinesWithoutOverride, 0) +
                                 " planned without --allow-large (planning time and memory grow with the line count); "
                                 "check --spacing, or give --allow-large to plan it anyway");
   }
