@@ -47,7 +47,7 @@ struct PlanOpts {
   SortieRequest sorties;
   double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
   bool force = false, json = false, no_report = false, no_spiral = false, gpkg = false;
-  std::string report_svg;
+  std::string report_svg, report;
 };
 
 /// `v` with `precision` decimals.
@@ -482,18 +482,22 @@ void printMission(const PlanSetup& s, const pl::PlanMission& pm, double margin, 
             << " m from the no-fly zones; inclusion fence " << pm.fence_distance_m << " m outside the area\n";
 }
 
+/// Where the HTML report goes: --report, else DIR/report.html.
+std::string reportPath(const PlanOpts& o) { return o.report.empty() ? (fs::path(o.out) / "report.html").string() : o.report; }
+
 void runPlan(const PlanOpts& o) {
   const auto vehicle = energy::loadVehicle(o.vehicle);
   PlanSetup s = setUp(o);
   const auto& pr = s.problem;
   const auto& frame = *s.area.frame;
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
-  if (!o.no_report) files.push_back("report.html");
+  if (!o.no_report && o.report.empty()) files.push_back("report.html");
   if (o.gpkg) files.push_back("plan.gpkg");
   // An input in --out under an output's name is refused even with --force (checkWritable).
   std::vector<std::string> inputs = {o.area, o.vehicle};
   inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
   for (const auto& f : files) checkWritable((fs::path(o.out) / f).string(), o.force, inputs);
+  if (!o.no_report && !o.report.empty()) checkWritable(o.report, o.force, inputs);
 
   pl::PlannerSettings ps;
   ps.corners = pl::cornerStrategyFromString(o.corners);
@@ -545,14 +549,13 @@ void runPlan(const PlanOpts& o) {
   writeTextFileAtomic((dir / "path.geojson").string(), path_geojson);
   if (o.gpkg) geo::writeGeoPackage((dir / "plan.gpkg").string(), {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
-  nlohmann::json sorties;
+  std::optional<SortieOutcome> split;
   if (!o.sorties.sorties.empty()) {
     progress("plan: splitting into sorties for the battery (" + o.sorties.sorties + ", reserve " + fixedText(o.sorties.reserve_pct, 0) + " %)");
-    const auto& ph = flight.prediction.phases;
-    const double overhead = ph[static_cast<int>(ms::FlightPhase::Takeoff)].energy_j + ph[static_cast<int>(ms::FlightPhase::Landing)].energy_j;
     scoring.mission.arc_waypoints = flight.arc_waypoints;
-    sorties = planSorties(r.plan, flight.prediction.total.energy_j, overhead, scoring, o.vehicle, o.sorties, dir);
+    split = planSorties(r.plan, flight, scoring, o.vehicle, o.sorties, dir);
   }
+  const nlohmann::json sorties = split ? split->json : nlohmann::json(nullptr);
   if (!o.no_report || !o.report_svg.empty()) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
     data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), frame);  // numbered as the ground station shows them
@@ -563,7 +566,8 @@ void runPlan(const PlanOpts& o) {
     data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
                                                    fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
                                              : std::string("no camera commands")});
-    writeReport(report::planReport(data), o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
+    if (split) data.sorties = split->view;
+    writeReport(report::planReport(data), o.no_report ? std::string() : reportPath(o), o.report_svg, o.force);
   }
   const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
   const double whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
@@ -635,6 +639,18 @@ void registerPlanCommand(CLI::App& app) {
                   "total energy needs) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
   cmd->add_option("--reserve", o->sorties.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
       ->check(CLI::Range(0.0, 90.0));
+  cmd->add_option("--vehicles", o->sorties.vehicles,
+                  "a fleet of N vehicles flies the sorties at once (implies --sorties auto): contiguous runs of sorties per vehicle "
+                  "that minimise the makespan; writes vehicle_K_sortie_NN.plan/.waypoints")
+      ->check(CLI::Range(1, 100));
+  cmd->add_option("--swap-time", o->sorties.swap_time_s, "battery swap between two sorties of one vehicle [s] (default 120)")
+      ->check(CLI::Range(0.0, 86400.0));
+  cmd->add_option("--launch-interval", o->sorties.launch_interval_s, "time between the fleet's first take-offs [s] (default 30)")
+      ->check(CLI::Range(0.0, 86400.0));
+  cmd->add_option("--separation", o->sorties.separation_m,
+                  "least horizontal distance between two airborne vehicles of the fleet, checked on the flown trajectories; a "
+                  "sortie that would come closer starts later [m] (default 15)")
+      ->check(CLI::Range(0.0, 10000.0));
   cmd->add_option("--overshoot", o->overshoot,
                   "let sweep lines run on this far beyond the area's boundary to turn there (QGC's turnaround distance) "
                   "[m] (default 0: every flown point stays inside the area)")
@@ -649,11 +665,13 @@ void registerPlanCommand(CLI::App& app) {
                 "straight parallel lines only: spirals do not compete (consistent image headings for photogrammetry)");
   cmd->add_flag("--no-report", o->no_report, "do not write DIR/report.html (the HTML plan report, on by default)");
   cmd->add_flag("--gpkg", o->gpkg, "also write DIR/plan.gpkg: the legs and the area (holes, home) as GeoPackage layers for QGIS");
+  cmd->add_option("--report", o->report, "write the HTML report here instead of DIR/report.html");
   cmd->add_option("--report-svg", o->report_svg, "also write the report's figures as SVG files into this folder");
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
     if (o->spacing <= 0.0 && o->fov_deg <= 0.0 && o->sensor_mm.empty())
       throw std::invalid_argument("give --spacing M, or --altitude M --fov DEG --overlap F (or --sensor-mm W,H --focal-mm F)");
+    if (o->sorties.vehicles > 0 && o->sorties.sorties.empty()) o->sorties.sorties = "auto";
     runPlan(*o);
   });
 }
