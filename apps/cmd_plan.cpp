@@ -635,8 +635,8 @@ void registerPlanCommand(CLI::App& app) {
                   "distance every flown point keeps from the no-fly zones, for GPS and tracking error [m] (default 2; 0: none)")
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--sorties", o->sorties.sorties,
-                  "split the survey into sorties that each land with the battery reserve: 'auto' (as many as the least "
-                  "total energy needs) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
+                  "split the survey into sorties that each land with the battery reserve: 'auto' (the fewest that fit, "
+                  "with the least total energy among those) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
   cmd->add_option("--reserve", o->sorties.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
       ->check(CLI::Range(0.0, 90.0));
   cmd->add_option("--vehicles", o->sorties.vehicles,
