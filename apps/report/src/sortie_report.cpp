@@ -38,7 +38,8 @@ void sortieMap(HtmlReport& r, const PlanReportData& d, const PlanSorties& s) {
   }
   r.figure({"plan-sorties-map", renderSvg(m),
             "Map in local metres (east right, north up): each sortie as the autopilot model flies its own mission file, "
-            "from take-off to landing at home; hover a track for its sortie."});
+            "from take-off to landing at home; hover a track for its sortie" +
+                std::string(d.no_fly.empty() ? "" : "; red dashed areas are no-fly zones") + "."});
 }
 
 void sortieTable(HtmlReport& r, const PlanSorties& s) {
@@ -83,7 +84,32 @@ void sortieTable(HtmlReport& r, const PlanSorties& s) {
   r.table(p);
 }
 
+// The fleet's timeline: each sortie a bar from its take-off to its landing at its vehicle's
+// height, in the sortie's colour and dash pattern as on the map.
+void fleetTimeline(HtmlReport& r, const PlanSorties& s) {
+  LineChart c;
+  c.title = "Fleet timeline: each sortie from take-off to landing";
+  c.x = {"time since the first take-off", "min"};
+  c.y = {"vehicle", "1"};
+  c.y.min = 0.5;
+  c.y.max = s.vehicles + 0.5;
+  c.x.min = 0.0;
+  c.height = 160.0 + 40.0 * s.vehicles;
+  for (std::size_t k = 0; k < s.sorties.size(); ++k) {
+    const auto& so = s.sorties[k];
+    Series b(so.name, {so.start_s / 60.0, (so.start_s + so.time_s) / 60.0}, {double(so.vehicle), double(so.vehicle)});
+    b.colour = seriesColour(k);
+    b.dash = seriesDash(k);
+    b.width = 6.0;
+    c.series.push_back(std::move(b));
+  }
+  r.figure({"plan-fleet-timeline", renderSvg(c),
+            "When each vehicle flies (makespan " + formatMinSec(s.makespan_s) + " min:s); the gaps are battery swaps (" +
+                formatNumber(s.swap_time_s, 0) + " s) and delays that keep the separation."});
+}
+
 void fleetSchedule(HtmlReport& r, const PlanSorties& s) {
+  fleetTimeline(r, s);
   struct Busy {
     int sorties = 0;
     double first = 1e300, last = 0.0, air = 0.0;

@@ -196,13 +196,13 @@ void checkSortiesInDom(const std::string& dom, const std::vector<std::string>& n
   for (const auto& st : styles) dashes.insert(st.substr(st.find('|')));
   EXPECT_GE(dashes.size(), std::min<std::size_t>(names.size(), 5)) << "dash patterns repeat";
   for (const char* text : {"Price of splitting", "state of charge at landing", "energy [Wh]", "time [min:s]", "photos", "Fleet schedule",
-                           "makespan", "Smallest separation found"})
+                           "makespan", "Smallest separation found", "Fleet timeline"})
     EXPECT_NE(dom.find(text), std::string::npos) << "missing: " << text;
 }
 
 TEST(ReportRender, PlanReportWithSortiesAndFleet) {
   const auto d = samplePlanWithSorties();
-  checkReport(wr::planReport(d), "sample-plan-sorties", 6);
+  checkReport(wr::planReport(d), "sample-plan-sorties", 7);
   const Rendered page = render(renderDir() + "/sample-plan-sorties.html");
   ASSERT_EQ(page.status, 0) << page.log;
   checkSortiesInDom(page.dom, {"vehicle 1, sortie 1", "vehicle 1, sortie 2", "vehicle 2, sortie 1"});
@@ -214,7 +214,7 @@ TEST(ReportRender, PlanCommandReportWithFleet) {
   fs::remove_all(dir + "/cli-plan-fleet-out");
   checkCommandReport("plan '" + sourcePath("data/areas/iris_area.geojson") + "' --vehicle '" + sourcePath("tests/data/iris-small-battery.json") +
                          "' --spacing 15 --vehicles 2 --out '" + dir + "/cli-plan-fleet-out'",
-                     "cli-plan-fleet", 6);
+                     "cli-plan-fleet", 7);
   const Rendered page = render(dir + "/cli-plan-fleet.html");
   checkSortiesInDom(page.dom, {"vehicle 1, sortie 1", "vehicle 1, sortie 2", "vehicle 2, sortie 1", "vehicle 2, sortie 2"});
 }
