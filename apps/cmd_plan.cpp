@@ -10,6 +10,7 @@
 
 #include "cli.hpp"
 #include "plan_flight.hpp"
+#include "plan_fleet.hpp"
 #include "plan_sorties.hpp"
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
@@ -634,23 +635,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--no-fly-margin", o->no_fly_margin,
                   "distance every flown point keeps from the no-fly zones, for GPS and tracking error [m] (default 2; 0: none)")
       ->check(CLI::Range(0.0, 100.0));
-  cmd->add_option("--sorties", o->sorties.sorties,
-                  "split the survey into sorties that each land with the battery reserve: 'auto' (the fewest that fit, "
-                  "with the least total energy among those) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
-  cmd->add_option("--reserve", o->sorties.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
-      ->check(CLI::Range(0.0, 90.0));
-  cmd->add_option("--vehicles", o->sorties.vehicles,
-                  "a fleet of N vehicles flies the sorties at once (implies --sorties auto): contiguous runs of sorties per vehicle "
-                  "that minimise the makespan; writes vehicle_K_sortie_NN.plan/.waypoints")
-      ->check(CLI::Range(1, 100));
-  cmd->add_option("--swap-time", o->sorties.swap_time_s, "battery swap between two sorties of one vehicle [s] (default 120)")
-      ->check(CLI::Range(0.0, 86400.0));
-  cmd->add_option("--launch-interval", o->sorties.launch_interval_s, "time between the fleet's first take-offs [s] (default 30)")
-      ->check(CLI::Range(0.0, 86400.0));
-  cmd->add_option("--separation", o->sorties.separation_m,
-                  "least horizontal distance between two airborne vehicles of the fleet, checked on the flown trajectories; a "
-                  "sortie that would come closer starts later [m] (default 15)")
-      ->check(CLI::Range(0.0, 10000.0));
+  addSortieOptions(cmd, o->sorties);
   cmd->add_option("--overshoot", o->overshoot,
                   "let sweep lines run on this far beyond the area's boundary to turn there (QGC's turnaround distance) "
                   "[m] (default 0: every flown point stays inside the area)")

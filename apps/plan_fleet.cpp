@@ -14,6 +14,26 @@ namespace wattswath::apps {
 
 namespace pl = wattswath::planner;
 
+void addSortieOptions(CLI::App* cmd, SortieRequest& req) {
+  cmd->add_option("--sorties", req.sorties,
+                  "split the survey into sorties that each land with the battery reserve: 'auto' (the fewest that fit, "
+                  "with the least total energy among those) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
+  cmd->add_option("--reserve", req.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
+      ->check(CLI::Range(0.0, 90.0));
+  cmd->add_option("--vehicles", req.vehicles,
+                  "a fleet of N vehicles flies the sorties at once (implies --sorties auto): contiguous runs of sorties per vehicle "
+                  "that minimise the makespan; writes vehicle_K_sortie_NN.plan/.waypoints")
+      ->check(CLI::Range(1, 100));
+  cmd->add_option("--swap-time", req.swap_time_s, "battery swap between two sorties of one vehicle [s] (default 120)")
+      ->check(CLI::Range(0.0, 86400.0));
+  cmd->add_option("--launch-interval", req.launch_interval_s, "time between the fleet's first take-offs [s] (default 30)")
+      ->check(CLI::Range(0.0, 86400.0));
+  cmd->add_option("--separation", req.separation_m,
+                  "least horizontal distance between two airborne vehicles of the fleet, checked on the flown trajectories; a "
+                  "sortie that would come closer starts later [m] (default 15)")
+      ->check(CLI::Range(0.0, 10000.0));
+}
+
 pl::FleetSettings fleetSettings(const SortieRequest& req) {
   if (req.vehicles < 1 || req.vehicles > 100) throw std::invalid_argument("--vehicles " + std::to_string(req.vehicles) + ": expected 1..100");
   pl::FleetSettings s;
@@ -69,8 +89,10 @@ void fillFleetView(const pl::FleetSchedule& f, const SortieRequest& req, report:
 void printFleet(const nlohmann::json& j) {
   const std::string least = j["min_separation_m"].is_null() ? std::string("never two airborne at once")
                                                             : report::formatNumber(j["min_separation_m"].get<double>(), 1) + " m";
-  std::printf("fleet: %d vehicles, makespan %s min:s (one vehicle flying every sortie: %s min:s), battery swap %.0f s, take-offs %.0f s apart\n",
-              j["vehicles_used"].get<int>(), report::formatMinSec(j["makespan_s"].get<double>()).c_str(),
+  const int used = j["vehicles_used"].get<int>(), asked = j["vehicles"].get<int>();
+  const std::string of = used < asked ? " of the " + std::to_string(asked) + " (one more would not finish sooner)" : "";
+  std::printf("fleet: %d vehicles%s, makespan %s min:s (one vehicle flying every sortie: %s min:s), battery swap %.0f s, take-offs %.0f s apart\n",
+              used, of.c_str(), report::formatMinSec(j["makespan_s"].get<double>()).c_str(),
               report::formatMinSec(j["one_vehicle_makespan_s"].get<double>()).c_str(), j["swap_time_s"].get<double>(),
               j["launch_interval_s"].get<double>());
   for (const auto& v : j["schedule"])

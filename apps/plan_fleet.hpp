@@ -1,8 +1,9 @@
 #pragma once
-// `plan --vehicles N`: the sorties shared by a fleet flying at once (planner/fleet.hpp), as the
-// plan's JSON, text and report show them.
+// `plan --sorties` and `--vehicles N` options; the sorties shared by a fleet flying at once
+// (planner/fleet.hpp), as the plan's JSON, text and report show them.
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "plan_sorties.hpp"
@@ -10,6 +11,9 @@
 #include "wattswath/report/reports.hpp"
 
 namespace wattswath::apps {
+
+/// `plan`'s options --sorties, --reserve, --vehicles, --swap-time, --launch-interval and --separation into `req`.
+void addSortieOptions(CLI::App* cmd, SortieRequest& req);
 
 /// The fleet settings of the request; throws std::invalid_argument naming the option out of range.
 planner::FleetSettings fleetSettings(const SortieRequest& req);
