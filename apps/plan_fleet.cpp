@@ -24,14 +24,19 @@ void addSortieOptions(CLI::App* cmd, SortieRequest& req) {
                   "a fleet of N vehicles flies the sorties at once (implies --sorties auto): contiguous runs of sorties per vehicle "
                   "that minimise the makespan; writes vehicle_K_sortie_NN.plan/.waypoints")
       ->check(CLI::Range(1, 100));
-  cmd->add_option("--swap-time", req.swap_time_s, "battery swap between two sorties of one vehicle [s] (default 120)")
-      ->check(CLI::Range(0.0, 86400.0));
-  cmd->add_option("--launch-interval", req.launch_interval_s, "time between the fleet's first take-offs [s] (default 30)")
-      ->check(CLI::Range(0.0, 86400.0));
-  cmd->add_option("--separation", req.separation_m,
-                  "least horizontal distance between two airborne vehicles of the fleet, checked on the flown trajectories; a "
-                  "sortie that would come closer starts later [m] (default 15)")
-      ->check(CLI::Range(0.0, 10000.0));
+  struct Bounded {
+    const char* name;
+    double* value;
+    const char* help;
+    double max;
+  };
+  for (const Bounded& b : {Bounded{"--swap-time", &req.swap_time_s, "battery swap between two sorties of one vehicle [s] (default 120)", 86400.0},
+                           Bounded{"--launch-interval", &req.launch_interval_s, "time between the fleet's first take-offs [s] (default 30)", 86400.0},
+                           Bounded{"--separation", &req.separation_m,
+                                   "least horizontal distance between two airborne vehicles of the fleet, checked on the flown "
+                                   "trajectories; a sortie that would come closer starts later [m] (default 15)",
+                                   10000.0}})
+    cmd->add_option(b.name, *b.value, b.help)->check(CLI::Range(0.0, b.max));
 }
 
 pl::FleetSettings fleetSettings(const SortieRequest& req) {
