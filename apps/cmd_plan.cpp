@@ -11,6 +11,7 @@
 #include "cli.hpp"
 #include "plan_flight.hpp"
 #include "plan_limits.hpp"
+#include "plan_fleet.hpp"
 #include "plan_sorties.hpp"
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/model.hpp"
@@ -49,7 +50,7 @@ struct PlanOpts {
   double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
   bool force = false, json = false, no_report = false, no_spiral = false, gpkg = false;
   bool allow_large = false;  // --allow-large: plan beyond kMaxSweepLinesWithoutOverride lines
-  std::string report_svg;
+  std::string report_svg, report;
 };
 
 /// Polyline of one leg for the map [m] (arcs sampled every 10 deg; a turn in place is one point).
@@ -478,18 +479,22 @@ void printMission(const PlanSetup& s, const pl::PlanMission& pm, double margin, 
             << " m from the no-fly zones; inclusion fence " << pm.fence_distance_m << " m outside the area\n";
 }
 
+/// Where the HTML report goes: --report, else DIR/report.html.
+std::string reportPath(const PlanOpts& o) { return o.report.empty() ? (fs::path(o.out) / "report.html").string() : o.report; }
+
 void runPlan(const PlanOpts& o) {
   const auto vehicle = energy::loadVehicle(o.vehicle);
   PlanSetup s = setUp(o);
   const auto& pr = s.problem;
   const auto& frame = *s.area.frame;
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
-  if (!o.no_report) files.push_back("report.html");
+  if (!o.no_report && o.report.empty()) files.push_back("report.html");
   if (o.gpkg) files.push_back("plan.gpkg");
   // An input in --out under an output's name is refused even with --force (checkWritable).
   std::vector<std::string> inputs = {o.area, o.vehicle};
   inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
   for (const auto& f : files) checkWritable((fs::path(o.out) / f).string(), o.force, inputs);
+  if (!o.no_report && !o.report.empty()) checkWritable(o.report, o.force, inputs);
 
   pl::PlannerSettings ps;
   ps.corners = pl::cornerStrategyFromString(o.corners);
@@ -541,14 +546,13 @@ void runPlan(const PlanOpts& o) {
   writeTextFileAtomic((dir / "path.geojson").string(), path_geojson);
   if (o.gpkg) geo::writeGeoPackage((dir / "plan.gpkg").string(), {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
-  nlohmann::json sorties;
+  std::optional<SortieOutcome> split;
   if (!o.sorties.sorties.empty()) {
     progress("plan: splitting into sorties for the battery (" + o.sorties.sorties + ", reserve " + fixedText(o.sorties.reserve_pct, 0) + " %)");
-    const auto& ph = flight.prediction.phases;
-    const double overhead = ph[static_cast<int>(ms::FlightPhase::Takeoff)].energy_j + ph[static_cast<int>(ms::FlightPhase::Landing)].energy_j;
     scoring.mission.arc_waypoints = flight.arc_waypoints;
-    sorties = planSorties(r.plan, flight.prediction.total.energy_j, overhead, scoring, o.vehicle, o.sorties, dir);
+    split = planSorties(r.plan, flight, scoring, o.vehicle, o.sorties, dir);
   }
+  const nlohmann::json sorties = split ? split->json : nlohmann::json(nullptr);
   if (!o.no_report || !o.report_svg.empty()) {
     auto data = planReportData(r, pr, vehicle, model, o.area);
     data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), frame);  // numbered as the ground station shows them
@@ -559,7 +563,8 @@ void runPlan(const PlanOpts& o) {
     data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
                                                    fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
                                              : std::string("no camera commands")});
-    writeReport(report::planReport(data), o.no_report ? std::string() : (dir / "report.html").string(), o.report_svg, o.force);
+    if (split) data.sorties = split->view;
+    writeReport(report::planReport(data), o.no_report ? std::string() : reportPath(o), o.report_svg, o.force);
   }
   const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
   const double whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
@@ -629,11 +634,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--no-fly-margin", o->no_fly_margin,
                   "distance every flown point keeps from the no-fly zones, for GPS and tracking error [m] (default 2; 0: none)")
       ->check(CLI::Range(0.0, 100.0));
-  cmd->add_option("--sorties", o->sorties.sorties,
-                  "split the survey into sorties that each land with the battery reserve: 'auto' (as many as the least "
-                  "total energy needs) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
-  cmd->add_option("--reserve", o->sorties.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
-      ->check(CLI::Range(0.0, 90.0));
+  addSortieOptions(cmd, o->sorties);
   cmd->add_option("--overshoot", o->overshoot,
                   "let sweep lines run on this far beyond the area's boundary to turn there (QGC's turnaround distance) "
                   "[m] (default 0: every flown point stays inside the area)")
@@ -648,11 +649,13 @@ void registerPlanCommand(CLI::App& app) {
                 "straight parallel lines only: spirals do not compete (consistent image headings for photogrammetry)");
   cmd->add_flag("--no-report", o->no_report, "do not write DIR/report.html (the HTML plan report, on by default)");
   cmd->add_flag("--gpkg", o->gpkg, "also write DIR/plan.gpkg: the legs and the area (holes, home) as GeoPackage layers for QGIS");
+  cmd->add_option("--report", o->report, "write the HTML report here instead of DIR/report.html");
   cmd->add_option("--report-svg", o->report_svg, "also write the report's figures as SVG files into this folder");
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
     if (o->spacing <= 0.0 && o->fov_deg <= 0.0 && o->sensor_mm.empty())
       throw std::invalid_argument("give --spacing M, or --altitude M --fov DEG --overlap F (or --sensor-mm W,H --focal-mm F)");
+    if (o->sorties.vehicles > 0 && o->sorties.sorties.empty()) o->sorties.sorties = "auto";
     runPlan(*o);
   });
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "cli.hpp"
+#include "plan_fleet.hpp"
 #include "plan_flight.hpp"
 #include "wattswath/report/svg.hpp"
 #include "wattswath/mission/files.hpp"
@@ -43,6 +44,12 @@ double total(const std::vector<FlownSortie>& v) {
   double e = 0.0;
   for (const auto& f : v) e += f.prediction.total.energy_j;
   return e;
+}
+
+double totalTime(const std::vector<FlownSortie>& v) {
+  double t = 0.0;
+  for (const auto& f : v) t += f.prediction.total.time_s;
+  return t;
 }
 
 int parseCount(const std::string& text) {
@@ -107,13 +114,82 @@ std::vector<FlownSortie> splitThatFits(const pl::PlanCandidate& plan, const pl::
   return flown;
 }
 
-nlohmann::json planSorties(const pl::PlanCandidate& plan, double single_flight_j, double overhead_j, pl::FlightScoring scoring,
-                           const std::string& vehicle_path, const SortieRequest& req, const std::filesystem::path& dir) {
+namespace {
+
+// The sortie's flight as the separation check and the map read it: horizontal positions in the
+// area's local frame (the prediction's are from home).
+pl::Track trackOf(const mission::MissionPrediction& p, const geometry::Point& home) {
+  pl::Track t;
+  for (const auto& smp : p.flight.samples) t.push_back({smp.t, home + smp.position.head<2>(), smp.airborne});
+  return t;
+}
+
+// The report's row of a flown sortie (its track every ~1 s for the map).
+report::PlanSortie viewOf(const FlownSortie& f, const pl::Track& track, const std::string& name, const std::string& file, bool camera) {
+  report::PlanSortie v;
+  v.name = name;
+  v.file = file;
+  for (std::size_t i = 0; i < track.size(); i += 10) v.track.push_back(track[i].p);
+  if (!track.empty()) v.track.push_back(track.back().p);
+  v.energy_j = f.prediction.total.energy_j;
+  v.time_s = f.prediction.total.time_s;
+  v.soc_landing_pct = 100.0 * f.prediction.battery.usable_left_end;
+  v.photos = camera ? f.mission.photos : -1;
+  return v;
+}
+
+std::string fleetName(int vehicle, int order, const char* ext) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "vehicle_%d_sortie_%02d.%s", vehicle + 1, order + 1, ext);
+  return buf;
+}
+
+// Writes the sorties' missions and fills the per-sortie JSON and report rows (fleet: `fleet`).
+void writeSorties(const std::vector<FlownSortie>& flown, const std::vector<pl::Track>& tracks, const pl::FleetSchedule* fleet,
+                  bool camera, const std::filesystem::path& dir, nlohmann::json& list, report::PlanSorties& view) {
+  for (std::size_t k = 0; k < flown.size(); ++k) {
+    const auto& f = flown[k];
+    const pl::ScheduledSortie* sc = fleet ? &fleet->sorties[k] : nullptr;
+    const std::string plan = sc ? fleetName(sc->vehicle, sc->order, "plan") : name(k, "plan");
+    const std::string wpl = sc ? fleetName(sc->vehicle, sc->order, "waypoints") : name(k, "waypoints");
+    writeTextFileAtomic((dir / plan).string(), mission::toQgcPlan(f.mission.mission));
+    writeTextFileAtomic((dir / wpl).string(), mission::toQgcWpl(f.mission.mission));
+    const double e = f.prediction.total.energy_j;
+    nlohmann::json row = {{"file", plan}, {"energy_j", e}, {"energy_wh", e / 3600.0}, {"time_s", f.prediction.total.time_s},
+                          {"usable_left_pct", 100.0 * f.prediction.battery.usable_left_end}, {"fits", f.prediction.battery.fits},
+                          {"photos", camera ? nlohmann::json(f.mission.photos) : nlohmann::json(nullptr)},
+                          {"first_sweep", f.sortie.first_sweep + 1}, {"last_sweep", f.sortie.last_sweep + 1}};
+    std::string label = "sortie " + std::to_string(k + 1);
+    if (sc) {
+      row["vehicle"] = sc->vehicle + 1;
+      row["vehicle_sortie"] = sc->order + 1;
+      row["start_s"] = sc->start_s;
+      row["end_s"] = sc->end_s;
+      row["delay_s"] = sc->delay_s;
+      label = "vehicle " + std::to_string(sc->vehicle + 1) + ", sortie " + std::to_string(sc->order + 1);
+    }
+    list.push_back(row);
+    view.sorties.push_back(viewOf(f, tracks[k], label, plan, camera));
+    if (sc) {
+      view.sorties.back().vehicle = sc->vehicle + 1;
+      view.sorties.back().start_s = sc->start_s;
+      view.sorties.back().delay_s = sc->delay_s;
+    }
+  }
+}
+
+}  // namespace
+
+SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& flight, pl::FlightScoring scoring, const std::string& vehicle_path,
+                          const SortieRequest& req, const std::filesystem::path& dir) {
   const int count = parseCount(req.sorties);
   if (!(req.reserve_pct >= 0.0 && req.reserve_pct <= 90.0))
     throw std::invalid_argument("--reserve " + std::to_string(req.reserve_pct) + ": expected 0..90 %");
   const auto& v = *scoring.vehicle;
   if (!v.battery) throw std::runtime_error(vehicle_path + ": --sorties needs the vehicle's battery (a 'battery' object)");
+  const auto& ph = flight.prediction.phases;
+  const double overhead_j = ph[static_cast<int>(mission::FlightPhase::Takeoff)].energy_j + ph[static_cast<int>(mission::FlightPhase::Landing)].energy_j;
+  const double single_flight_j = flight.prediction.total.energy_j;
   const PredictionSetup setup = predictionSetup(v, vehicle_path, "", req.reserve_pct);
   scoring = withSetup(scoring, setup);
   pl::RouteScorer scorer(setup.model, pl::SpeedSettings::fromVehicle(v));
@@ -136,21 +212,29 @@ nlohmann::json planSorties(const pl::PlanCandidate& plan, double single_flight_j
   naive.budget_j = budget0;
   bool naive_fits = false;
   const auto naive_flown = splitThatFits(plan, scoring, scorer, naive, req.reserve_pct, naive_fits);
+  std::vector<pl::Track> tracks;
+  for (const auto& f : flown) tracks.push_back(trackOf(f.prediction, scoring.problem->home));
+  std::optional<pl::FleetSchedule> fleet;
+  if (req.vehicles > 0) fleet = pl::scheduleFleet(tracks, fleetSettings(req));
+  SortieOutcome out;
   nlohmann::json list = nlohmann::json::array();
-  for (std::size_t k = 0; k < flown.size(); ++k) {
-    const auto& f = flown[k];
-    writeTextFileAtomic((dir / name(k, "plan")).string(), mission::toQgcPlan(f.mission.mission));
-    writeTextFileAtomic((dir / name(k, "waypoints")).string(), mission::toQgcWpl(f.mission.mission));
-    list.push_back({{"file", name(k, "plan")}, {"energy_j", f.prediction.total.energy_j}, {"time_s", f.prediction.total.time_s},
-                    {"usable_left_pct", 100.0 * f.prediction.battery.usable_left_end}, {"fits", f.prediction.battery.fits},
-                    {"photos", f.mission.photos}, {"first_sweep", f.sortie.first_sweep + 1}, {"last_sweep", f.sortie.last_sweep + 1}});
-  }
+  writeSorties(flown, tracks, fleet ? &*fleet : nullptr, scoring.mission.trigger_distance_m > 0.0, dir, list, out.view);
   const double e = total(flown), e_naive = total(naive_flown);
-  nlohmann::json j = {{"count", flown.size()}, {"reserve_pct", req.reserve_pct}, {"total_energy_j", e},
-                      {"single_flight_energy_j", single_flight_j}, {"price_of_splitting_pct", 100.0 * (e / single_flight_j - 1.0)},
-                      {"naive", {{"count", naive_flown.size()}, {"total_energy_j", e_naive}, {"all_fit", naive_fits}}},
-                      {"sorties", list}};
-  return j;
+  out.json = {{"count", flown.size()}, {"reserve_pct", req.reserve_pct}, {"total_energy_j", e},
+              {"total_time_s", totalTime(flown)}, {"single_flight_energy_j", single_flight_j},
+              {"single_flight_time_s", flight.prediction.total.time_s},
+              {"single_flight", "mission.plan flown in one flight by " + flight.autopilot + " with an unlimited battery"},
+              {"price_of_splitting_pct", 100.0 * (e / single_flight_j - 1.0)},
+              {"naive", {{"count", naive_flown.size()}, {"total_energy_j", e_naive}, {"all_fit", naive_fits}}},
+              {"sorties", list},
+              {"fleet", fleet ? fleetJson(*fleet, req, tracks) : nlohmann::json(nullptr)}};
+  auto& view = out.view;
+  view.single_energy_j = single_flight_j;
+  view.single_time_s = flight.prediction.total.time_s;
+  view.single_base = "mission.plan flown by " + flight.autopilot + ", unlimited battery";
+  view.reserve_pct = req.reserve_pct;
+  if (fleet) fillFleetView(*fleet, req, view);
+  return out;
 }
 
 void printSorties(const nlohmann::json& j) {
@@ -159,10 +243,17 @@ void printSorties(const nlohmann::json& j) {
               j["count"].get<int>(), e / 1000.0, one / 1000.0, 100.0 * (e / one - 1.0), j["naive"]["count"].get<int>(), en / 1000.0,
               j["naive"]["all_fit"].get<bool>() ? "" : " (not all keep the reserve)");
   for (const auto& s : j["sorties"]) {
-    std::printf("  %s: sweep pieces %d-%d, %.1f kJ, %s min:s, lands with %.0f %% of the usable charge, %d photos\n",
+    std::printf("  %s: sweep pieces %d-%d, %.1f kJ (%.1f Wh), %s min:s, lands with %.0f %% of the usable charge",
                 s["file"].get<std::string>().c_str(), s["first_sweep"].get<int>(), s["last_sweep"].get<int>(),
-                s["energy_j"].get<double>() / 1000.0, report::formatMinSec(s["time_s"].get<double>()).c_str(), s["usable_left_pct"].get<double>(), s["photos"].get<int>());
+                s["energy_j"].get<double>() / 1000.0, s["energy_wh"].get<double>(), report::formatMinSec(s["time_s"].get<double>()).c_str(),
+                s["usable_left_pct"].get<double>());
+    if (!s["photos"].is_null()) std::printf(", %d photos", s["photos"].get<int>());
+    if (s.contains("vehicle"))
+      std::printf(", vehicle %d takes off at %s min:s%s", s["vehicle"].get<int>(), report::formatMinSec(s["start_s"].get<double>()).c_str(),
+                  s["delay_s"].get<double>() > 0.0 ? (" (" + report::formatMinSec(s["delay_s"].get<double>()) + " later for the separation)").c_str() : "");
+    std::printf("\n");
   }
+  if (!j["fleet"].is_null()) printFleet(j["fleet"]);
 }
 
 }  // namespace wattswath::apps

@@ -7,8 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "plan_flight.hpp"
 #include "wattswath/planner/coverage.hpp"
 #include "wattswath/planner/flight_score.hpp"
+#include "wattswath/report/reports.hpp"
 
 namespace wattswath::apps {
 
@@ -16,15 +18,25 @@ namespace wattswath::apps {
 struct SortieRequest {
   std::string sorties;       ///< "auto" or a count (empty: no split)
   double reserve_pct = 25.0; ///< [%] usable charge to keep on landing
+  int vehicles = 0;          ///< [-] fleet flying the sorties at once (0: no fleet)
+  double swap_time_s = 120.0;       ///< [s] battery swap on the ground between two sorties of a vehicle
+  double launch_interval_s = 30.0;  ///< [s] between the vehicles' first take-offs
+  double separation_m = 15.0;       ///< [m] least horizontal distance between airborne vehicles
 };
 
-/// Splits `plan` (the plan written, flown as `single_flight_j` [J] in one flight by the autopilot
-/// model; `overhead_j` [J] its take-off and landing) for the vehicle's battery, writes
-/// `sortie_NN.plan` / `.waypoints` into `dir` and returns the JSON summary. `scoring` as for flyFinalists (with
+/// The split's summary (JSON) and what the plan report draws of it.
+struct SortieOutcome {
+  nlohmann::json json;           ///< counts, energies, per sortie, fleet schedule
+  report::PlanSorties view;      ///< the report's sorties section
+};
+
+/// Splits `plan` (the plan written, `flight` its one flight by the autopilot model, whose take-off
+/// and landing every sortie repeats) for the vehicle's battery, writes
+/// `sortie_NN.plan` / `.waypoints` into `dir` (with a fleet `vehicle_K_sortie_NN.*`, the fleet
+/// scheduled by planner::scheduleFleet on the flown trajectories) and returns the summary. `scoring` as for flyFinalists (with
 /// `arc_waypoints` in its mission options as chosen). Throws std::runtime_error when the vehicle
 /// has no battery or no split fits.
-nlohmann::json planSorties(const planner::PlanCandidate& plan, double single_flight_j, double overhead_j,
-                           planner::FlightScoring scoring, const std::string& vehicle_path, const SortieRequest& req,
+SortieOutcome planSorties(const planner::PlanCandidate& plan, const PlanFlight& flight, planner::FlightScoring scoring, const std::string& vehicle_path, const SortieRequest& req,
                            const std::filesystem::path& dir);
 
 /// The text lines of planSorties' summary.

@@ -199,22 +199,26 @@ std::vector<int> naiveCuts(const Splitter& sp, const SortieSettings& s) {
   return starts;
 }
 
-// Cut points of the least total energy, any number of sorties: best[j] covers pieces 0..j-1.
+// Cut points of the fewest sorties and, among those, the least total energy (lexicographic: a
+// sortie more costs a battery swap and a landing, worth more than the few kJ it may save):
+// best[j] covers pieces 0..j-1.
 std::vector<int> optimalCutsAnyCount(const Splitter& sp, const SortieSettings& s) {
   const int m = sp.sweeps();
-  std::vector<double> best(m + 1, kInf);
+  std::vector<std::pair<int, double>> best(m + 1, {std::numeric_limits<int>::max(), kInf});
   std::vector<int> from(m + 1, -1);
-  best[0] = 0.0;
+  best[0] = {0, 0.0};
   for (int j = 1; j <= m; ++j)
     for (int a = j - 1; a >= 0; --a) {
       const double c = sp.cost(a, j - 1, s.overhead_j);
       if (c > s.budget_j) break;  // a longer run only costs more (energies are positive)
-      if (best[a] + c < best[j]) {
-        best[j] = best[a] + c;
+      if (!std::isfinite(best[a].second)) continue;
+      const std::pair<int, double> cand{best[a].first + 1, best[a].second + c};
+      if (cand < best[j]) {
+        best[j] = cand;
         from[j] = a;
       }
     }
-  if (!std::isfinite(best[m])) throw std::runtime_error("no split keeps every sortie within " + std::to_string(s.budget_j / 1000.0) + " kJ");
+  if (!std::isfinite(best[m].second)) throw std::runtime_error("no split keeps every sortie within " + std::to_string(s.budget_j / 1000.0) + " kJ");
   std::vector<int> starts;
   for (int j = m; j > 0; j = from[j]) starts.insert(starts.begin(), from[j]);
   return starts;

@@ -283,6 +283,7 @@ HtmlReport planReport(const PlanReportData& d) {
   }
   r.heading("Battery");
   planBattery(r, d);
+  addPlanSorties(r, d);
   return r;
 }
 

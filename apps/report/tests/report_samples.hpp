@@ -70,6 +70,44 @@ inline wr::PlanReportData samplePlan() {
   return d;
 }
 
+/// samplePlan split into three sorties flown by two vehicles (tracks, energies and schedule illustrative).
+inline wr::PlanReportData samplePlanWithSorties() {
+  wr::PlanReportData d = samplePlan();
+  wr::PlanSorties s;
+  const geometry::Point home(-20, -20);
+  for (int k = 0; k < 3; ++k) {
+    wr::PlanSortie so;
+    so.vehicle = k < 2 ? 1 : 2;
+    so.name = "vehicle " + std::to_string(so.vehicle) + ", sortie " + std::to_string(k < 2 ? k + 1 : 1);
+    so.file = "vehicle_" + std::to_string(so.vehicle) + "_sortie_0" + std::to_string(k < 2 ? k + 1 : 1) + ".plan";
+    so.track.push_back(home);
+    for (int i = 3 * k; i < 3 * k + 4 && i < 10; ++i) {
+      const double y = 10 + 20 * i;
+      so.track.push_back({i % 2 == 0 ? 10.0 : 300.0, y});
+      so.track.push_back({i % 2 == 0 ? 300.0 : 10.0, y});
+    }
+    so.track.push_back(home);
+    so.energy_j = 40000.0 + 3000.0 * k;
+    so.time_s = 300.0 + 20.0 * k;
+    so.soc_landing_pct = 30.0 - 2.0 * k;
+    so.photos = 120 + 10 * k;
+    so.start_s = k == 0 ? 0.0 : k == 1 ? 420.0 : 30.0;
+    so.delay_s = k == 2 ? 10.0 : 0.0;
+    s.sorties.push_back(so);
+  }
+  s.single_energy_j = 110000.0;
+  s.single_time_s = 800.0;
+  s.single_base = "mission.plan flown by the sample autopilot, unlimited battery";
+  s.vehicles = 2;
+  s.makespan_s = 740.0;
+  s.swap_time_s = 120.0;
+  s.launch_interval_s = 30.0;
+  s.separation_m = 15.0;
+  s.min_separation_m = 21.5;
+  d.sorties = s;
+  return d;
+}
+
 /// A 300 s log with phases, a drag-like residual growing with speed, and leg energies.
 inline wr::ValidationReportData sampleValidation() {
   wr::ValidationReportData d;

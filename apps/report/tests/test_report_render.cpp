@@ -174,6 +174,51 @@ TEST(ReportRender, ChecksCanFail) {  // negative controls: a blank page, a scrip
 }
 
 TEST(ReportRender, PlanReport) { checkReport(wr::planReport(samplePlan()), "sample-plan", 5); }
+// The sorties section (issue 23): every sortie in the legend with its own colour and dash
+// pattern on the sorties map, the per-sortie table, the price of splitting and the fleet schedule,
+// as Chromium shows them.
+void checkSortiesInDom(const std::string& dom, const std::vector<std::string>& names) {
+  const std::size_t map = dom.find("Sorties, each in its own colour and dash pattern");
+  ASSERT_NE(map, std::string::npos) << "no sorties map";
+  const std::string svg = dom.substr(map, dom.find("</svg>", map) - map);
+  for (const auto& n : names) EXPECT_NE(svg.find(">" + n + "<"), std::string::npos) << "legend lacks " << n;
+  std::set<std::string> styles;  // (stroke colour, dash) of the drawn tracks
+  for (std::size_t p = svg.find("<polyline"); p != std::string::npos; p = svg.find("<polyline", p + 1)) {
+    const std::string el = svg.substr(p, svg.find('>', p) - p);
+    const auto attr = [&](const std::string& a) {
+      const std::size_t q = el.find(a + "=\"");
+      return q == std::string::npos ? std::string() : el.substr(q + a.size() + 2, el.find('"', q + a.size() + 2) - q - a.size() - 2);
+    };
+    if (!attr("stroke").empty()) styles.insert(attr("stroke") + "|" + attr("stroke-dasharray"));
+  }
+  EXPECT_GE(styles.size(), names.size()) << "sorties drawn alike";
+  std::set<std::string> dashes;
+  for (const auto& st : styles) dashes.insert(st.substr(st.find('|')));
+  EXPECT_GE(dashes.size(), std::min<std::size_t>(names.size(), 5)) << "dash patterns repeat";
+  for (const char* text : {"Price of splitting", "state of charge at landing", "energy [Wh]", "time [min:s]", "photos", "Fleet schedule",
+                           "makespan", "Smallest separation found", "Fleet timeline"})
+    EXPECT_NE(dom.find(text), std::string::npos) << "missing: " << text;
+}
+
+TEST(ReportRender, PlanReportWithSortiesAndFleet) {
+  const auto d = samplePlanWithSorties();
+  checkReport(wr::planReport(d), "sample-plan-sorties", 7);
+  const Rendered page = render(renderDir() + "/sample-plan-sorties.html");
+  ASSERT_EQ(page.status, 0) << page.log;
+  checkSortiesInDom(page.dom, {"vehicle 1, sortie 1", "vehicle 1, sortie 2", "vehicle 2, sortie 1"});
+  EXPECT_NE(page.dom.find("12:20"), std::string::npos) << "the makespan (740 s) in min:s";
+}
+
+TEST(ReportRender, PlanCommandReportWithFleet) {
+  const std::string dir = renderDir();
+  fs::remove_all(dir + "/cli-plan-fleet-out");
+  checkCommandReport("plan '" + sourcePath("data/areas/iris_area.geojson") + "' --vehicle '" + sourcePath("tests/data/iris-small-battery.json") +
+                         "' --spacing 15 --vehicles 2 --out '" + dir + "/cli-plan-fleet-out'",
+                     "cli-plan-fleet", 7);
+  const Rendered page = render(dir + "/cli-plan-fleet.html");
+  checkSortiesInDom(page.dom, {"vehicle 1, sortie 1", "vehicle 1, sortie 2", "vehicle 2, sortie 1", "vehicle 2, sortie 2"});
+}
+
 TEST(ReportRender, ValidationReport) { checkReport(wr::validationReport(sampleValidation()), "sample-validation", 6); }
 TEST(ReportRender, TurnReport) { checkReport(wr::turnReport(sampleTurns()), "sample-turns", 2); }
 TEST(ReportRender, SpeedReport) { checkReport(wr::speedReport(sampleSpeed()), "sample-speed", 2); }

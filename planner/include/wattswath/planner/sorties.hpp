@@ -4,7 +4,7 @@
 /// into pieces of at most SortieSettings::piece_m) of the plan in the plan's order or reversed, whichever transits less (the next sortie resumes
 /// where the last one ended, mid-sweep if need be), from home and back
 /// to home along the shortest transit around the no-fly zones, within an energy budget. The cuts
-/// minimise the total energy (dynamic programming over the sweep pieces, closed-form energies: the
+/// take the fewest sorties and, among those (or for a given count), minimise the total energy (dynamic programming over the sweep pieces, closed-form energies: the
 /// plan's own leg energies, stop-to-stop transits, a fixed take-off and landing overhead); the
 /// naive split (each sortie as long as the budget allows, in flight order) is the baseline. The
 /// caller checks each sortie's mission with the flight model and shrinks the budget when one does
@@ -38,7 +38,7 @@ struct SortieSettings {
   double overhead_j = 0.0;  ///< [J] take-off and landing energy of every sortie, >= 0
   double scale = 1.0;       ///< [-] factor on the closed-form leg and transit energies (the flight model's over
                             ///< the closed form's on the whole plan), (0, 10]
-  int count = 0;            ///< [-] exactly this many sorties (0: as many as the least total energy needs)
+  int count = 0;            ///< [-] exactly this many sorties (0: the fewest that fit, with the least total energy among those)
   double piece_m = 50.0;    ///< [m] straight sweeps longer than twice this are cut into pieces of at most this,
                             ///< so a sortie may end mid-sweep and the next resume there, [5, 1e4]
   bool naive = false;       ///< true: the naive split (each sortie as long as the budget allows)

@@ -73,6 +73,35 @@ struct BatteryTrace {
   std::string model;            ///< which battery model, e.g. "Hwang et al. Eq. 19-21"
 };
 
+/// One sortie (one battery's flight) of a plan split for the battery, as drawn and tabled.
+struct PlanSortie {
+  std::string name;                    ///< e.g. "sortie 1" or "vehicle 2, sortie 1"
+  std::string file;                    ///< its mission file, e.g. "sortie_01.plan"
+  std::vector<geometry::Point> track;  ///< [m] local ENU, the flight as the autopilot model flies it
+  double energy_j = 0.0;               ///< [J] take-off command to landing
+  double time_s = 0.0;                 ///< [s] take-off command to landing
+  double soc_landing_pct = 0.0;        ///< [%] usable charge left on landing
+  int photos = -1;                     ///< [-] photos taken (-1: no camera)
+  int vehicle = 0;                     ///< [-] the fleet vehicle flying it, 1.. (0: no fleet)
+  double start_s = 0.0;                ///< [s] take-off command after the fleet's first (fleet only)
+  double delay_s = 0.0;                ///< [s] of its start that keeps the separation (fleet only)
+};
+
+/// The plan split into sorties, and (optionally) shared among a fleet flying at once.
+struct PlanSorties {
+  std::vector<PlanSortie> sorties;  ///< in flight order (fleet: by vehicle, then order)
+  double single_energy_j = 0.0;     ///< [J] the idealised one flight with an unlimited battery
+  double single_time_s = 0.0;       ///< [s] the same flight's time
+  std::string single_base;          ///< what that flight is, e.g. "mission.plan flown by arducopter-4 in one flight"
+  double reserve_pct = 25.0;        ///< [%] usable charge each sortie keeps on landing
+  int vehicles = 0;                 ///< [-] fleet size (0: no fleet)
+  double makespan_s = 0.0;          ///< [s] first take-off command to the last landing (fleet)
+  double swap_time_s = 0.0;         ///< [s] on the ground between two sorties of a vehicle (fleet)
+  double launch_interval_s = 0.0;   ///< [s] between the vehicles' first take-offs (fleet)
+  double separation_m = 0.0;        ///< [m] horizontal distance kept between airborne vehicles (fleet)
+  double min_separation_m = 0.0;    ///< [m] smallest found on the flown trajectories (fleet; inf: never two airborne)
+};
+
 /// What to colour the map path by.
 enum class PlanColour { Speed, Power };
 
@@ -92,10 +121,15 @@ struct PlanReportData {
   std::vector<PlanBaseline> baselines;               ///< baselines drawn as horizontal lines
   std::optional<BatteryTrace> battery;               ///< battery over the mission, when known
   std::vector<MissionMark> items;                    ///< the mission's items, numbered as in the mission file (map labels)
+  std::optional<PlanSorties> sorties;                ///< the split for the battery (plan --sorties), when asked
 };
 
 /// Builds the plan report (map, Table III-style breakdown + bar chart, candidates, battery).
 HtmlReport planReport(const PlanReportData& data);
+/// Appends the sorties section to `report`: a map with each sortie in its own colour and dash
+/// pattern (legend), a table per sortie, the total against the one unlimited-battery flight, and
+/// the fleet's schedule when there is one.
+void addPlanSorties(HtmlReport& report, const PlanReportData& data);
 /// The plan report as one HTML page.
 std::string planReportHtml(const PlanReportData& data);
 
