@@ -97,14 +97,15 @@ std::optional<std::string> firstBadPosition(const json& c, const std::string& ty
 }
 
 /// Why GDAL read no geometry from `g` (a GeoJSON geometry object): GDAL's own message on it alone,
-/// and the first position at fault; "" when GDAL reads it alone.
+/// and the first position at fault; "" when GDAL reads it alone without an error (it drops a ring
+/// it cannot read from a polygon, with an error only).
 std::string explainGeometry(const json& g) {
   if (g.is_null()) return "Feature without geometry (\"geometry\": null), expected a Polygon or MultiPolygon";
   if (!g.is_object() || !g.contains("type") || !g["type"].is_string()) return "geometry without a \"type\"";
   const std::string type = g["type"].get<std::string>();
   QuietGdal quiet;
   const std::unique_ptr<OGRGeometry> back(OGRGeometryFactory::createFromGeoJson(g.dump().c_str()));
-  if (back) return "";  // GDAL reads it alone: nothing to explain
+  if (back && !quiet.failed()) return "";  // GDAL reads it alone: nothing to explain
   std::string what = type + " GDAL cannot read" + gdalSays();
   if (type == "GeometryCollection") return what;
   if (!g.contains("coordinates")) return what + ": no \"coordinates\"";

@@ -161,6 +161,13 @@ void noGeometry(long index, const std::string& name, const std::string& source, 
   out.notes.push_back(source + ": " + name + ": no geometry; ignored");
 }
 
+/// GDAL reported an error while reading a feature: its geometry may lack a part (GDAL drops a ring
+/// it cannot read and goes on), so the feature is refused, explained by the reader when it can.
+[[noreturn]] void brokenFeature(long index, const std::string& name, const std::string& source, const GdalRead& sel) {
+  const std::string why = sel.why_no_geometry ? sel.why_no_geometry(index) : std::string();
+  fail(source, name + ": " + (why.empty() ? "GDAL could not read it whole" + gdalSays() : why));
+}
+
 void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, RawArea& out, size_t& vertices) {
   const std::string lname = "layer \"" + std::string(layer.GetName()) + "\"";
   if (!sel.where.empty() && layer.SetAttributeFilter(sel.where.c_str()) != OGRERR_NONE) {
@@ -172,6 +179,7 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
   for (auto& feature : layer) {
     const long i = index++;
     const std::string name = (sel.layer_in_names ? lname + ", " : std::string()) + "feature " + std::to_string(i);
+    if (sel.strict && CPLGetLastErrorType() >= CE_Failure) brokenFeature(i, name, source, sel);  // raised fetching it
     OGRGeometry* g = feature->GetGeometryRef();
     if (!g) {
       noGeometry(i, name, source, sel, out);
@@ -191,6 +199,7 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
     if (role.empty()) role = fieldText(*feature, "name");
     OgrTarget target{source, role, sel.strict, out, vertices};
     addGeometry(*g, name, target, 0);
+    if (sel.strict) CPLErrorReset();
   }
   // Drivers report a broken feature or a filter that fails on the data (a GeoPackage evaluates
   // --where in SQLite only now) by ending the iteration with an error.
@@ -225,6 +234,11 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
     fail(source, "not a survey area file wattswath or GDAL can read" + gdalSays() +
                      "; expected GeoJSON, KML/KMZ, WKT, Shapefile, GeoPackage, GML, GPX, CSV with a WKT column, "
                      "QGC .plan / .waypoints or Mission Planner .poly");
+  }
+  // GeoJSON is parsed whole when opened: an error then (a ring dropped) is the file's, located by the reader.
+  if (sel.strict && quiet.failed()) {
+    const std::string why = sel.why_not_opened ? sel.why_not_opened() : std::string();
+    fail(source, why.empty() ? "GDAL could not read it whole" + gdalSays() : why);
   }
   RawArea out;
   size_t vertices = 0;

@@ -112,7 +112,8 @@ std::string firstBadToken(const std::string& s, size_t pos) {
 void checkAreaType(const OGRGeometry& g, const std::string& where) {
   const OGRwkbGeometryType t = wkbFlatten(g.getGeometryType());
   const bool area = t == wkbPolygon || t == wkbMultiPolygon || t == wkbCurvePolygon || t == wkbMultiSurface;
-  const std::string type = lowerAscii(OGRGeometryTypeToName(g.getGeometryType()));
+  std::string type = lowerAscii(OGRGeometryTypeToName(g.getGeometryType()));
+  type.erase(std::remove(type.begin(), type.end(), ' '), type.end());
   if (!area) throw SurveyAreaError(where + ": geometry type " + type + " is not an area (expected POLYGON or MULTIPOLYGON)");
   if (g.IsEmpty()) throw SurveyAreaError(where + ": " + type + " EMPTY has no area");
 }

@@ -39,9 +39,12 @@ class QuietGdal {
   }
   /// Warnings and errors GDAL reported in this scope (at most kKept, each once).
   const std::vector<std::string>& messages() const { return messages_; }
+  /// True when GDAL reported an error (not only warnings) in this scope since the last clear().
+  bool failed() const { return failed_; }
   /// Forgets the messages collected so far (before a step whose messages are quoted alone).
   void clear() {
     messages_.clear();
+    failed_ = false;
     CPLErrorReset();
   }
 
@@ -49,7 +52,9 @@ class QuietGdal {
   static constexpr size_t kKept = 4;
   static void CPL_STDCALL collect(CPLErr cls, CPLErrorNum, const char* msg) {
     auto* self = static_cast<QuietGdal*>(CPLGetErrorHandlerUserData());
-    if (!self || cls < CE_Warning || !msg || !*msg || self->messages_.size() >= kKept) return;
+    if (!self || cls < CE_Warning) return;
+    if (cls >= CE_Failure) self->failed_ = true;
+    if (!msg || !*msg || self->messages_.size() >= kKept) return;
     std::string m = msg;
     // Our in-memory file names (parseWithGdal) mean nothing to a user: the message is prefixed by the file's own.
     for (size_t at; (at = m.find("/vsimem/wattswath_area_")) != std::string::npos;) {
@@ -63,6 +68,7 @@ class QuietGdal {
   }
   QuietGdal* outer_;
   std::vector<std::string> messages_;
+  bool failed_ = false;
 };
 
 /// " (GDAL: <its messages in this scope, '; '-separated>)", or "" when GDAL said nothing.
