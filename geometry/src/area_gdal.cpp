@@ -156,7 +156,7 @@ std::unique_ptr<OGRCoordinateTransformation> toWgs84(OGRLayer& layer, const std:
 
 /// A feature without geometry: refused when the reader explains why (GeoJSON), else noted.
 void noGeometry(long index, const std::string& name, const std::string& source, const GdalRead& sel, RawArea& out) {
-  const std::string why = sel.why_no_geometry ? sel.why_no_geometry(index) : std::string();
+  const std::string why = sel.why_no_geometry && sel.where.empty() ? sel.why_no_geometry(index) : std::string();
   if (!why.empty()) fail(source, name + ": " + why);
   out.notes.push_back(source + ": " + name + ": no geometry; ignored");
 }
@@ -164,7 +164,7 @@ void noGeometry(long index, const std::string& name, const std::string& source, 
 /// GDAL reported an error while reading a feature: its geometry may lack a part (GDAL drops a ring
 /// it cannot read and goes on), so the feature is refused, explained by the reader when it can.
 [[noreturn]] void brokenFeature(long index, const std::string& name, const std::string& source, const GdalRead& sel) {
-  const std::string why = sel.why_no_geometry ? sel.why_no_geometry(index) : std::string();
+  const std::string why = sel.why_no_geometry && sel.where.empty() ? sel.why_no_geometry(index) : std::string();
   fail(source, name + ": " + (why.empty() ? "GDAL could not read it whole" + gdalSays() : why));
 }
 
@@ -177,7 +177,9 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
   CPLErrorReset();
   long index = 0;
   for (auto& feature : layer) {
-    const long i = index++;
+    // With --where the n-th feature read is not the file's n-th: named by its FID, not explained by position.
+    const long i = sel.where.empty() ? index : static_cast<long>(feature->GetFID());
+    ++index;
     const std::string name = (sel.layer_in_names ? lname + ", " : std::string()) + "feature " + std::to_string(i);
     if (sel.strict && CPLGetLastErrorType() >= CE_Failure) brokenFeature(i, name, source, sel);  // raised fetching it
     OGRGeometry* g = feature->GetGeometryRef();
