@@ -102,7 +102,7 @@ std::optional<std::string> firstBadPosition(const json& c, const std::string& ty
 std::string explainGeometry(const json& g) {
   if (g.is_null()) return "Feature without geometry (\"geometry\": null), expected a Polygon or MultiPolygon";
   if (!g.is_object() || !g.contains("type") || !g["type"].is_string()) return "geometry without a \"type\"";
-  const std::string type = g["type"].get<std::string>();
+  const std::string type = g.at("type").get<std::string>();
   QuietGdal quiet;
   const std::unique_ptr<OGRGeometry> back(OGRGeometryFactory::createFromGeoJson(g.dump().c_str()));
   if (back && !quiet.failed()) return "";  // GDAL reads it alone: nothing to explain
@@ -110,16 +110,15 @@ std::string explainGeometry(const json& g) {
   if (type == "GeometryCollection") return what;
   if (!g.contains("coordinates")) return what + ": no \"coordinates\"";
   std::vector<size_t> at;
-  if (auto bad = firstBadPosition(g["coordinates"], type, at)) return what + ": " + *bad;
+  if (auto bad = firstBadPosition(g.at("coordinates"), type, at)) return what + ": " + *bad;
   if (type == "Polygon" || type == "MultiPolygon") return what + ": expected rings of at least 4 positions";
   return what;
 }
 
 /// The GeoJSON object of feature `i` as GDAL numbers them (a bare geometry or Feature is feature 0).
 const json* featureJson(const json& j, long i) {
-  const std::string type = j["type"].get<std::string>();
-  if (type != "FeatureCollection") return i == 0 ? &j : nullptr;
-  const json& fs = j["features"];
+  if (j.at("type") != "FeatureCollection") return i == 0 ? &j : nullptr;
+  const json& fs = j.at("features");
   return i >= 0 && static_cast<size_t>(i) < fs.size() ? &fs[static_cast<size_t>(i)] : nullptr;
 }
 
@@ -127,14 +126,15 @@ const json* featureJson(const json& j, long i) {
 std::string whyNoGeometry(const json& j, long i) {
   const json* f = featureJson(j, i);
   if (!f) return "";
-  if (!f->is_object() || (*f)["type"] != "Feature") return explainGeometry(*f);
-  return explainGeometry(f->contains("geometry") ? (*f)["geometry"] : json());
+  const auto type = f->is_object() ? f->find("type") : f->end();
+  if (type == f->end() || *type != "Feature") return explainGeometry(*f);
+  const auto g = f->find("geometry");
+  return explainGeometry(g != f->end() ? *g : json());
 }
 
 /// Why GDAL opened nothing: the first feature whose geometry it cannot read, or GDAL's message.
 std::string whyNotOpened(const json& j) {
-  const std::string type = j["type"].get<std::string>();
-  const size_t n = type == "FeatureCollection" ? j["features"].size() : 1;
+  const size_t n = j.at("type") == "FeatureCollection" ? j.at("features").size() : 1;
   for (size_t i = 0; i < n; ++i) {
     const std::string why = whyNoGeometry(j, static_cast<long>(i));
     if (!why.empty()) return "feature " + std::to_string(i) + ": " + why;

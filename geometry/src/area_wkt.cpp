@@ -85,15 +85,14 @@ std::string firstBadToken(const std::string& s, size_t pos) {
   int depth = 0;
   for (size_t i = pos; i < s.size();) {
     const char c = s[i];
-    if (c == '(' || c == ')' || c == ',' || std::isspace(static_cast<unsigned char>(c))) {
+    if (c == '(' || c == ')' || c == ',' || c == ';' || std::isspace(static_cast<unsigned char>(c))) {
       depth += c == '(' ? 1 : c == ')' ? -1 : 0;
       if (depth == 0 && c == ')') return "";
       ++i;
       continue;
     }
-    const size_t end = std::min(s.find_first_of("(),; \t\r\n", i), s.size());
+    const size_t end = std::min(s.find_first_of("(),; \t\r\n\v\f", i), s.size());  // > i: s[i] is none of them
     const std::string tok = s.substr(i, end - i);
-    const std::string at = lineAt(s, i) + " (offset " + std::to_string(i) + ")";
     char* stop = nullptr;
     const double v = std::strtod(tok.c_str(), &stop);
     const bool number = !tok.empty() && stop == tok.c_str() + tok.size();
@@ -101,8 +100,9 @@ std::string firstBadToken(const std::string& s, size_t pos) {
     const std::string word = lowerAscii(tok);
     const bool keyword = !number && (depth == 0 || (next < s.size() && s[next] == '(') || word == "empty" || word == "z" ||
                                      word == "m" || word == "zm");
-    if (number && !std::isfinite(v)) return at + ": non-finite coordinate \"" + tok + "\"; expected finite numbers";
-    if (!number && !keyword) return at + ": \"" + tok + "\" is not a number; expected coordinates x y[ z]";
+    auto at = [&] { return lineAt(s, i) + " (offset " + std::to_string(i) + ")"; };
+    if (number && !std::isfinite(v)) return at() + ": non-finite coordinate \"" + tok + "\"; expected finite numbers";
+    if (!number && !keyword) return at() + ": \"" + tok + "\" is not a number; expected coordinates x y[ z]";
     i = end;
   }
   return "";

@@ -108,6 +108,9 @@ TEST(AreaTextGdal, WktParenthesesAreCheckedBeforeGdal) {
   EXPECT_NE(e.find("deep.wkt: line 1: parentheses nested more than 64 deep at offset 64"), std::string::npos) << e;
   e = parseError("POLYGON ((7 45, 7.1 45, 7.1 45.1, 7 45)))", "extra.wkt");
   EXPECT_NE(e.find("extra.wkt: line 1: ')' at offset 40 closes nothing"), std::string::npos) << e;
+  // fuzz_area: a ';' inside a geometry GDAL refused looped for ever while the bad token was sought.
+  e = parseError("POLYGON ((7 45;, 7.1 45, 7.1 45.1, 7 45))", "semicolon.wkt");
+  EXPECT_NE(e.find("semicolon.wkt: line 1, geometry 0 at offset 0"), std::string::npos) << e;
   e = parseError("POLYGON ((7 45, 7.1 45, seven 45.1, 7 45))", "word.wkt");
   EXPECT_NE(e.find("word.wkt: geometry 0, line 1 (offset 24): \"seven\" is not a number"), std::string::npos) << e;
 }
