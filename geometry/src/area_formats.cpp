@@ -126,10 +126,10 @@ const json* featureJson(const json& j, long i) {
 std::string whyNoGeometry(const json& j, long i) {
   const json* f = featureJson(j, i);
   if (!f) return "";
-  const auto type = f->is_object() ? f->find("type") : f->end();
-  if (type == f->end() || *type != "Feature") return explainGeometry(*f);
-  const auto g = f->find("geometry");
-  return explainGeometry(g != f->end() ? *g : json());
+  // A member without "type" but with "geometry" is taken as the Feature it was meant to be, as GDAL does.
+  const bool feature = f->is_object() && (f->value("type", json()) == "Feature" || (!f->contains("type") && f->contains("geometry")));
+  if (!feature) return explainGeometry(*f);
+  return explainGeometry(f->value("geometry", json()));
 }
 
 /// Why GDAL opened nothing: the first feature whose geometry it cannot read, or GDAL's message.

@@ -45,6 +45,16 @@ TEST(AreaTextGdal, GeoJsonRingGdalDropsIsRefusedWithFeatureRingVertexAndValue) {
   EXPECT_NE(e.find("hole 0, vertex 1: expected a position [lon, lat] of numbers, got [7.0106,\"x\"]"), std::string::npos) << e;
 }
 
+TEST(AreaTextGdal, GeoJsonFeatureWithoutTypeIsExplainedNotAnAssertion) {
+  // fuzz_area: a feature without "type" whose ring GDAL dropped was looked up with the const
+  // operator[] of a missing key (an assertion in nlohmann, undefined behaviour in a release build).
+  const std::string text = R"({"type":"FeatureCollection","features":[{"tyep":"Featurd","properties":{"role":"no-fly"},
+    "geometry":{"type":"Polygon","coordinates":[[[10.0005,43.0005],[10.001,43.0005],[10.001,"x"],[10.0005,43.0005]]]}}]})";
+  const std::string e = parseError(text, "untyped.geojson");
+  EXPECT_NE(e.find("untyped.geojson: feature 0: Polygon GDAL cannot read"), std::string::npos) << e;
+  EXPECT_NE(e.find("outer boundary, vertex 2: expected a position [lon, lat] of numbers, got [10.001,\"x\"]"), std::string::npos) << e;
+}
+
 TEST(AreaTextGdal, GeoJsonFeatureWithoutGeometryAndNonAreaTypesAreRefused) {
   std::string e = parseError(R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":null}]})",
                              "null.geojson");
