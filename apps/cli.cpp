@@ -29,8 +29,8 @@ CLI::Option* addJsonFlag(CLI::App* cmd, bool& json) {
 }
 
 void addAreaSelectOptions(CLI::App* cmd, std::string& layer, std::string& where) {
-  cmd->add_option("--layer", layer, "GIS area files (GeoPackage, Shapefile, KMZ, GPX, ...): read only this layer");
-  cmd->add_option("--where", where, "GIS area files: read only features matching this OGR SQL filter, e.g. \"name = 'field 3'\"");
+  cmd->add_option("--layer", layer, "area files GDAL reads (GeoJSON, KML/KMZ, GeoPackage, Shapefile, GPX, ...): read only this layer");
+  cmd->add_option("--where", where, "area files GDAL reads (all but WKT, QGC and Mission Planner files): read only features matching this OGR SQL filter, e.g. \"name = 'field 3'\"");
 }
 
 std::string formatNumber(double x) {

@@ -1,11 +1,12 @@
 // Geometry benchmarks: boustrophedon decomposition and candidate generation (boustrophedon at one
 // angle, all cells, and spiral) for the real IRIS survey area with its no-fly zone and for a
 // synthetic 100 ha field with 10 holes. Baseline in the same run: the same 100 ha field without
-// holes. Run: build/bin/bench_geometry (docs/performance.md, section "Geometry").
+// holes; and reading the bundled area files. Run: build/bin/bench_geometry (docs/performance.md, section "Geometry").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "wattswath/geometry/check.hpp"
 #include "wattswath/geometry/coverage.hpp"
@@ -87,5 +88,19 @@ void BM_Decompose_IrisArea_NoFly(benchmark::State& st) { decompose(st, irisArea(
 void BM_Candidates_IrisArea_NoFly(benchmark::State& st) { candidates(st, irisArea()); }
 BENCHMARK(BM_Decompose_IrisArea_NoFly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Candidates_IrisArea_NoFly)->Unit(benchmark::kMillisecond);
+
+/// Reading one area file (read, GDAL/OGR parse, projection, CGAL validation, no-fly subtraction).
+void readArea(benchmark::State& st, const char* relative) {
+  const std::string path = std::string(WATTSWATH_SOURCE_DIR) + "/" + relative;
+  for (auto _ : st) benchmark::DoNotOptimize(g::readSurveyArea(path).area());
+}
+void BM_ReadArea_IrisGeoJson(benchmark::State& st) { readArea(st, "data/areas/iris_area.geojson"); }
+void BM_ReadArea_ESpiralGeoJson(benchmark::State& st) { readArea(st, "data/areas/espiral_rectangle.geojson"); }
+void BM_ReadArea_FieldKml(benchmark::State& st) { readArea(st, "tests/data/areas/field.kml"); }
+void BM_ReadArea_FieldWkt(benchmark::State& st) { readArea(st, "tests/data/areas/field.wkt"); }
+BENCHMARK(BM_ReadArea_IrisGeoJson)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ReadArea_ESpiralGeoJson)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ReadArea_FieldKml)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ReadArea_FieldWkt)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

@@ -166,12 +166,12 @@ TEST(Regression, KmlEmptyClosingTagOverflowedTheStack) {
 TEST(Regression, AreaVertexOutOfRangeReportedAsFrameOrigin) {
   std::string m = areaError(R"({"type": "Polygon", "coordinates": [[[7, 45], [187, 45], [7.002, 45.002], [7, 45]]]})",
                             "a.geojson");
-  EXPECT_NE(m.find("a.geojson: geometry, outer boundary, vertex 1: longitude 187 deg is outside [-180, 180]"),
+  EXPECT_NE(m.find("a.geojson: feature 0, outer boundary, vertex 1: longitude 187 deg is outside [-180, 180]"),
             std::string::npos) << m;
   m = areaError(R"({"type": "Polygon", "coordinates": [[[7, 45], [7.002, 45], [7.002, 45.002], [7, 45]],
                     [[7.001, 45.001], [7.0011, 1e308], [7.0012, 45.001], [7.001, 45.001]]]})",
                 "b.geojson");
-  EXPECT_NE(m.find("b.geojson: geometry, hole 0, vertex 1: latitude 1e+308 deg is outside [-90, 90]"), std::string::npos)
+  EXPECT_NE(m.find("b.geojson: feature 0, hole 0, vertex 1: latitude 1e+308 deg is outside [-90, 90]"), std::string::npos)
       << m;
 }
 

@@ -1,9 +1,10 @@
-// libFuzzer target: our own survey-area readers (GeoJSON, KML, WKT, QGC WPL 110, QGC .plan,
-// Mission Planner .poly) on arbitrary bytes, each format forced in turn and then decided by the
-// content. GDAL's drivers (AreaFormat::Gdal) are not forced here: GDAL is fuzzed by OSS-Fuzz, and
-// text in memory reaches it only as a GeoJSON whose "crs" is not WGS84. Any std::exception is an accepted
-// answer; a crash, a sanitizer report or an accepted area with a non-finite or non-positive area
-// is a finding.
+// libFuzzer target: the survey-area text readers (GeoJSON, KML and WKT: our pre-checks, then
+// GDAL's GeoJSON and LIBKML drivers and OGR's WKT reader; QGC WPL 110, QGC .plan and Mission
+// Planner .poly: our own readers) on arbitrary bytes, each format forced in turn and then decided
+// by the content. GDAL's other drivers (AreaFormat::Gdal) are not forced here: GDAL itself is fuzzed
+// by OSS-Fuzz; what is fuzzed here is our use of it (message capture, dropped parts, reprojection).
+// Any std::exception is an accepted answer; a crash, a sanitizer report or an accepted area with a
+// non-finite or non-positive area is a finding.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>

@@ -1,15 +1,17 @@
-// Survey area format parsers: GeoJSON, KML, WKT and QGC WPL 110 text -> RawArea (lon/lat or
-// metres, labelled for messages; area_internal.hpp). The read pipeline that calls them is in
-// area_readers.cpp. No CGAL here.
+// Survey areas in GeoJSON and KML text: the checks GDAL cannot do safely (JSON nesting and syntax,
+// XML DOCTYPE / entity declarations and element nesting), then GDAL's drivers (area_gdal.cpp); a
+// GeoJSON geometry GDAL drops or refuses is located here (feature, ring, vertex, value) for the
+// message. WKT is in area_wkt.cpp, the read pipeline in area_readers.cpp. No CGAL here.
 #include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <cstdlib>
-#include <sstream>
+#include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
+#include <ogr_geometry.h>
 
 #include "area_internal.hpp"
+#include "gdal_util.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 
 namespace wattswath::geometry {
@@ -49,206 +51,145 @@ namespace {
   throw SurveyAreaError(source + ": " + what);
 }
 
-
-// ---------------------------------------------------------------- GeoJSON
 using nlohmann::json;
 
-/// A value as quoted in messages: scalars as written, arrays and objects by size only, so that a
-/// value nested deeply is never dumped recursively.
+/// A value as quoted in messages: scalars as written, short arrays of scalars as written, other
+/// arrays and objects by size only, so that a value nested deeply is never dumped recursively.
 std::string brief(const json& v) {
+  const bool flat = v.is_array() && v.size() <= 4 && std::none_of(v.begin(), v.end(), [](const json& e) { return e.is_structured(); });
+  if (flat) return v.dump();
   if (v.is_array()) return "an array of " + std::to_string(v.size()) + " element(s)";
   if (v.is_object()) return "an object of " + std::to_string(v.size()) + " member(s)";
   return v.dump();
 }
 
-LabeledRing geoJsonRing(const json& coords, const std::string& name, const std::string& source,
-                        std::vector<std::string>& notes) {
-  if (!coords.is_array()) fail(source, name + ": coordinates must be an array of [lon, lat] positions");
-  LabeledRing r;
-  r.name = name;
-  for (size_t i = 0; i < coords.size(); ++i) {
-    const json& p = coords[i];
-    const std::string label = "vertex " + std::to_string(i);
-    if (!p.is_array() || p.size() < 2 || !p[0].is_number() || !p[1].is_number()) {
-      fail(source, name + ", " + label + ": expected a position [lon, lat] of numbers, got " + brief(p));
+// ---------------------------------------------------------------- GeoJSON: locating what GDAL drops
+/// "outer boundary, vertex 3" (Polygon) / "polygon 1, hole 0, vertex 3" (MultiPolygon) for an
+/// index path into "coordinates", else "coordinates[i][j]...".
+std::string positionName(const std::string& type, const std::vector<size_t>& at) {
+  auto ring = [](size_t r) { return r == 0 ? std::string("outer boundary") : "hole " + std::to_string(r - 1); };
+  if (type == "Polygon" && at.size() == 2) return ring(at[0]) + ", vertex " + std::to_string(at[1]);
+  if (type == "MultiPolygon" && at.size() == 3) {
+    return "polygon " + std::to_string(at[0]) + ", " + ring(at[1]) + ", vertex " + std::to_string(at[2]);
+  }
+  std::string s = "coordinates";
+  for (size_t i : at) s += "[" + std::to_string(i) + "]";
+  return s;
+}
+
+/// The first position in `c` that is not [lon, lat(, alt)] of numbers, or the first empty array,
+/// described; nullopt when all are. Recursion is bounded by the JSON nesting check.
+std::optional<std::string> firstBadPosition(const json& c, const std::string& type, std::vector<size_t>& at) {
+  if (!c.is_array()) return positionName(type, at) + " = " + brief(c) + ", expected an array";
+  if (c.empty()) return positionName(type, at) + " is an empty array, expected [lon, lat] positions or non-empty arrays of them";
+  const bool position = std::any_of(c.begin(), c.end(), [](const json& e) { return !e.is_array(); });
+  if (position) {
+    const bool numbers = c.size() >= 2 && std::all_of(c.begin(), c.end(), [](const json& e) { return e.is_number(); });
+    if (numbers) return std::nullopt;
+    return positionName(type, at) + ": expected a position [lon, lat] of numbers, got " + brief(c);
+  }
+  for (size_t i = 0; i < c.size(); ++i) {
+    at.push_back(i);
+    if (auto bad = firstBadPosition(c[i], type, at)) return bad;
+    at.pop_back();
+  }
+  return std::nullopt;
+}
+
+/// Why GDAL read no geometry from `g` (a GeoJSON geometry object): GDAL's own message on it alone,
+/// and the first position at fault; "" when GDAL reads it alone without an error (it drops a ring
+/// it cannot read from a polygon, with an error only).
+std::string explainGeometry(const json& g) {
+  if (g.is_null()) return "Feature without geometry (\"geometry\": null), expected a Polygon or MultiPolygon";
+  if (!g.is_object() || !g.contains("type") || !g["type"].is_string()) return "geometry without a \"type\"";
+  const std::string type = g.at("type").get<std::string>();
+  QuietGdal quiet;
+  const std::unique_ptr<OGRGeometry> back(OGRGeometryFactory::createFromGeoJson(g.dump().c_str()));
+  if (back && !quiet.failed()) return "";  // GDAL reads it alone: nothing to explain
+  std::string what = type + " GDAL cannot read" + gdalSays();
+  if (type == "GeometryCollection") return what;
+  if (!g.contains("coordinates")) return what + ": no \"coordinates\"";
+  std::vector<size_t> at;
+  if (auto bad = firstBadPosition(g.at("coordinates"), type, at)) return what + ": " + *bad;
+  if (type == "Polygon" || type == "MultiPolygon") return what + ": expected rings of at least 4 positions";
+  return what;
+}
+
+/// The GeoJSON object of feature `i` as GDAL numbers them (a bare geometry or Feature is feature 0).
+const json* featureJson(const json& j, long i) {
+  if (j.at("type") != "FeatureCollection") return i == 0 ? &j : nullptr;
+  const json& fs = j.at("features");
+  return i >= 0 && static_cast<size_t>(i) < fs.size() ? &fs[static_cast<size_t>(i)] : nullptr;
+}
+
+/// Why feature `i` has no geometry in GDAL's reading.
+std::string whyNoGeometry(const json& j, long i) {
+  const json* f = featureJson(j, i);
+  if (!f) return "";
+  // A member without "type" but with "geometry" is taken as the Feature it was meant to be, as GDAL does.
+  const bool feature = f->is_object() && (f->value("type", json()) == "Feature" || (!f->contains("type") && f->contains("geometry")));
+  if (!feature) return explainGeometry(*f);
+  return explainGeometry(f->value("geometry", json()));
+}
+
+/// Why GDAL opened nothing: the first feature whose geometry it cannot read, or GDAL's message.
+std::string whyNotOpened(const json& j) {
+  const size_t n = j.at("type") == "FeatureCollection" ? j.at("features").size() : 1;
+  for (size_t i = 0; i < n; ++i) {
+    const std::string why = whyNoGeometry(j, static_cast<long>(i));
+    if (!why.empty()) return "feature " + std::to_string(i) + ": " + why;
+  }
+  return "";
+}
+
+// ---------------------------------------------------------------- KML: what expat must not see
+/// Throws for a DOCTYPE (entity declarations: an entity expansion or external entity attack), for
+/// element nesting deeper than kMaxXmlDepth, and, naming the line and element, for a tag without a
+/// name, a closing tag that does not match and an end of file inside an element (expat would say
+/// only "mismatched tag" or "no element found"). Comments, CDATA, processing instructions and
+/// quoted attribute values are skipped; the rest of XML is GDAL's (expat) to check.
+void checkXmlSafe(const std::string& text, const std::string& source) {
+  auto lineAt = [&](size_t p) { return "line " + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(p), '\n')); };
+  auto skipTo = [&](size_t from, const std::string& end, const char* what) {
+    const size_t e = text.find(end, from);
+    if (e == std::string::npos) fail(source, lineAt(from) + ": unterminated " + what);
+    return e + end.size();
+  };
+  std::vector<std::string> open;  // names of the open elements (at most kMaxXmlDepth)
+  size_t i = 0;
+  while ((i = text.find('<', i)) != std::string::npos) {
+    if (text.compare(i, 4, "<!--") == 0) { i = skipTo(i + 4, "-->", "comment"); continue; }
+    if (text.compare(i, 9, "<![CDATA[") == 0) { i = skipTo(i + 9, "]]>", "CDATA"); continue; }
+    if (text.compare(i, 2, "<?") == 0) { i = skipTo(i + 2, "?>", "processing instruction"); continue; }
+    if (text.compare(i, 2, "<!") == 0) {
+      fail(source, lineAt(i) + ": \"" + text.substr(i, std::min<size_t>(12, text.size() - i)) +
+                       "...\": a DOCTYPE or entity declaration; KML has none, and entities are refused (they can expand "
+                       "without bound or read other files): remove it");
     }
-    r.pts.emplace_back(p[0].get<double>(), p[1].get<double>());
-    r.labels.push_back(label);
-  }
-  closeRing(r, notes, source);
-  return r;
-}
-
-LabeledPolygon geoJsonPolygon(const json& rings, const std::string& name, const std::string& source,
-                              std::vector<std::string>& notes) {
-  if (!rings.is_array() || rings.empty()) fail(source, name + ": Polygon coordinates must be a non-empty array of rings");
-  LabeledPolygon poly;
-  poly.outer = geoJsonRing(rings[0], name + ", outer boundary", source, notes);
-  for (size_t k = 1; k < rings.size(); ++k) {
-    poly.holes.push_back(geoJsonRing(rings[k], name + ", hole " + std::to_string(k - 1), source, notes));
-  }
-  return poly;
-}
-
-void geoJsonGeometry(const json& g, const std::string& name, const std::string& role, const std::string& source,
-                     RawArea& out) {
-  if (!g.is_object() || !g.contains("type") || !g["type"].is_string()) fail(source, name + ": geometry without a \"type\"");
-  const std::string type = g["type"].get<std::string>();
-  auto& dest = isNoFlyName(role) ? out.no_fly : out.polygons;
-  if (type == "GeometryCollection") {
-    const json& gs = g.value("geometries", json::array());
-    for (size_t i = 0; i < gs.size(); ++i) geoJsonGeometry(gs[i], name + ", geometry " + std::to_string(i), role, source, out);
-    return;
-  }
-  if (!g.contains("coordinates")) fail(source, name + ": " + type + " without \"coordinates\"");
-  const json& c = g["coordinates"];
-  if (type == "Polygon") {
-    dest.push_back(geoJsonPolygon(c, name, source, out.notes));
-  } else if (type == "MultiPolygon") {
-    if (!c.is_array()) fail(source, name + ": MultiPolygon coordinates must be an array of polygons");
-    for (size_t i = 0; i < c.size(); ++i) dest.push_back(geoJsonPolygon(c[i], name + ", polygon " + std::to_string(i), source, out.notes));
-  } else if (type == "Point" && lowerAscii(role) == "home") {
-    if (!c.is_array() || c.size() < 2 || !c[0].is_number() || !c[1].is_number()) fail(source, name + ": home Point needs [lon, lat]");
-    out.home = GeoPoint{c[1].get<double>(), c[0].get<double>(), c.size() > 2 && c[2].is_number() ? c[2].get<double>() : 0.0};
-  } else {
-    fail(source, name + ": geometry type " + type +
-                     " is not an area (expected Polygon, MultiPolygon, or a Point with property role \"home\")");
-  }
-}
-
-void geoJsonFeature(const json& f, const std::string& name, const std::string& source, RawArea& out) {
-  std::string role;
-  if (f.contains("properties") && f["properties"].is_object()) {
-    const json& p = f["properties"];
-    if (p.contains("role") && p["role"].is_string()) role = p["role"].get<std::string>();
-    else if (p.contains("name") && p["name"].is_string()) role = p["name"].get<std::string>();  // as KML and GDAL formats
-  }
-  if (!f.contains("geometry") || f["geometry"].is_null()) fail(source, name + ": Feature without geometry");
-  geoJsonGeometry(f["geometry"], name, role, source, out);
-}
-
-// ---------------------------------------------------------------- KML
-struct XmlCursor {
-  const std::string& text;
-  size_t pos = 0;
-  int lineAt(size_t p) const { return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(std::min(p, text.size())), '\n')); }
-};
-
-std::string localName(const std::string& tag) {
-  const auto c = tag.find(':');
-  return c == std::string::npos ? tag : tag.substr(c + 1);
-}
-
-/// Parses "lon,lat[,alt] lon,lat[,alt] ..." (whitespace around commas tolerated).
-LabeledRing kmlCoordinates(const std::string& raw, const std::string& name, const std::string& source, int line,
-                           std::vector<std::string>& notes) {
-  std::string s;
-  s.reserve(raw.size());
-  // Drop whitespace adjacent to commas so that tuples are whitespace-separated tokens.
-  for (size_t i = 0; i < raw.size(); ++i) {
-    const char ch = raw[i];
-    if (std::isspace(static_cast<unsigned char>(ch))) {
-      size_t j = i;
-      while (j < raw.size() && std::isspace(static_cast<unsigned char>(raw[j]))) ++j;
-      const bool nearComma = (!s.empty() && s.back() == ',') || (j < raw.size() && raw[j] == ',');
-      if (!nearComma) s.push_back(' ');
-      i = j - 1;
-    } else {
-      s.push_back(ch);
+    size_t e = i + 1;
+    for (char quote = 0; e < text.size() && (quote || text[e] != '>'); ++e) {
+      if (quote && text[e] == quote) quote = 0;
+      else if (!quote && (text[e] == '"' || text[e] == '\'')) quote = text[e];
     }
-  }
-  LabeledRing r;
-  r.name = name;
-  std::istringstream in(s);
-  std::string tok;
-  int i = 0;
-  while (in >> tok) {
-    std::vector<double> v;
-    std::stringstream ts(tok);
-    std::string part;
-    bool ok = true;
-    while (std::getline(ts, part, ',')) {
-      char* end = nullptr;
-      const double d = std::strtod(part.c_str(), &end);
-      if (part.empty() || end != part.c_str() + part.size()) ok = false;
-      v.push_back(d);
+    if (e >= text.size()) fail(source, lineAt(i) + ": unterminated tag");
+    const bool closing = text[i + 1] == '/', selfClosing = !closing && text[e - 1] == '/';
+    const size_t nb = i + (closing ? 2 : 1);
+    const std::string name = text.substr(nb, text.find_first_of(" \t\r\n/>", nb) - nb);
+    if (name.empty()) fail(source, lineAt(i) + ": tag " + text.substr(i, e + 1 - i) + " has no element name");
+    if (closing) {
+      if (open.empty() || open.back() != name) {
+        fail(source, lineAt(i) + ": closing tag </" + name + "> does not match <" + (open.empty() ? "nothing" : open.back()) + ">");
+      }
+      open.pop_back();
+    } else if (!selfClosing) {
+      open.push_back(name);
+      if (open.size() > static_cast<size_t>(kMaxXmlDepth)) {
+        fail(source, lineAt(i) + ": XML elements nested more than " + std::to_string(kMaxXmlDepth) + " deep (the limit of an area file)");
+      }
     }
-    const std::string label = "vertex " + std::to_string(i);
-    if (!ok || v.size() < 2 || v.size() > 3) {
-      fail(source, "line " + std::to_string(line) + ": " + name + ", " + label + ": expected lon,lat[,alt], got \"" + tok + "\"");
-    }
-    r.pts.emplace_back(v[0], v[1]);
-    r.labels.push_back(label);
-    ++i;
+    i = e + 1;
   }
-  closeRing(r, notes, source);
-  return r;
-}
-
-// ---------------------------------------------------------------- WKT
-struct WktLexer {
-  const std::string& s;
-  const std::string& source;
-  size_t pos = 0;
-  void skip() {
-    while (pos < s.size() && (std::isspace(static_cast<unsigned char>(s[pos])) || s[pos] == ';')) ++pos;
-  }
-  bool atEnd() { skip(); return pos >= s.size(); }
-  [[noreturn]] void error(const std::string& what) const {
-    const int line = 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<long>(std::min(pos, s.size())), '\n'));
-    fail(source, "line " + std::to_string(line) + ": " + what);
-  }
-  std::string word() {
-    skip();
-    size_t b = pos;
-    while (pos < s.size() && (std::isalpha(static_cast<unsigned char>(s[pos])) || s[pos] == '_')) ++pos;
-    return s.substr(b, pos - b);
-  }
-  bool peek(char c) { skip(); return pos < s.size() && s[pos] == c; }
-  void expect(char c) {
-    if (!peek(c)) error(std::string("expected '") + c + "' at offset " + std::to_string(pos));
-    ++pos;
-  }
-  double number() {
-    skip();
-    const char* b = s.c_str() + pos;
-    char* e = nullptr;
-    const double d = std::strtod(b, &e);
-    if (e == b) error("expected a number at offset " + std::to_string(pos) + ", got \"" + s.substr(pos, 12) + "\"");
-    pos += static_cast<size_t>(e - b);
-    return d;
-  }
-};
-
-LabeledRing wktRing(WktLexer& lx, const std::string& name, int dims, std::vector<std::string>& notes) {
-  LabeledRing r;
-  r.name = name;
-  lx.expect('(');
-  int i = 0;
-  do {
-    const double x = lx.number(), y = lx.number();
-    for (int d = 2; d < dims; ++d) lx.number();
-    r.pts.emplace_back(x, y);
-    r.labels.push_back("vertex " + std::to_string(i++));
-    if (lx.peek(',')) { ++lx.pos; continue; }
-    break;
-  } while (true);
-  lx.expect(')');
-  closeRing(r, notes, lx.source);
-  return r;
-}
-
-LabeledPolygon wktPolygon(WktLexer& lx, const std::string& name, int dims, std::vector<std::string>& notes) {
-  LabeledPolygon p;
-  lx.expect('(');
-  p.outer = wktRing(lx, name + ", outer boundary", dims, notes);
-  int k = 0;
-  while (lx.peek(',')) {
-    ++lx.pos;
-    p.holes.push_back(wktRing(lx, name + ", hole " + std::to_string(k++), dims, notes));
-  }
-  lx.expect(')');
-  return p;
+  if (!open.empty()) fail(source, "unexpected end of file inside <" + open.back() + ">");
 }
 
 }  // namespace
@@ -269,180 +210,31 @@ json parseJsonBounded(const std::string& text, const std::string& source) {
   }
 }
 
-namespace {
-/// True when a GeoJSON "crs" member names something other than WGS84 lon/lat.
-bool hasOtherCrs(const json& j) {
-  if (!j.contains("crs") || !j["crs"].is_object()) return false;
-  const json& c = j["crs"];
-  const json* name = c.contains("properties") && c["properties"].is_object() && c["properties"].contains("name")
-                         ? &c["properties"]["name"] : nullptr;
-  if (!name || !name->is_string()) return true;  // a linked or odd CRS: GDAL decides
-  const std::string n = lowerAscii(name->get<std::string>());
-  for (const char* wgs : {"urn:ogc:def:crs:ogc:1.3:crs84", "urn:ogc:def:crs:epsg::4326", "epsg:4326", "ogc:crs84"}) {
-    if (n == wgs) return false;
-  }
-  return true;
-}
-}  // namespace
-
-RawArea parseGeoJson(const std::string& text, const std::string& source) {
+RawArea parseGeoJson(const std::string& text, const std::string& source, const GdalRead& sel) {
   const json j = parseJsonBounded(text, source);
   if (j.is_object() && j.contains("fileType") && j["fileType"] == "Plan") return parseQgcPlanJson(j, source);
-  if (j.is_object() && hasOtherCrs(j)) return parseWithGdal(text, source, GdalSelection{});
-  RawArea out;
   if (!j.is_object() || !j.contains("type") || !j["type"].is_string()) {
     fail(source, "GeoJSON object without a \"type\" (expected a FeatureCollection, Feature or geometry; a QGC plan has \"fileType\": \"Plan\")");
   }
-  const std::string type = j["type"].get<std::string>();
-  if (type == "FeatureCollection") {
-    const json& fs = j.value("features", json::array());
-    if (!fs.is_array()) fail(source, "\"features\" must be an array");
-    for (size_t i = 0; i < fs.size(); ++i) geoJsonFeature(fs[i], "feature " + std::to_string(i), source, out);
-  } else if (type == "Feature") {
-    geoJsonFeature(j, "feature 0", source, out);
-  } else {
-    geoJsonGeometry(j, "geometry", "", source, out);
+  if (j["type"] == "FeatureCollection" && !(j.contains("features") && j["features"].is_array())) {
+    fail(source, "FeatureCollection: \"features\" must be an array of Features");
   }
-  return out;
+  GdalRead r = sel;
+  r.drivers = {"GeoJSON"};
+  r.extension = ".geojson";
+  r.strict = true;
+  r.layer_in_names = false;
+  r.why_no_geometry = [&j](long i) { return whyNoGeometry(j, i); };
+  r.why_not_opened = [&j] { return whyNotOpened(j); };
+  return parseWithGdal(text, source, r);
 }
 
-RawArea parseKml(const std::string& text, const std::string& source) {
-  RawArea out;
-  XmlCursor cur{text};
-  std::vector<std::string> stack;  // local names of open elements
-  LabeledPolygon polygon;
-  bool inPolygon = false;
-  int placemark = -1, polyInPlacemark = 0, polygonCount = 0;
-  std::string placemarkName;
-  std::vector<LabeledPolygon> placemarkPolys;
-  size_t textStart = 0;
-  auto inside = [&](const char* name) { return std::find(stack.begin(), stack.end(), name) != stack.end(); };
-  while (true) {
-    const size_t lt = text.find('<', cur.pos);
-    if (lt == std::string::npos) break;
-    // The element's text is copied only at a closing tag: copying it at every '<' was quadratic in
-    // the number of CDATA sections in one element.
-    const size_t charsBegin = textStart;
-    auto chars = [&] { return text.substr(charsBegin, lt - charsBegin); };
-    if (text.compare(lt, 4, "<!--") == 0) {
-      const size_t e = text.find("-->", lt);
-      if (e == std::string::npos) fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": unterminated comment");
-      cur.pos = textStart = e + 3;
-      continue;
-    }
-    if (text.compare(lt, 9, "<![CDATA[") == 0) {
-      const size_t e = text.find("]]>", lt);
-      if (e == std::string::npos) fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": unterminated CDATA");
-      cur.pos = e + 3;  // CDATA stays part of the element text
-      continue;
-    }
-    const size_t gt = text.find('>', lt);
-    if (gt == std::string::npos) fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": unterminated tag");
-    std::string tag = text.substr(lt + 1, gt - lt - 1);
-    cur.pos = textStart = gt + 1;
-    if (!tag.empty() && (tag[0] == '?' || tag[0] == '!')) continue;
-    // "</>" is both: it starts and ends with the one '/', so decide on the closing slash first.
-    const bool closing = !tag.empty() && tag[0] == '/';
-    if (closing) tag.erase(0, 1);
-    const bool selfClosing = !closing && !tag.empty() && tag.back() == '/';
-    if (selfClosing) tag.pop_back();
-    if (trimSpace(tag).empty()) {
-      fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": tag <" + text.substr(lt + 1, gt - lt - 1) +
-                       "> has no element name");
-    }
-    const size_t sp = tag.find_first_of(" \t\r\n");
-    const std::string name = localName(trimSpace(tag.substr(0, sp)));
-    if (selfClosing) continue;
-    if (!closing) {
-      stack.push_back(name);
-      if (name == "Placemark") {
-        ++placemark;
-        polyInPlacemark = 0;
-        placemarkName.clear();
-        placemarkPolys.clear();
-      } else if (name == "Polygon") {
-        polygon = LabeledPolygon{};
-        inPolygon = true;
-      }
-      continue;
-    }
-    // Closing tag: `chars` is the element's text when it has no children.
-    if (stack.empty() || stack.back() != name) {
-      fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": closing tag </" + name + "> does not match <" +
-                       (stack.empty() ? std::string("nothing") : stack.back()) + ">");
-    }
-    stack.pop_back();
-    if (name == "name" && !stack.empty() && stack.back() == "Placemark") {
-      std::string n = chars();
-      const auto c0 = n.find("<![CDATA[");
-      if (c0 != std::string::npos) n = n.substr(c0 + 9, n.find("]]>") - c0 - 9);
-      placemarkName = trimSpace(n);
-    } else if (name == "coordinates" && inPolygon) {
-      const std::string where = (placemark >= 0 ? "placemark " + std::to_string(placemark) : std::string("document")) +
-                                ", polygon " + std::to_string(polygonCount);
-      if (inside("outerBoundaryIs")) {
-        polygon.outer = kmlCoordinates(chars(), where + ", outer boundary", source, cur.lineAt(lt), out.notes);
-      } else if (inside("innerBoundaryIs")) {
-        polygon.holes.push_back(kmlCoordinates(chars(), where + ", hole " + std::to_string(polygon.holes.size()), source,
-                                               cur.lineAt(lt), out.notes));
-      }
-    } else if (name == "Polygon") {
-      inPolygon = false;
-      if (polygon.outer.pts.empty()) fail(source, "line " + std::to_string(cur.lineAt(lt)) + ": Polygon without outerBoundaryIs coordinates");
-      ++polygonCount;
-      ++polyInPlacemark;
-      if (placemark >= 0 && inside("Placemark")) {
-        placemarkPolys.push_back(std::move(polygon));
-      } else {
-        out.polygons.push_back(std::move(polygon));
-      }
-    } else if (name == "Placemark") {
-      auto& dest = isNoFlyName(placemarkName) ? out.no_fly : out.polygons;
-      for (auto& p : placemarkPolys) dest.push_back(std::move(p));
-      placemarkPolys.clear();
-    }
-  }
-  if (!stack.empty()) fail(source, "unexpected end of file inside <" + stack.back() + ">");
-  return out;
-}
-
-RawArea parseWkt(const std::string& text, const std::string& source, bool geodetic) {
-  RawArea out;
-  out.geodetic = geodetic;
-  std::string s = text;
-  WktLexer lx{s, source};
-  int geometry = 0;
-  while (!lx.atEnd()) {
-    std::string w = lowerAscii(lx.word());
-    if (w == "srid") {  // EWKT prefix SRID=4326;
-      lx.expect('=');
-      lx.number();
-      continue;
-    }
-    if (w.empty()) lx.error("expected POLYGON or MULTIPOLYGON, got \"" + s.substr(lx.pos, 12) + "\"");
-    if (w != "polygon" && w != "multipolygon") lx.error("geometry type " + w + " is not an area (expected POLYGON or MULTIPOLYGON)");
-    int dims = 2;
-    size_t save = lx.pos;
-    const std::string mod = lowerAscii(lx.word());
-    if (mod == "z" || mod == "m") dims = 3;
-    else if (mod == "zm") dims = 4;
-    else if (mod == "empty") lx.error(w + " EMPTY has no area");
-    else lx.pos = save;
-    const std::string name = "geometry " + std::to_string(geometry++);
-    if (w == "polygon") {
-      out.polygons.push_back(wktPolygon(lx, name, dims, out.notes));
-    } else {
-      lx.expect('(');
-      int k = 0;
-      do {
-        out.polygons.push_back(wktPolygon(lx, name + ", polygon " + std::to_string(k++), dims, out.notes));
-        if (lx.peek(',')) { ++lx.pos; continue; }
-        break;
-      } while (true);
-      lx.expect(')');
-    }
-  }
-  return out;
+RawArea parseKml(const std::string& text, const std::string& source, const GdalRead& sel) {
+  checkXmlSafe(text, source);
+  GdalRead r = sel;
+  r.drivers = {"LIBKML", "KML"};
+  r.extension = ".kml";
+  return parseWithGdal(text, source, r);
 }
 
 }  // namespace detail

@@ -1,10 +1,13 @@
-// Survey areas through GDAL/OGR: every vector dataset GDAL opens (Shapefile, GeoPackage, KMZ,
-// GML, GPX tracks and routes, CSV with a WKT column, FlatGeobuf, GeoJSON in any CRS, ...), each
-// layer and feature reprojected to WGS84 lon/lat by GDAL's PROJ, then labelled for messages like
-// the other readers (area_internal.hpp). GDAL is private to this file.
+// Survey areas through GDAL/OGR: every vector dataset GDAL opens (GeoJSON, KML/KMZ, Shapefile,
+// GeoPackage, GML, GPX tracks and routes, CSV with a WKT column, FlatGeobuf, ...), each layer and
+// feature reprojected to WGS84 lon/lat by GDAL's PROJ, then labelled for messages (area_internal.hpp).
+// The pre-checks GDAL cannot do safely on GeoJSON and KML text are in area_formats.cpp, WKT in
+// area_wkt.cpp; GDAL's messages are collected (gdal_util.hpp), never printed.
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <cpl_error.h>
 #include <cpl_vsi.h>
@@ -21,8 +24,6 @@ namespace {
 
 /// Collections nested deeper than this are refused (a GeometryCollection bomb).
 constexpr int kMaxCollectionDepth = 16;
-/// Vertices over all features beyond which a file is refused (before validation's CGAL work).
-constexpr size_t kMaxVertices = 1000000;
 
 [[noreturn]] void fail(const std::string& source, const std::string& what) { throw SurveyAreaError(source + ": " + what); }
 
@@ -35,15 +36,7 @@ std::string fieldText(OGRFeature& f, const char* name) {
   return "";
 }
 
-/// What one feature's geometries are read into, and how they are named.
-struct FeatureContext {
-  const std::string& source;
-  std::string role;  ///< the feature's role (or name when it has no role)
-  RawArea& out;
-  size_t& vertices;
-};
-
-LabeledRing ringOf(const OGRSimpleCurve& c, const std::string& name, FeatureContext& fc) {
+LabeledRing ringOf(const OGRSimpleCurve& c, const std::string& name, OgrTarget& fc) {
   LabeledRing r;
   r.name = name;
   const int n = c.getNumPoints();
@@ -59,7 +52,7 @@ LabeledRing ringOf(const OGRSimpleCurve& c, const std::string& name, FeatureCont
   return r;
 }
 
-void addPolygon(const OGRPolygon& p, const std::string& name, FeatureContext& fc) {
+void addPolygon(const OGRPolygon& p, const std::string& name, OgrTarget& fc) {
   const OGRLinearRing* ext = p.getExteriorRing();
   if (!ext || ext->getNumPoints() == 0) fail(fc.source, name + ": polygon without an outer boundary (empty geometry)");
   LabeledPolygon poly;
@@ -70,11 +63,18 @@ void addPolygon(const OGRPolygon& p, const std::string& name, FeatureContext& fc
   (isNoFlyName(fc.role) ? fc.out.no_fly : fc.out.polygons).push_back(std::move(poly));
 }
 
-void addGeometry(const OGRGeometry& g, const std::string& name, FeatureContext& fc, int depth);
+void addGeometry(const OGRGeometry& g, const std::string& name, OgrTarget& fc, int depth);
+
+/// "LineString", "MultiPoint 25D": GDAL's name of the type without its spaces, as GeoJSON writes it.
+std::string typeName(const OGRGeometry& g) {
+  std::string n = OGRGeometryTypeToName(g.getGeometryType());
+  n.erase(std::remove(n.begin(), n.end(), ' '), n.end());
+  return n;
+}
 
 /// Lines (GPX tracks and routes, KML LineStrings) are rings: each line one ring, holes found by
 /// containment (OGRGeometryFactory::organizePolygons), so a track of outline + obstacle works.
-void addLines(const OGRGeometry& g, const std::string& name, FeatureContext& fc) {
+void addLines(const OGRGeometry& g, const std::string& name, OgrTarget& fc) {
   std::vector<OGRGeometry*> polys;
   auto addLine = [&](const OGRLineString& l) {
     auto* ring = new OGRLinearRing();
@@ -97,7 +97,7 @@ void addLines(const OGRGeometry& g, const std::string& name, FeatureContext& fc)
   addGeometry(*organized, name, fc, 1);
 }
 
-void addGeometry(const OGRGeometry& g, const std::string& name, FeatureContext& fc, int depth) {
+void addGeometry(const OGRGeometry& g, const std::string& name, OgrTarget& fc, int depth) {
   if (depth > kMaxCollectionDepth) {
     fail(fc.source, name + ": geometry collections nested more than " + std::to_string(kMaxCollectionDepth) + " deep");
   }
@@ -114,20 +114,28 @@ void addGeometry(const OGRGeometry& g, const std::string& name, FeatureContext& 
       addGeometry(*c.getGeometryRef(i), name + (t == wkbMultiPolygon ? ", polygon " : ", geometry ") + std::to_string(i), fc,
                   depth + 1);
     }
-  } else if (t == wkbLineString || t == wkbMultiLineString) {
+  } else if ((t == wkbLineString || t == wkbMultiLineString) && !fc.strict) {
     addLines(g, name, fc);
   } else if (t == wkbPoint && lowerAscii(fc.role) == "home") {
     const auto& p = *g.toPoint();
     fc.out.home = GeoPoint{p.getY(), p.getX(), p.Is3D() ? p.getZ() : 0.0};
-  } else if (t == wkbPoint || t == wkbMultiPoint) {
+  } else if ((t == wkbPoint || t == wkbMultiPoint) && !fc.strict) {
     fc.out.notes.push_back(fc.source + ": " + name + ": point ignored (only a point with role or name \"home\" is used)");
   } else {
-    fail(fc.source, name + ": geometry type " + OGRGeometryTypeToName(g.getGeometryType()) +
-                        " is not an area (expected Polygon, MultiPolygon, closed lines, or a home Point)");
+    fail(fc.source, name + ": geometry type " + typeName(g) + " is not an area (expected " +
+                        (fc.strict ? "Polygon, MultiPolygon, or a Point with property role \"home\")"
+                                   : "Polygon, MultiPolygon, closed lines, or a home Point)"));
   }
 }
 
-/// The transformation of a layer's CRS to WGS84 lon/lat, or none when it has no CRS (taken as WGS84).
+}  // namespace
+
+void addOgrGeometry(const OGRGeometry& g, const std::string& name, OgrTarget& t) { addGeometry(g, name, t, 0); }
+
+namespace {
+
+/// The transformation of a layer's CRS to WGS84 lon/lat, or none when it has no CRS (taken as
+/// WGS84) or is WGS84 lon/lat already (no PROJ round trip for a GeoJSON).
 std::unique_ptr<OGRCoordinateTransformation> toWgs84(OGRLayer& layer, const std::string& where) {
   const OGRSpatialReference* src = layer.GetSpatialRef();
   if (!src) return nullptr;
@@ -136,6 +144,8 @@ std::unique_ptr<OGRCoordinateTransformation> toWgs84(OGRLayer& layer, const std:
   wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   std::unique_ptr<OGRSpatialReference> s(src->Clone());
   s->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  const char* const sameOptions[] = {"IGNORE_DATA_AXIS_TO_SRS_AXIS_MAPPING=NO", "CRITERION=EQUIVALENT", nullptr};
+  if (s->IsSame(&wgs84, sameOptions)) return nullptr;
   std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(s.get(), &wgs84));
   if (!ct) {
     const char* n = src->GetName();
@@ -144,7 +154,21 @@ std::unique_ptr<OGRCoordinateTransformation> toWgs84(OGRLayer& layer, const std:
   return ct;
 }
 
-void readLayer(OGRLayer& layer, const std::string& source, const GdalSelection& sel, RawArea& out, size_t& vertices) {
+/// A feature without geometry: refused when the reader explains why (GeoJSON), else noted.
+void noGeometry(long index, const std::string& name, const std::string& source, const GdalRead& sel, RawArea& out) {
+  const std::string why = sel.why_no_geometry && sel.where.empty() ? sel.why_no_geometry(index) : std::string();
+  if (!why.empty()) fail(source, name + ": " + why);
+  out.notes.push_back(source + ": " + name + ": no geometry; ignored");
+}
+
+/// GDAL reported an error while reading a feature: its geometry may lack a part (GDAL drops a ring
+/// it cannot read and goes on), so the feature is refused, explained by the reader when it can.
+[[noreturn]] void brokenFeature(long index, const std::string& name, const std::string& source, const GdalRead& sel) {
+  const std::string why = sel.why_no_geometry && sel.where.empty() ? sel.why_no_geometry(index) : std::string();
+  fail(source, name + ": " + (why.empty() ? "GDAL could not read it whole" + gdalSays() : why));
+}
+
+void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, RawArea& out, size_t& vertices) {
   const std::string lname = "layer \"" + std::string(layer.GetName()) + "\"";
   if (!sel.where.empty() && layer.SetAttributeFilter(sel.where.c_str()) != OGRERR_NONE) {
     fail(source, lname + ": --where \"" + sel.where + "\" is not a valid OGR SQL filter on its fields" + gdalSays());
@@ -153,17 +177,31 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalSelection& 
   CPLErrorReset();
   long index = 0;
   for (auto& feature : layer) {
-    const std::string name = lname + ", feature " + std::to_string(index++);
+    // With --where the n-th feature read is not the file's n-th: named by its FID, not explained by position.
+    const long i = sel.where.empty() ? index : static_cast<long>(feature->GetFID());
+    ++index;
+    const std::string name = (sel.layer_in_names ? lname + ", " : std::string()) + "feature " + std::to_string(i);
+    if (sel.strict && CPLGetLastErrorType() >= CE_Failure) brokenFeature(i, name, source, sel);  // raised fetching it
     OGRGeometry* g = feature->GetGeometryRef();
-    if (!g || g->IsEmpty()) {
-      out.notes.push_back(source + ": " + name + ": no geometry; ignored");
+    if (!g) {
+      noGeometry(i, name, source, sel, out);
+      continue;
+    }
+    if (g->IsEmpty()) {
+      const std::string type = OGRGeometryTypeToName(g->getGeometryType());
+      const OGRwkbGeometryType t = wkbFlatten(g->getGeometryType());
+      if (sel.strict || t == wkbPolygon || t == wkbMultiPolygon) {
+        fail(source, name + ": empty " + type + " (no coordinates); expected an outer boundary of at least 3 vertices");
+      }
+      out.notes.push_back(source + ": " + name + ": empty " + type + "; ignored");
       continue;
     }
     if (ct && g->transform(ct.get()) != OGRERR_NONE) fail(source, name + ": cannot reproject to WGS84" + gdalSays());
     std::string role = fieldText(*feature, "role");
     if (role.empty()) role = fieldText(*feature, "name");
-    FeatureContext fc{source, role, out, vertices};
-    addGeometry(*g, name, fc, 0);
+    OgrTarget target{source, role, sel.strict, out, vertices};
+    addGeometry(*g, name, target, 0);
+    if (sel.strict) CPLErrorReset();
   }
   // Drivers report a broken feature or a filter that fails on the data (a GeoPackage evaluates
   // --where in SQLite only now) by ending the iteration with an error.
@@ -173,19 +211,36 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalSelection& 
   }
 }
 
+/// The NULL-terminated list of `names` (pointers into them).
+std::vector<const char*> cList(const std::vector<std::string>& names) {
+  std::vector<const char*> l;
+  for (const auto& n : names) l.push_back(n.c_str());
+  l.push_back(nullptr);
+  return l;
+}
+
 }  // namespace
 
-RawArea readWithGdal(const std::string& path, const std::string& source, const GdalSelection& sel) {
+RawArea readWithGdal(const std::string& path, const std::string& source, const GdalRead& sel) {
   QuietGdal quiet;
   // CSV: a column named WKT (or geometry / geom / the_geom) holds the geometry.
   const char* const csvOptions[] = {"GEOM_POSSIBLE_NAMES=WKT,geometry,geom,the_geom", "KEEP_GEOM_COLUMNS=NO", nullptr};
   const bool csv = path.size() > 4 && lowerAscii(path.substr(path.size() - 4)) == ".csv";
-  GDALDatasetUniquePtr ds(
-      GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, csv ? csvOptions : nullptr, nullptr));
+  const auto drivers = cList(sel.drivers);
+  GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
+                                            sel.drivers.empty() ? nullptr : drivers.data(), csv ? csvOptions : nullptr, nullptr));
   if (!ds) {
+    const std::string why = sel.why_not_opened ? sel.why_not_opened() : std::string();
+    if (!why.empty()) fail(source, why);
+    if (!sel.drivers.empty()) fail(source, "GDAL's " + sel.drivers.front() + " driver cannot read it" + gdalSays());
     fail(source, "not a survey area file wattswath or GDAL can read" + gdalSays() +
                      "; expected GeoJSON, KML/KMZ, WKT, Shapefile, GeoPackage, GML, GPX, CSV with a WKT column, "
                      "QGC .plan / .waypoints or Mission Planner .poly");
+  }
+  // GeoJSON is parsed whole when opened: an error then (a ring dropped) is the file's, located by the reader.
+  if (sel.strict && quiet.failed()) {
+    const std::string why = sel.why_not_opened ? sel.why_not_opened() : std::string();
+    fail(source, why.empty() ? "GDAL could not read it whole" + gdalSays() : why);
   }
   RawArea out;
   size_t vertices = 0;
@@ -208,11 +263,17 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
   return out;
 }
 
-RawArea parseWithGdal(const std::string& bytes, const std::string& source, const GdalSelection& sel) {
+RawArea parseWithGdal(const std::string& bytes, const std::string& source, const GdalRead& sel) {
   static std::atomic<unsigned> counter{0};
   const auto slash = source.find_last_of('/');
-  const std::string base = slash == std::string::npos ? source : source.substr(slash + 1);
-  const std::string name = "/vsimem/wattswath_area_" + std::to_string(counter++) + "_" + base;
+  std::string base = slash == std::string::npos ? source : source.substr(slash + 1);
+  const std::string& ext = sel.extension;
+  const std::string lower = lowerAscii(base);
+  if (!ext.empty() && (lower.size() < ext.size() || lower.compare(lower.size() - ext.size(), ext.size(), ext) != 0)) {
+    base += ext;  // a forced format whose name says otherwise ("fuzz.area" read as KML)
+  }
+  // A folder per read: the file keeps its own name, so a GeoJSON layer is named as the file.
+  const std::string name = "/vsimem/wattswath_area_" + std::to_string(counter++) + "/" + base;
   QuietGdal quiet;  // registers the drivers before the memory file is made
   VSILFILE* f = VSIFileFromMemBuffer(name.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
                                      static_cast<vsi_l_offset>(bytes.size()), FALSE);

@@ -1,7 +1,8 @@
 #pragma once
-// Internal to geometry/src: raw polygons as parsed (before projection), shared by the format
-// parsers (area_formats.cpp), the read pipeline (area_readers.cpp; both without CGAL) and the
-// validation (area_validate.cpp, CGAL).
+// Internal to geometry/src: raw polygons as read (before projection), shared by the format
+// readers (area_formats.cpp, area_wkt.cpp, area_gdal.cpp, area_qgc.cpp), the read pipeline
+// (area_readers.cpp; all without CGAL) and the validation (area_validate.cpp, CGAL).
+#include <functional>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
@@ -53,9 +54,28 @@ nlohmann::json parseJsonBounded(const std::string& text, const std::string& sour
 /// A QGC plan already parsed (see parseQgcPlan).
 RawArea parseQgcPlanJson(const nlohmann::json& j, const std::string& source);
 
-/// GeoJSON text; a QGC plan ("fileType": "Plan") is read as one, a "crs" other than WGS84 through GDAL.
-RawArea parseGeoJson(const std::string& text, const std::string& source);
-RawArea parseKml(const std::string& text, const std::string& source);
+/// How GDAL reads one dataset, and how what it drops silently is explained.
+struct GdalRead {
+  std::string layer;                 ///< only this layer (--layer; empty: all)
+  std::string where;                 ///< OGR SQL attribute filter (--where; empty: none)
+  std::vector<std::string> drivers;  ///< only these GDAL drivers try the file (empty: any)
+  std::string extension;             ///< parseWithGdal: the in-memory file's extension (empty: the source's)
+  bool strict = false;               ///< lines, points other than home and features without geometry are errors, not notes
+  bool layer_in_names = true;        ///< messages name the layer (false: one-layer formats such as GeoJSON)
+  std::function<std::string(long)> why_no_geometry;  ///< why feature i has no geometry, "" to ignore it with a note
+  std::function<std::string()> why_not_opened;       ///< why GDAL opened nothing, "" for the general message
+};
+
+/// GeoJSON text through GDAL's GeoJSON driver, any CRS (none: WGS84); a QGC plan ("fileType":
+/// "Plan") is read as one. JSON nesting is bounded and syntax checked first; a geometry GDAL drops
+/// is located (feature, ring, vertex) and refused.
+RawArea parseGeoJson(const std::string& text, const std::string& source, const GdalRead& sel);
+/// KML text through GDAL's LIBKML (or KML) driver, after refusing a DOCTYPE (entity declarations)
+/// and element nesting deeper than kMaxXmlDepth.
+RawArea parseKml(const std::string& text, const std::string& source, const GdalRead& sel);
+/// WKT / EWKT text (one or more POLYGON / MULTIPOLYGON, ';' or space separated) through
+/// OGRGeometryFactory::createFromWkt; `geodetic`: lon/lat [deg] (else metres); an SRID other than
+/// 0 and 4326 is reprojected to WGS84 lon/lat.
 RawArea parseWkt(const std::string& text, const std::string& source, bool geodetic);
 RawArea parseQgcWpl(const std::string& text, const std::string& source);
 /// QGroundControl `.plan` (JSON): survey polygons, geofence inclusions and exclusions, planned home.
@@ -63,15 +83,12 @@ RawArea parseQgcPlan(const std::string& text, const std::string& source);
 /// Mission Planner `.poly`: "lat lon" per line, '#' comments.
 RawArea parseMissionPlannerPoly(const std::string& text, const std::string& source);
 
-/// Options of the GDAL reader.
-struct GdalSelection {
-  std::string layer;  ///< only this layer (empty: all)
-  std::string where;  ///< OGR SQL attribute filter (empty: none)
-};
+/// XML element nesting beyond which a KML file is refused (before GDAL's recursive readers).
+inline constexpr int kMaxXmlDepth = 64;
 /// Any vector dataset GDAL opens at `path` (a file, or a /vsimem/ name), reprojected to WGS84 lon/lat.
-RawArea readWithGdal(const std::string& path, const std::string& source, const GdalSelection& sel);
-/// Same on bytes in memory; `source`'s extension tells GDAL's drivers the format.
-RawArea parseWithGdal(const std::string& bytes, const std::string& source, const GdalSelection& sel);
+RawArea readWithGdal(const std::string& path, const std::string& source, const GdalRead& sel);
+/// Same on bytes in memory; `source`'s extension (or sel.extension) tells GDAL's drivers the format.
+RawArea parseWithGdal(const std::string& bytes, const std::string& source, const GdalRead& sel);
 
 /// Validates and repairs one labelled polygon in ENU metres (CGAL); returns repair notes.
 std::vector<std::string> validateLabeled(LabeledPolygon& poly, const std::string& source, const RepairSettings& s);

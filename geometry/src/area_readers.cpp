@@ -99,15 +99,20 @@ AreaFormat decideFormat(const std::string& source, const std::string& text, Area
   return f;
 }
 
-GdalSelection selectionOf(const ReadOptions& o) { return GdalSelection{o.layer, o.where}; }
+GdalRead selectionOf(const ReadOptions& o) {
+  GdalRead r;
+  r.layer = o.layer;
+  r.where = o.where;
+  return r;
+}
 
 RawArea parseAny(const std::string& withBom, const std::string& source, const ReadOptions& o) {
   // A UTF-8 byte order mark (Windows editors) is not content in any of the formats.
   const bool bom = withBom.compare(0, 3, "\xEF\xBB\xBF") == 0;
   const std::string text = bom ? withBom.substr(3) : withBom;
   switch (decideFormat(source, text, o.format)) {
-    case AreaFormat::GeoJson: return parseGeoJson(text, source);
-    case AreaFormat::Kml: return parseKml(text, source);
+    case AreaFormat::GeoJson: return parseGeoJson(text, source, selectionOf(o));
+    case AreaFormat::Kml: return parseKml(text, source, selectionOf(o));
     case AreaFormat::Wkt: return parseWkt(text, source, o.wkt_units == WktUnits::LonLatDegrees);
     case AreaFormat::QgcWpl: return parseQgcWpl(text, source);
     case AreaFormat::QgcPlan: return parseQgcPlan(text, source);

@@ -133,7 +133,7 @@ TEST(AreaFormats, MetresWithoutACrsAreCalledMetresNotSwapped) {
     FAIL() << "accepted";
   } catch (const geo::SurveyAreaError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("geometry, outer boundary, vertex 0: (612000.000000, 4841000.000000) is not lon/lat in degrees; it looks "
+    EXPECT_NE(m.find("feature 0, outer boundary, vertex 0: (612000.000000, 4841000.000000) is not lon/lat in degrees; it looks "
                      "like projected metres"), std::string::npos) << m;
     EXPECT_EQ(m.find("swapped"), std::string::npos) << m;
   }

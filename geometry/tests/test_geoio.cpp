@@ -191,18 +191,18 @@ TEST(ReadErrors, EachNamesFileAndVertexOrFeature) {
     std::vector<std::string> expect;
   };
   const std::vector<Case> cases = {
-      {"bowtie.geojson", {"bowtie.geojson: geometry, outer boundary: self-intersection: edge 0 (vertex 0 -> vertex 1) and edge 2 (vertex 2 -> vertex 3)"}},
+      {"bowtie.geojson", {"bowtie.geojson: feature 0, outer boundary: self-intersection: edge 0 (vertex 0 -> vertex 1) and edge 2 (vertex 2 -> vertex 3)"}},
       {"two_vertices.waypoints", {"two_vertices.waypoints: polygon: fewer than 3 distinct vertices (3 given, 2 distinct)"}},
       {"collinear.wkt", {"collinear.wkt: geometry 0, outer boundary: zero area"}},
-      {"hole_outside.geojson", {"hole_outside.geojson: geometry, hole 0, vertex 0: lies outside geometry, outer boundary"}},
-      {"hole_crossing.kml", {"hole_crossing.kml: placemark 0, polygon 0, hole 0: edge", "crosses placemark 0, polygon 0, outer boundary edge 1"}},
-      {"lat_range.geojson", {"lat_range.geojson: geometry, outer boundary, vertex 2: latitude 95.002 deg is outside [-90, 90]"}},
+      {"hole_outside.geojson", {"hole_outside.geojson: feature 0, hole 0, vertex 0: lies outside feature 0, outer boundary"}},
+      {"hole_crossing.kml", {"hole_crossing.kml: layer \"hole_crossing\", feature 0, hole 0: edge", "crosses layer \"hole_crossing\", feature 0, outer boundary edge 1"}},
+      {"lat_range.geojson", {"lat_range.geojson: feature 0, outer boundary, vertex 2: latitude 95.002 deg is outside [-90, 90]"}},
       {"not_json.geojson", {"not_json.geojson: not valid JSON"}},
-      {"linestring.geojson", {"linestring.geojson: geometry: geometry type LineString is not an area"}},
+      {"linestring.geojson", {"linestring.geojson: feature 0: geometry type LineString is not an area"}},
       {"bad_column.waypoints", {"bad_column.waypoints: line 3 (row 1), column 10: expected a number, got \"seven\""}},
       {"unclosed.kml", {"unclosed.kml: unexpected end of file inside <Polygon>"}},
-      {"nan.wkt", {"nan.wkt: geometry 0, outer boundary, vertex 2: non-finite coordinate"}},
-      {"overlapping_holes.geojson", {"overlapping_holes.geojson: geometry, hole 1: overlaps geometry, hole 0"}},
+      {"nan.wkt", {"nan.wkt: geometry 0, line 1 (offset 38): non-finite coordinate \"nan\""}},
+      {"overlapping_holes.geojson", {"overlapping_holes.geojson: feature 0, hole 1: overlaps feature 0, hole 0"}},
       {"spike.wkt", {"spike.wkt: geometry 0, outer boundary: self-intersection: edge 0 (vertex 0 -> vertex 2) and edge 2 (vertex 3 -> vertex 4)"}},
   };
   for (const auto& c : cases) {

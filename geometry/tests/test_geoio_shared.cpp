@@ -1,5 +1,6 @@
 // Every survey area in ../shared/data loads: the IRIS+ real-flight area with its no-fly zone and
-// the six E-Spiral areas (QGC WPL 110 files, row 0 home, rows 1.. vertices).
+// the six E-Spiral areas (QGC WPL 110 files, row 0 home, rows 1.. vertices), each to the area it had
+// before GDAL read GeoJSON, KML and WKT.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -59,5 +60,29 @@ TEST(SharedAreas, AllESpiralAreasLoad) {
     EXPECT_GT(a.area(), 20000.0) << name;
     EXPECT_LT(a.area(), 50000.0) << name;
     EXPECT_TRUE(a.home.has_value()) << name;
+  }
+}
+
+TEST(SharedAreas, ReadAsBeforeGdal) {
+  // Recorded with `wattswath area info FILE --json` at commit 67e601f (before GeoJSON, KML and WKT
+  // moved to GDAL/OGR, issue 21); compared to 1e-6 relative.
+  struct Recorded {
+    const char* file;
+    double area_m2, perimeter_m;
+  };
+  const Recorded recorded[] = {
+      {"espiral/area__area01.waypoints", 24634.59217704747, 635.0639277804322},
+      {"espiral/area__polygon.waypoints", 42798.372520759425, 769.5554511319102},
+      {"espiral/area__rectangle.waypoints", 29365.507966843274, 736.6253935455131},
+      {"espiral/area__rectangle02.waypoints", 27688.899493562632, 718.4831213795823},
+      {"espiral/area__spiral_concave.waypoints", 42520.19369944556, 802.3425229572551},
+      {"espiral/area__spiral_polygon.waypoints", 47509.21132576704, 810.9838773530444},
+      {"iris-flights/plan__real_flight_area.waypoints", 21248.338262513415, 639.1005029453582},
+      {"iris-flights/plan__real_flight_obstacles.waypoints", 307.43100107380695, 70.67609307412052},
+  };
+  for (const auto& r : recorded) {
+    const auto a = geo::readSurveyArea(sharedData(r.file));
+    EXPECT_NEAR(a.area(), r.area_m2, 1e-6 * r.area_m2) << r.file;
+    EXPECT_NEAR(a.perimeter(), r.perimeter_m, 1e-6 * r.perimeter_m) << r.file;
   }
 }

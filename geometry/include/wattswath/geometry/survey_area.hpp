@@ -27,9 +27,9 @@ class SurveyAreaError : public std::runtime_error {
 /// Input file formats.
 enum class AreaFormat {
   Auto,                ///< by extension, then by content, then whatever GDAL opens
-  GeoJson,             ///< GeoJSON in WGS84 (one with another "crs" goes through GDAL)
-  Kml,                 ///< KML (KMZ goes through GDAL)
-  Wkt,                 ///< WKT / EWKT text
+  GeoJson,             ///< GeoJSON, any "crs" (none: WGS84): our JSON checks, then GDAL's GeoJSON driver
+  Kml,                 ///< KML: our XML checks, then GDAL's LIBKML driver (KMZ: AreaFormat::Gdal)
+  Wkt,                 ///< WKT / EWKT text through OGR (SRID other than 0 / 4326 reprojected)
   QgcWpl,              ///< QGC WPL 110 `.waypoints`: rows 1..n are the vertices
   QgcPlan,             ///< QGroundControl `.plan`: survey polygons, geofence inclusions (area) and exclusions (no-fly)
   MissionPlannerPoly,  ///< Mission Planner `.poly`: one "lat lon" per line, '#' comments
@@ -96,8 +96,8 @@ struct SurveyArea {
 };
 
 /// Reads, projects, validates and repairs a survey area, then subtracts options.no_fly_files.
-/// Formats (AreaFormat::Auto): `.geojson`/`.json` GeoJSON (a `.plan` inside is read as QGC plan,
-/// a "crs" other than WGS84 through GDAL), `.kml` KML, `.wkt` WKT, `.waypoints` QGC WPL 110,
+/// Formats (AreaFormat::Auto): `.geojson`/`.json` GeoJSON (a `.plan` inside is read as QGC plan),
+/// `.kml` KML, `.wkt` WKT (these three through GDAL/OGR), `.waypoints` QGC WPL 110,
 /// `.plan` QGroundControl plan, `.poly` Mission Planner polygon; any other file is decided by its
 /// content, else opened by GDAL (Shapefile, GeoPackage, KMZ, GML, GPX, CSV with WKT, ...).
 /// No-fly zones in the file: a feature whose "role" (or, failing that, "name") starts with
