@@ -16,14 +16,16 @@ using geometry::Point;
 
 PlanCandidate shortestPathBaseline(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
                                    RouteScorer& scorer, const StopTable& stop, const PlannerSettings& ps,
-                                   const std::vector<geometry::PolygonWithHoles>& free, int* count) {
+                                   const std::vector<geometry::PolygonWithHoles>& free, int* count,
+                                   const std::vector<const PlanCandidate*>& checked) {
   const AngleResult shortest = searchAngles(ctx, model, ss, stop, Objective::Length, ps, count).front();
-  return finish(free, ctx.problem->footprint, scorer, shortest, "boustrophedon");
+  return finish(free, ctx.problem->footprint, scorer, shortest, "boustrophedon", checked);
 }
 
 PlanCandidate groundStationBaseline(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
                                     const StopTable& stop, const PlannerSettings& ps,
-                                    const std::vector<geometry::PolygonWithHoles>& free, int* count) {
+                                    const std::vector<geometry::PolygonWithHoles>& free, int* count,
+                                    const std::vector<const PlanCandidate*>& checked) {
   const auto& outer = ctx.problem->area.outer;
   size_t longest = 0;
   for (size_t i = 0; i < outer.size(); ++i)
@@ -35,7 +37,7 @@ PlanCandidate groundStationBaseline(const Context& ctx, const energy::EnergyMode
   gs.corners = CornerStrategy::Sharp;
   RouteScorer gs_scorer(model, gs);
   const AngleResult gsr = evaluateAngle(ctx, std::atan2(e.y(), e.x()), gs_scorer, stop, Objective::Length, ps.exact_max_cells);
-  PlanCandidate c = finish(free, ctx.problem->footprint, gs_scorer, gsr, "boustrophedon");
+  PlanCandidate c = finish(free, ctx.problem->footprint, gs_scorer, gsr, "boustrophedon", checked);
   ++*count;
   return c;
 }
