@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <iostream>
 
 #include "prediction_setup.hpp"
@@ -43,13 +44,18 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   if (r.per_cell && r.per_cell->valid) cands.push_back({"per-cell", &*r.per_cell});
   if (r.best_spiral && r.best_spiral->valid) cands.push_back({"best spiral", &*r.best_spiral});
   cands.push_back({"shortest path", &r.shortest_path});
+  // The ground-station default flown too (in the same batch of flights), as a baseline: never written.
+  cands.push_back({"ground-station default", &r.ground_station_default});
   auto scores = planner::scoreByFlight(cands, scoring);
+  const auto baseline = std::stable_partition(scores.begin(), scores.end(), [&](const planner::FlightScore& s) {
+    return s.candidate != &r.ground_station_default;
+  });
+  std::vector<planner::FlightScore> baselines(std::make_move_iterator(baseline), std::make_move_iterator(scores.end()));
+  scores.erase(baseline, scores.end());
   PlanFlight f;
   for (const auto& s : scores) f.rows.push_back(rowOf(s, false));
   f.chosen = planner::cheapestFlight(scores);
-  // The ground-station default flown too, as a baseline (never written).
-  for (const auto& g : planner::scoreByFlight({{"ground-station default", &r.ground_station_default}}, scoring))
-    f.rows.push_back(rowOf(g, true));
+  for (const auto& g : baselines) f.rows.push_back(rowOf(g, true));
   f.chosen_by_search = r.plan.pattern;
   f.autopilot = setup.autopilot.firmware + " " + setup.autopilot.version + " (" + mission::toString(setup.autopilot.family) +
                 " model" + (setup.autopilot.from_file ? "" : ", firmware defaults") + (setup.calibrated ? ", calibrated" : "") + ")";

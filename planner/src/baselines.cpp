@@ -16,14 +16,16 @@ using geometry::Point;
 
 PlanCandidate shortestPathBaseline(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
                                    RouteScorer& scorer, const StopTable& stop, const PlannerSettings& ps,
-                                   const std::vector<geometry::PolygonWithHoles>& free, int* count) {
+                                   const std::vector<geometry::PolygonWithHoles>& free, int* count,
+                                   const std::vector<const PlanCandidate*>& checked) {
   const AngleResult shortest = searchAngles(ctx, model, ss, stop, Objective::Length, ps, count).front();
-  return finish(free, ctx.problem->footprint, scorer, shortest, "boustrophedon");
+  return finish(free, ctx.problem->footprint, scorer, shortest, "boustrophedon", checked);
 }
 
 PlanCandidate groundStationBaseline(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
                                     const StopTable& stop, const PlannerSettings& ps,
-                                    const std::vector<geometry::PolygonWithHoles>& free, int* count) {
+                                    const std::vector<geometry::PolygonWithHoles>& free, int* count,
+                                    const std::vector<const PlanCandidate*>& checked) {
   const auto& outer = ctx.problem->area.outer;
   size_t longest = 0;
   for (size_t i = 0; i < outer.size(); ++i)
@@ -35,7 +37,7 @@ PlanCandidate groundStationBaseline(const Context& ctx, const energy::EnergyMode
   gs.corners = CornerStrategy::Sharp;
   RouteScorer gs_scorer(model, gs);
   const AngleResult gsr = evaluateAngle(ctx, std::atan2(e.y(), e.x()), gs_scorer, stop, Objective::Length, ps.exact_max_cells);
-  PlanCandidate c = finish(free, ctx.problem->footprint, gs_scorer, gsr, "boustrophedon");
+  PlanCandidate c = finish(free, ctx.problem->footprint, gs_scorer, gsr, "boustrophedon", checked);
   ++*count;
   return c;
 }
@@ -58,7 +60,9 @@ double lowerBound(const SurveyProblem& problem, const energy::EnergyModel& model
   for (size_t i = 0; i < outer.size(); ++i)
     approach = std::min(approach, geometry::distanceToSegment(problem.home, outer[i], outer[(i + 1) % outer.size()]));
   const double swath = std::max(0.0, free_area / problem.spacing - problem.footprint);
-  double bound = model.minEnergyPerMetre(cap) * swath + model.minEnergyPerMetre(ss.max_speed) * 2.0 * approach;
+  const double sweep_e = model.minEnergyPerMetre(cap);  // [J/m]; a search of its own (about 0.6 ms), done once when no cap
+  const double any_e = cap == ss.max_speed ? sweep_e : model.minEnergyPerMetre(ss.max_speed);
+  double bound = sweep_e * swath + any_e * 2.0 * approach;
   // Every flight also starts and ends at rest. When power depends on speed alone (Marins' effects:
   // hover, kinetic, drag), a flight of length L from rest to rest costs at least the best single
   // stop-to-stop leg of length L: along the path, speed is at most the accelerate-cruise-brake

@@ -9,17 +9,20 @@
 namespace wattswath::planner::detail {
 
 /// Baseline (a), the shortest path: length objective for angle and order, flown with our speeds
-/// (`scorer`), coverage checked over `free`. `count` is increased by the angles evaluated.
+/// (`scorer`), coverage checked over `free` (taken from a candidate of `checked` that flies the same
+/// path, see finish()). `count` is increased by the angles evaluated.
 PlanCandidate shortestPathBaseline(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
                                    RouteScorer& scorer, const StopTable& stop, const PlannerSettings& ps,
-                                   const std::vector<geometry::PolygonWithHoles>& free, int* count);
+                                   const std::vector<geometry::PolygonWithHoles>& free, int* count,
+                                   const std::vector<const PlanCandidate*>& checked = {});
 
 /// Baseline (b), the ground-station default: sweep parallel to the longest edge of the outer
 /// boundary, one constant speed (ps.ground_station_speed, capped), a stop at every corner.
-/// `count` is increased by one.
+/// `count` is increased by one. `checked` as for shortestPathBaseline.
 PlanCandidate groundStationBaseline(const Context& ctx, const energy::EnergyModel& model, const SpeedSettings& ss,
                                     const StopTable& stop, const PlannerSettings& ps,
-                                    const std::vector<geometry::PolygonWithHoles>& free, int* count);
+                                    const std::vector<geometry::PolygonWithHoles>& free, int* count,
+                                    const std::vector<const PlanCandidate*>& checked = {});
 
 /// Physical lower bound on the energy of any flight covering `problem` [J]: the swath length the
 /// coverage needs at the best energy per metre plus the way from home to the area and back, and,

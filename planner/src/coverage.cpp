@@ -190,8 +190,9 @@ PlanResult planCoverage(const SurveyProblem& pr, const energy::Vehicle& vehicle,
   }
 
   say("plan: baselines");
-  res.shortest_path = shortestPathBaseline(ctx, model, ss, scorer, stop, ps, free, &res.candidates);
-  res.ground_station_default = groundStationBaseline(ctx, model, ss, stop, ps, free, &res.candidates);
+  res.shortest_path = shortestPathBaseline(ctx, model, ss, scorer, stop, ps, free, &res.candidates, {&res.plan});
+  res.ground_station_default =
+      groundStationBaseline(ctx, model, ss, stop, ps, free, &res.candidates, {&res.plan, &res.shortest_path});
   // (c) best spiral (started above when there is a second thread).
   say("plan: spirals");
   if (!ps.spirals) {

@@ -2,44 +2,108 @@
 #include "wattswath/planner/flight_score.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/planned_mission.hpp"
 
 namespace wattswath::planner {
 
+namespace {
+
+// The .plan text `text` read back and flown, as `wattswath predict` flies it.
+mission::MissionPrediction flyPlanText(const std::string& text, const FlightScoring& s, const std::string& source) {
+  const mission::Mission m = mission::parseQgcPlan(text, source);
+  return mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+}
+
+// Runs `fly(k)` for k = 0 .. n - 1 on up to `threads` threads; rethrows the exception of the lowest
+// k that threw, as a loop in order would have.
+void onThreads(std::size_t n, int threads, const std::function<void(std::size_t)>& fly) {
+  std::vector<std::exception_ptr> errors(n);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&]() {
+    for (std::size_t k = next++; k < n; k = next++) {
+      try {
+        fly(k);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    }
+  };
+  const std::size_t extra = std::min<std::size_t>(n, static_cast<std::size_t>(std::max(threads, 1))) - (n > 0 ? 1 : 0);
+  std::vector<std::thread> pool;
+  for (std::size_t t = 0; t < extra; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace
+
 mission::MissionPrediction flyWrittenMission(const PlanMission& written, const FlightScoring& s, const std::string& source) {
   // The very text `wattswath predict mission.plan` reads.
-  const mission::Mission m = mission::parseQgcPlan(mission::toQgcPlan(written.mission), source);
-  return mission::predictMission(m, *s.vehicle, *s.model, s.autopilot, s.settings);
+  return flyPlanText(mission::toQgcPlan(written.mission), s, source);
 }
 
 std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,
                                        const FlightScoring& s) {
   if (!s.problem || !s.frame || !s.vehicle || !s.model) throw std::invalid_argument("scoreByFlight: FlightScoring is incomplete");
-  std::vector<FlightScore> out;
+  // Each candidate's missions (with arcs: as chords and as waypoints), written on threads.
+  std::vector<FlightScore> all;
+  std::vector<std::string> all_sources;  // names of the .plan texts in errors
+  std::vector<char> has_arcs;
   for (const auto& [label, c] : candidates) {
     if (!c || !c->valid) continue;
-    const bool has_arcs = std::any_of(c->flown.path.legs.begin(), c->flown.path.legs.end(),
-                                      [](const geometry::PathLeg& l) { return l.kind == geometry::PrimitiveKind::Arc; });
+    const bool arcs = std::any_of(c->flown.path.legs.begin(), c->flown.path.legs.end(),
+                                  [](const geometry::PathLeg& l) { return l.kind == geometry::PrimitiveKind::Arc; });
     for (const bool arc_waypoints : {false, true}) {
-      if (arc_waypoints && !has_arcs) continue;  // the same mission
+      if (arc_waypoints && !arcs) continue;  // the same mission
       FlightScore f;
-      f.label = has_arcs ? label + (arc_waypoints ? " (arcs as waypoints)" : " (arcs as chords)") : label;
+      f.label = arcs ? label + (arc_waypoints ? " (arcs as waypoints)" : " (arcs as chords)") : label;
       f.candidate = c;
       f.arc_waypoints = arc_waypoints;
       f.closed_form_energy_j = c->flown.energy;
-      MissionOptions mo = s.mission;
-      mo.arc_waypoints = arc_waypoints;
-      f.mission = missionFromPlan(c->flown, *s.problem, *s.frame, s.home_altitude_amsl_m, mo);
-      // A chord that comes within the no-fly margin is not offered (the waypoints along the arc are).
-      if (!arc_waypoints && has_arcs && f.mission.legs_within_margin > 0) continue;
-      f.prediction = flyWrittenMission(f.mission, s, label + " mission.plan");
-      out.push_back(std::move(f));
+      all.push_back(std::move(f));
+      all_sources.push_back(label + " mission.plan");
+      has_arcs.push_back(arcs);
     }
   }
+  std::vector<std::string> all_texts(all.size());
+  onThreads(all.size(), s.threads, [&](std::size_t i) {
+    MissionOptions mo = s.mission;
+    mo.arc_waypoints = all[i].arc_waypoints;
+    all[i].mission = missionFromPlan(all[i].candidate->flown, *s.problem, *s.frame, s.home_altitude_amsl_m, mo);
+    all_texts[i] = mission::toQgcPlan(all[i].mission.mission);  // the very text `wattswath predict` reads
+  });
+  std::vector<FlightScore> out;
+  std::vector<std::string> sources, texts;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    // A chord that comes within the no-fly margin is not offered (the waypoints along the arc are).
+    if (!all[i].arc_waypoints && has_arcs[i] && all[i].mission.legs_within_margin > 0) continue;
+    out.push_back(std::move(all[i]));
+    sources.push_back(std::move(all_sources[i]));
+    texts.push_back(std::move(all_texts[i]));
+  }
+  // Each distinct .plan text flown once (a finalist that is another's route, e.g. the plan when it
+  // is the shortest path, writes the same text and gets the same flight), the flights on threads.
+  std::vector<std::size_t> same_as(out.size()), distinct;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    same_as[i] = static_cast<std::size_t>(std::find(texts.begin(), texts.begin() + static_cast<std::ptrdiff_t>(i), texts[i]) - texts.begin());
+    if (same_as[i] == i) distinct.push_back(i);
+  }
+  onThreads(distinct.size(), s.threads, [&](std::size_t k) {
+    const std::size_t i = distinct[k];
+    out[i].prediction = flyPlanText(texts[i], s, sources[i]);
+  });
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (same_as[i] != i) out[i].prediction = out[same_as[i]].prediction;
   return out;
 }
 

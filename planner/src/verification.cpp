@@ -35,6 +35,16 @@ FlownPath flyLabelled(RouteScorer& scorer, const Route& route, double angle, con
   return f;
 }
 
+// Whether the two paths sweep the same swaths: the same legs, every field equal (what coverageOf reads).
+bool sameLegs(const geometry::CoveragePath& a, const geometry::CoveragePath& b) {
+  return std::equal(a.legs.begin(), a.legs.end(), b.legs.begin(), b.legs.end(),
+                    [](const geometry::PathLeg& x, const geometry::PathLeg& y) {
+                      return x.kind == y.kind && x.role == y.role && x.start == y.start && x.end == y.end &&
+                             x.center == y.center && x.radius == y.radius && x.turn_angle == y.turn_angle &&
+                             x.heading_start == y.heading_start && x.heading_end == y.heading_end;
+                    });
+}
+
 }  // namespace
 
 std::vector<geometry::PolygonWithHoles> freeRegions(const SurveyProblem& pr) {
@@ -98,8 +108,15 @@ void verify(const std::vector<geometry::PolygonWithHoles>& free, double footprin
 }
 
 PlanCandidate finish(const std::vector<geometry::PolygonWithHoles>& free, double footprint, RouteScorer& scorer,
-                     const AngleResult& a, const std::string& pattern) {
+                     const AngleResult& a, const std::string& pattern, const std::vector<const PlanCandidate*>& checked) {
   PlanCandidate c = flyUnverified(scorer, a, pattern);
+  // The shortest path is often the plan itself: its coverage is known (verify() would stop at the
+  // first check, which keeps kMinCoveragePct), and the exact check is a third of a small field's search.
+  for (const PlanCandidate* k : checked)
+    if (c.valid && k && k->valid && k->coverage_pct >= kMinCoveragePct && sameLegs(c.flown.path, k->flown.path)) {
+      c.coverage_pct = k->coverage_pct;
+      return c;
+    }
   verify(free, footprint, scorer, a, c);
   return c;
 }

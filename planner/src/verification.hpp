@@ -28,9 +28,11 @@ PlanCandidate flyUnverified(RouteScorer& scorer, const AngleResult& a, const std
 void verify(const std::vector<geometry::PolygonWithHoles>& free, double footprint, RouteScorer& scorer,
             const AngleResult& a, PlanCandidate& c);
 
-/// flyUnverified() then verify().
+/// flyUnverified() then verify(), unless the flown path's swaths are those of a candidate in
+/// `checked` (verified over the same `free`) that keeps kMinCoveragePct: then its coverage is taken,
+/// the number verify() would compute, without a second exact check.
 PlanCandidate finish(const std::vector<geometry::PolygonWithHoles>& free, double footprint, RouteScorer& scorer,
-                     const AngleResult& a, const std::string& pattern);
+                     const AngleResult& a, const std::string& pattern, const std::vector<const PlanCandidate*>& checked = {});
 
 /// Whether candidate `c` should replace `plan`: keeping coverage (>= kMinCoveragePct) first, then
 /// less energy; between candidates that both miss it, more coverage first.

@@ -28,6 +28,7 @@ struct FlightScoring {
   const energy::EnergyModel* model = nullptr;        ///< the energy model predict uses
   mission::AutopilotConfig autopilot;                ///< the vehicle's autopilot
   mission::PredictSettings settings;                 ///< as predict sets them (calibrated behaviour)
+  int threads = 2;                                   ///< flights simulated at once (>= 1; the results do not depend on it)
 };
 
 /// One candidate flown by the autopilot model.
@@ -46,8 +47,9 @@ mission::MissionPrediction flyWrittenMission(const PlanMission& written, const F
 
 /// Flies each labelled candidate's mission (in order); a candidate with arcs twice: its arcs as
 /// chords flown by the autopilot's own cornering (unless a chord comes within the no-fly margin)
-/// and as waypoints along them (MissionOptions::arc_waypoints). Throws what missionFromPlan,
-/// parseQgcPlan and predictMission throw.
+/// and as waypoints along them (MissionOptions::arc_waypoints). Missions with the same .plan text
+/// are flown once; the flights run on FlightScoring::threads threads. Throws what missionFromPlan,
+/// parseQgcPlan and predictMission throw (for the first such mission in order).
 std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,
                                        const FlightScoring& scoring);
 

@@ -1,0 +1,61 @@
+// The finalists flown by the autopilot model (flight_score.hpp): a mission whose .plan text another
+// finalist already wrote is flown once and gets that flight, and the number of threads the flights
+// run on changes no number.
+#include <gtest/gtest.h>
+
+#include "wattswath/energy/model.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/geometry/survey_area.hpp"
+#include "wattswath/mission/files.hpp"
+#include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/flight_score.hpp"
+#include "mission_fixtures.hpp"
+#include "test_util.hpp"
+
+using namespace wattswath;
+using namespace wattswath::planner;
+
+TEST(FlightScore, TheSameMissionTwiceIsOneFlightAndThreadsChangeNoNumber) {
+  const auto area = geometry::readSurveyArea(test::sourcePath("data/areas/espiral_rectangle.geojson"));
+  ASSERT_TRUE(area.frame);
+  const auto pr = test::problemOf(area, 21.45);
+  const auto v = energy::loadVehicle(test::sourcePath("data/vehicles/iris.json"));
+  const auto model = energy::marinsModel(v);
+  const auto r = planCoverage(pr, v, model);
+  ASSERT_TRUE(r.plan.valid);
+  ASSERT_TRUE(r.ground_station_default.valid);
+  const PlanCandidate copy = r.plan;  // another finalist flying the very same route
+  FlightScoring s;
+  s.problem = &pr;
+  s.frame = &*area.frame;
+  s.vehicle = &v;
+  s.model = &model;
+  const std::vector<std::pair<std::string, const PlanCandidate*>> cands = {
+      {"plan", &r.plan}, {"ground-station default", &r.ground_station_default}, {"copy", &copy}};
+  s.threads = 1;
+  const auto one = scoreByFlight(cands, s);
+  s.threads = 2;
+  const auto two = scoreByFlight(cands, s);
+  ASSERT_EQ(one.size(), two.size());
+  ASSERT_GE(one.size(), 3u);
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    SCOPED_TRACE(one[i].label);
+    EXPECT_EQ(one[i].label, two[i].label);  // the order of the candidates, whatever thread flew them
+    EXPECT_EQ(one[i].prediction.total.energy_j, two[i].prediction.total.energy_j);
+    EXPECT_EQ(one[i].prediction.total.time_s, two[i].prediction.total.time_s);
+    // Each flight is the one flyWrittenMission gives for its own mission (predict's numbers).
+    const auto alone = flyWrittenMission(one[i].mission, s, one[i].label);
+    EXPECT_EQ(one[i].prediction.total.energy_j, alone.total.energy_j);
+    EXPECT_EQ(one[i].prediction.total.time_s, alone.total.time_s);
+  }
+  // The copy's rows (the last ones) repeat the plan's flights exactly.
+  const std::size_t per = (one.size() - 1) / 2;  // rows per route candidate: 1, or 2 with arcs
+  ASSERT_EQ(one.size(), 2 * per + 1);
+  for (std::size_t k = 0; k < per; ++k) {
+    EXPECT_EQ(one[k].candidate, &r.plan);
+    EXPECT_EQ(one[per + 1 + k].candidate, &copy);
+    EXPECT_EQ(mission::toQgcPlan(one[k].mission.mission), mission::toQgcPlan(one[per + 1 + k].mission.mission));
+    EXPECT_EQ(one[k].prediction.total.energy_j, one[per + 1 + k].prediction.total.energy_j);
+  }
+  EXPECT_GT(one[per].prediction.total.energy_j, one[0].prediction.total.energy_j);  // the baseline flies dearer
+}
