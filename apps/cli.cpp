@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 namespace wattswath::apps {
@@ -74,15 +75,38 @@ namespace {
 // [-] tries at a fresh random temporary name before giving up (each collides with p = 2^-64).
 constexpr int kTemporaryTries = 16;
 
-// The temporary being written, for the signal handler (a fixed buffer: a handler may not allocate).
-char g_temporary[4096];
-volatile std::sig_atomic_t g_temporary_open = 0;
+// The temporaries alive (being written, or written and waiting for their output set's commit), for
+// the signal handler: fixed buffers, since a handler may not allocate. A path longer than a slot,
+// or beyond the slots, is written but not removed on a signal.
+constexpr int kTrackedTemporaries = 256;
+char g_temporary[kTrackedTemporaries][1024];
+volatile std::sig_atomic_t g_temporary_open[kTrackedTemporaries] = {};
 constexpr int kCleanedSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
 
+// The output set being written, if any (writeTextFileAtomic stages into it instead of renaming).
+OutputSet* g_output_set = nullptr;
+
 extern "C" void removeTemporaryAndReraise(int sig) {
-  if (g_temporary_open) ::unlink(g_temporary);
+  for (int k = 0; k < kTrackedTemporaries; ++k)
+    if (g_temporary_open[k]) ::unlink(g_temporary[k]);
   ::signal(sig, SIG_DFL);
   ::raise(sig);
+}
+
+// A slot naming `path` for the signal handler (-1: none free or the path too long).
+int trackTemporary(const std::string& path) {
+  if (path.size() >= sizeof g_temporary[0]) return -1;
+  for (int k = 0; k < kTrackedTemporaries; ++k) {
+    if (g_temporary_open[k]) continue;
+    std::memcpy(g_temporary[k], path.c_str(), path.size() + 1);
+    g_temporary_open[k] = 1;
+    return k;
+  }
+  return -1;
+}
+
+void untrackTemporary(int slot) {
+  if (slot >= 0) g_temporary_open[slot] = 0;
 }
 
 // While alive, Ctrl-C, termination, hang-up or the file-size limit (SIGXFSZ) remove the temporary
@@ -99,7 +123,6 @@ class TemporaryGuard {
     }
   }
   ~TemporaryGuard() {
-    g_temporary_open = 0;
     for (std::size_t k = 0; k < std::size(kCleanedSignals); ++k) ::sigaction(kCleanedSignals[k], &old_[k], nullptr);
   }
   TemporaryGuard(const TemporaryGuard&) = delete;
@@ -117,13 +140,8 @@ int createTemporary(const std::filesystem::path& target, std::filesystem::path& 
     char suffix[17];
     std::snprintf(suffix, sizeof suffix, "%08x%08x", rd(), rd());
     tmp = target.string() + ".tmp." + suffix;
-    const bool named = tmp.native().size() < sizeof g_temporary;  // else no cleanup on signals
-    if (named) std::memcpy(g_temporary, tmp.c_str(), tmp.native().size() + 1);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd >= 0) {
-      g_temporary_open = named;
-      return fd;
-    }
+    if (fd >= 0) return fd;
     if (errno != EEXIST) {
       throw std::runtime_error(target.string() + ": cannot write (" + tmp.string() + " could not be created: " +
                                std::strerror(errno) + ")");
@@ -160,17 +178,98 @@ void writeTextFileAtomic(const std::string& path, const std::string& text) {
   fs::path tmp;
   const TemporaryGuard guard;
   const int fd = createTemporary(target, tmp);
+  const int slot = trackTemporary(tmp.string());
   std::string error = writeAll(fd, text);
   if (::close(fd) != 0 && error.empty()) error = std::strerror(errno);
+  if (error.empty() && g_output_set) {  // renamed with the rest of the set at its commit
+    g_output_set->stage(tmp.string(), target.string(), slot);
+    return;
+  }
   if (error.empty()) {
     fs::rename(tmp, target, ec);  // replaces the name itself: a symlink there is not followed
-    if (!ec) g_temporary_open = 0;
     if (ec) error = "cannot rename " + tmp.string() + " into place: " + ec.message();
   }
-  if (!error.empty()) {
+  if (!error.empty()) fs::remove(tmp, ec);
+  untrackTemporary(slot);
+  if (!error.empty()) throw std::runtime_error(path + ": write failed (" + error + ")");
+}
+
+std::string stageOutput(const std::string& path, const std::function<void(const std::string&)>& write) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  std::error_code ec;
+  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+  fs::path tmp;
+  const TemporaryGuard guard;
+  ::close(createTemporary(target, tmp));  // an exclusive placeholder the writer replaces
+  const int slot = trackTemporary(tmp.string());
+  try {
+    write(tmp.string());
+  } catch (...) {
     fs::remove(tmp, ec);
-    throw std::runtime_error(path + ": write failed (" + error + ")");
+    untrackTemporary(slot);
+    throw;
   }
+  if (g_output_set) {
+    g_output_set->stage(tmp.string(), path, slot);
+  } else {
+    fs::rename(tmp, target, ec);
+    untrackTemporary(slot);
+    if (ec) {
+      fs::remove(tmp, ec);
+      throw std::runtime_error(path + ": write failed (cannot rename the finished file into place)");
+    }
+  }
+  return path;
+}
+
+OutputSet::OutputSet(const std::string& dir) : dir_(dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  lock_fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (lock_fd_ < 0) throw std::runtime_error(dir + ": cannot open the output folder (" + std::strerror(errno) + ")");
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    if (err == EWOULDBLOCK)
+      throw std::runtime_error(dir + ": another wattswath run is writing into this folder (it holds its lock); wait "
+                               "for it to finish or choose another output folder");
+    throw std::runtime_error(dir + ": cannot lock the output folder (" + std::strerror(err) + ")");
+  }
+  previous_ = g_output_set;
+  g_output_set = this;
+  guard_ = std::shared_ptr<void>(new TemporaryGuard, [](void* g) { delete static_cast<TemporaryGuard*>(g); });
+}
+
+OutputSet::~OutputSet() {
+  std::error_code ec;
+  for (const auto& f : staged_) {
+    std::filesystem::remove(f.tmp, ec);
+    untrackTemporary(f.slot);
+  }
+  g_output_set = previous_;
+  guard_.reset();
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the lock
+}
+
+void OutputSet::stage(const std::string& tmp, const std::string& target, int slot) { staged_.push_back({tmp, target, slot}); }
+
+void OutputSet::commit() {
+  std::error_code ec;
+  for (std::size_t k = 0; k < staged_.size(); ++k) {
+    std::filesystem::rename(staged_[k].tmp, staged_[k].target, ec);
+    if (ec) {
+      const std::string msg = staged_[k].target + ": write failed (cannot rename " + staged_[k].tmp + " into place: " +
+                              ec.message() + "); " + std::to_string(k) + " of the " + std::to_string(staged_.size()) +
+                              " files of this run were already in place";
+      staged_.erase(staged_.begin(), staged_.begin() + static_cast<long>(k));
+      throw std::runtime_error(msg);
+    }
+    untrackTemporary(staged_[k].slot);
+  }
+  staged_.clear();
 }
 
 CLI::Option* addForceFlag(CLI::App* cmd, bool& force) {

@@ -4,6 +4,7 @@
 /// Each subcommand lives in its own apps/cmd_*.cpp and exposes a register function.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,42 @@ void progress(const std::string& message);
 /// planted symlink), fsync'ed, and removed when anything fails or SIGINT, SIGTERM, SIGHUP or
 /// SIGXFSZ ends the program during the write. Throws std::runtime_error naming the path.
 void writeTextFileAtomic(const std::string& path, const std::string& text);
+
+/// The files of one run written as a set (issue 20). While alive, writeTextFileAtomic and
+/// stageOutput write each file to its exclusive temporary and keep it there; commit() renames them
+/// all into place, one after another in the same folder, only after every one was written, so a
+/// failure midway leaves the previous run's files as they were. The output folder is locked
+/// (flock on the folder itself, no lock file) for the set's life: a second wattswath run writing
+/// into it is refused at once instead of clobbering the files. Destroyed without commit(), the
+/// temporaries are removed. Throws std::runtime_error naming the folder when it is locked.
+class OutputSet {
+ public:
+  /// Creates `dir` if needed and locks it.
+  explicit OutputSet(const std::string& dir);
+  ~OutputSet();
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+  /// Keeps the written temporary `tmp` for `target` (`slot`: its signal-cleanup slot, -1 none).
+  void stage(const std::string& tmp, const std::string& target, int slot);
+  /// Renames every staged file into place; throws std::runtime_error naming the file when a rename fails.
+  void commit();
+
+ private:
+  struct Staged {
+    std::string tmp, target;
+    int slot;
+  };
+  std::string dir_;
+  int lock_fd_ = -1;
+  OutputSet* previous_ = nullptr;
+  std::vector<Staged> staged_;
+  std::shared_ptr<void> guard_;  // the signal handlers that remove the temporaries
+};
+
+/// Writes `path` through `write(temporary path)` (a writer that makes the file itself, e.g.
+/// GDAL's GeoPackage driver), staged in the current OutputSet or renamed into place at once;
+/// returns `path`. The temporary is exclusive, removed on failure and on signals.
+std::string stageOutput(const std::string& path, const std::function<void(const std::string&)>& write);
 
 /// Adds the common `--report FILE.html` option (self-contained HTML report) and `--report-svg DIR`
 /// (the same figures as separate .svg files) and `--force` (replace existing report files) to `cmd`.

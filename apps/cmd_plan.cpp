@@ -490,6 +490,10 @@ void runPlan(const PlanOpts& o) {
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
   if (!o.no_report && o.report.empty()) files.push_back("report.html");
   if (o.gpkg) files.push_back("plan.gpkg");
+  // Every file of this run is staged and renamed into place together at the end (OutputSet), and
+  // --out stays locked until then: a failure midway keeps the previous run's files, and a second
+  // run into the same folder is refused instead of clobbering them.
+  OutputSet out_set(o.out);
   // An input in --out under an output's name is refused even with --force (checkWritable).
   std::vector<std::string> inputs = {o.area, o.vehicle};
   inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
@@ -544,7 +548,10 @@ void runPlan(const PlanOpts& o) {
   writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
   const std::string path_geojson = geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go);
   writeTextFileAtomic((dir / "path.geojson").string(), path_geojson);
-  if (o.gpkg) geo::writeGeoPackage((dir / "plan.gpkg").string(), {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
+  if (o.gpkg)
+    stageOutput((dir / "plan.gpkg").string(), [&](const std::string& tmp) {
+      geo::writeGeoPackage(tmp, {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
+    });
   writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
   std::optional<SortieOutcome> split;
   if (!o.sorties.sorties.empty()) {
@@ -566,6 +573,7 @@ void runPlan(const PlanOpts& o) {
     if (split) data.sorties = split->view;
     writeReport(report::planReport(data), o.no_report ? std::string() : reportPath(o), o.report_svg, o.force);
   }
+  out_set.commit();
   const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
   const double whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
   geo::CoveragePath photographed;  // the legs the camera is on along

@@ -6,8 +6,11 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -267,6 +270,41 @@ TEST_F(OutputSafety, AtomicWriteReplacesASymlinkedTargetNameRatherThanWritingThr
   EXPECT_THROW(writeTextFileAtomic(out.string(), "new\n"), std::runtime_error);
   EXPECT_EQ(readAll(victim), "unrelated file\n");
   EXPECT_EQ(temporaries(dir_), 0);
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 20: plan's files are one set. A run that fails after its mission files are written (here:
+// the battery cannot fly one sortie) leaves the previous run's files exactly as they were, and no
+// temporaries; a second run into a folder another run holds is refused at once.
+TEST_F(OutputSafety, PlanFailingMidwayKeepsThePreviousRunsFilesAsASet) {
+  const std::string area = wattswath::test::sourcePath("data/areas/espiral_rectangle.geojson");
+  Outcome r = runCli({"plan", area, "--vehicle", kVehicle, "--spacing", "20", "--out", dir_.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::map<std::string, std::string> before;
+  for (const char* f : {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv", "report.html"})
+    before[f] = readAll(path(f));
+  r = runCli({"plan", area, "--vehicle", "tests/data/iris-small-battery.json", "--spacing", "10", "--sorties", "1",
+              "--out", dir_.string(), "--force"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("no split into 1"), std::string::npos) << r.err;
+  for (const auto& [f, text] : before) EXPECT_EQ(readAll(path(f)), text) << f << " changed by a run that failed";
+  EXPECT_FALSE(fs::exists(path("sortie_01.plan")));
+  EXPECT_FALSE(temporaryLeft());
+}
+
+TEST_F(OutputSafety, PlanIntoAFolderAnotherRunHoldsIsRefused) {
+  const int fd = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as a running plan holds it
+  const Outcome r = runCli({"plan", wattswath::test::sourcePath("data/areas/espiral_rectangle.geojson"), "--vehicle",
+                            kVehicle, "--spacing", "20", "--out", dir_.string()});
+  ::close(fd);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find(dir_.string() + ": another wattswath run is writing into this folder"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("mission.plan")));
 }
 
 }  // namespace
