@@ -31,6 +31,9 @@ declare -A seeds=(
 # target -> inputs per run for FUZZ_RUNS=ci: about 20 s each on the 2-core build machine
 # (docs/robustness.md, "CI cost"); the rates differ by a factor 10 between readers.
 declare -A ci_runs=([fuzz_vehicle_json]=10000 [fuzz_csv_log]=300000 [fuzz_waypoint_path]=600000 [fuzz_area]=80000 [fuzz_dataflash]=6000 [fuzz_ulog]=8000 [fuzz_mission]=60000)
+# target -> libFuzzer dictionary (structure-aware mutation: JSON tokens for deep nesting, ULog
+# message headers and type names for nested formats; issue 20)
+declare -A dicts=([fuzz_vehicle_json]=fuzz/dict/json.dict [fuzz_area]=fuzz/dict/json.dict [fuzz_mission]=fuzz/dict/json.dict [fuzz_ulog]=fuzz/dict/ulog.dict)
 # target -> extension of the real logs in ../shared/data/autopilot-logs
 declare -A real_logs=([fuzz_dataflash]=bin [fuzz_ulog]=ulg)
 all_targets=(fuzz_vehicle_json fuzz_csv_log fuzz_waypoint_path fuzz_area fuzz_dataflash fuzz_ulog fuzz_mission)
@@ -87,9 +90,11 @@ for t in "${targets[@]}"; do
     bound=(-max_total_time="$seconds")
     echo "fuzz: $t for ${seconds} s from $(ls "$work" | wc -l) inputs"
   fi
+  dict=()
+  if [[ -n "${dicts[$t]:-}" ]]; then dict=(-dict="${dicts[$t]}"); fi
   status=0
   SECONDS=0
-  "${fixed[@]}" "build-fuzz/bin/$t" "$work" -seed="${FUZZ_SEED:-1}" "${bound[@]}" -max_len=131072 -timeout=10 \
+  "${fixed[@]}" "build-fuzz/bin/$t" "$work" -seed="${FUZZ_SEED:-1}" "${bound[@]}" "${dict[@]}" -max_len=131072 -timeout=10 \
     -rss_limit_mb=2048 -artifact_prefix="build-fuzz/artifacts/$t/" -print_final_stats=1 > "build-fuzz/$t.log" 2>&1 ||
     status=$?
   grep -E "^(stat::|Done|==[0-9]+==|SUMMARY)" "build-fuzz/$t.log" | head -n 20 || true

@@ -85,7 +85,9 @@ TEST(CliEnergy, ReproduceMarinsEveryDifferenceOver1PercentIsExplained) {
   for (const char* table : {"hover", "optimal_velocity", "strategies_600m_45deg", "table5"}) {
     for (const auto& row : j.at(table)) {
       ++rows;
-      if (std::abs(row.at("diff_pct").get<double>()) > 1.0) EXPECT_TRUE(row.contains("note")) << row.dump();
+      if (std::abs(row.at("diff_pct").get<double>()) > 1.0) {
+        EXPECT_TRUE(row.contains("note")) << row.dump();
+      }
     }
   }
   EXPECT_EQ(rows, 29);  // 3 hover + 2 optimal velocity + 12 strategy + 12 Table V rows
