@@ -160,6 +160,24 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
   return d;
 }
 
+/// [m] Farthest a take-off point may lie from the area's nearest vertex: the mission's local frame
+/// is a plane tangent at the area (a point 500 km away lands 42.7 km off), and no multirotor
+/// surveys that far from where it takes off.
+constexpr double kMaxHomeDistanceM = 50e3;
+
+/// Throws std::invalid_argument naming `what` when `home` lies more than kMaxHomeDistanceM from
+/// every vertex of the area's outer ring (geodesic distances on WGS84).
+void checkHomeNear(const geo::GeoPoint& home, const geo::Ring& outer, const geo::LocalFrame& frame, const std::string& what) {
+  double nearest = INFINITY;
+  for (const auto& v : outer) nearest = std::min(nearest, geo::geodesicDistance(home, frame.toGeodetic(v)));
+  if (nearest > kMaxHomeDistanceM)
+    throw std::invalid_argument(what + " (" + fixedText(home.lat_deg, 6) + ", " + fixedText(home.lon_deg, 6) + ") is " +
+                                fixedText(nearest / 1000.0, 1) + " km from the nearest vertex of the area (WGS84 geodesic), "
+                                "more than the " + fixedText(kMaxHomeDistanceM / 1000.0, 0) +
+                                " km allowed: the mission's local frame would misplace it and no multirotor flies "
+                                "there and back. Check the coordinates (LAT,LON order) or the area");
+}
+
 geo::Point parseHome(const std::string& s, const geo::LocalFrame& frame) {
   const auto comma = s.find(',');
   double lat = NAN, lon = NAN;
@@ -173,7 +191,7 @@ geo::Point parseHome(const std::string& s, const geo::LocalFrame& frame) {
     throw std::invalid_argument("--home '" + s + "': expected LAT,LON in degrees, e.g. 43.7153,10.4616");
   }
   geo::validateGeoPoint({lat, lon, 0.0}, "--home");
-  return frame.toLocal(lat, lon);
+  return frame.toLocal(lat, lon);  // near the area (checkHomeNear), where the local frame is exact enough
 }
 
 nlohmann::json candidateJson(const pl::PlanCandidate& c, double plan_energy) {
@@ -415,9 +433,18 @@ PlanSetup setUp(const PlanOpts& o) {
   const PlanWorkEstimate work = estimatePlanWork(pr.area, pr.spacing);
   progress(work.summary);
   checkPlanWork(work, pr.spacing, !o.sorties.sorties.empty(), o.allow_large, o.area);
-  if (!o.home.empty()) pr.home = parseHome(o.home, *s.area.frame);
-  else if (s.area.home) pr.home = *s.area.home;
-  else pr.home = pr.area.outer.front();
+  if (!o.home.empty()) {
+    pr.home = parseHome(o.home, *s.area.frame);
+    const geo::GeoPoint g = s.area.frame->toGeodetic(pr.home);
+    const auto comma = o.home.find(',');
+    checkHomeNear({std::stod(o.home.substr(0, comma)), std::stod(o.home.substr(comma + 1)), g.alt_m}, pr.area.outer,
+                  *s.area.frame, "--home");
+  } else if (s.area.home) {
+    pr.home = *s.area.home;
+    checkHomeNear(s.area.frame->toGeodetic(pr.home), pr.area.outer, *s.area.frame, o.area + ": its home point");
+  } else {
+    pr.home = pr.area.outer.front();
+  }
   return s;
 }
 

@@ -269,3 +269,27 @@ TEST(Regression, PlanWorkIsEstimatedAndAbsurdPlansRefusedUpFront) {
   EXPECT_FALSE(std::filesystem::exists(dir / "o" / "mission.plan"));
   std::filesystem::remove_all(dir);
 }
+
+// Issue 20: a home point 500 km away (or at the antipode) was silently moved by the local
+// tangent-plane frame (42.7 km off at 500 km). It is refused beyond 50 km from the area's nearest
+// vertex (WGS84 geodesic), given as --home or as the area file's home.
+TEST(Regression, PlanFarHomeIsRefusedNotSilentlyMoved) {
+  const auto dir = std::filesystem::temp_directory_path() / ("wattswath_farhome_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto r = runCli({"plan", sourcePath("data/areas/espiral_rectangle.geojson"), "--vehicle", "data/vehicles/iris.json",
+                   "--spacing", "20", "--home", "43.7,-170.5", "--out", (dir / "a").string()});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("--home (43.700000, -170.500000) is 10320.4 km from the nearest vertex"), std::string::npos) << r.err;
+  const std::string wpl = (dir / "far_home.waypoints").string();
+  std::ofstream(wpl) << "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t39.2\t9.1\t20\t1\n"  // Cagliari, about 560 km away
+                        "1\t0\t0\t16\t0\t0\t0\t0\t43.717946\t10.430821\t10\t1\n2\t0\t0\t16\t0\t0\t0\t0\t43.717931\t10.433954\t10\t1\n"
+                        "3\t0\t0\t16\t0\t0\t0\t0\t43.718985\t10.433954\t10\t1\n4\t0\t0\t16\t0\t0\t0\t0\t43.718993\t10.430843\t10\t1\n";
+  r = runCli({"plan", wpl, "--vehicle", "data/vehicles/iris.json", "--spacing", "20", "--out", (dir / "b").string()});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find(wpl + ": its home point"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("more than the 50 km allowed"), std::string::npos) << r.err;
+  r = runCli({"plan", sourcePath("data/areas/espiral_rectangle.geojson"), "--vehicle", "data/vehicles/iris.json",
+              "--spacing", "20", "--home", "43.7185,10.4330", "--out", (dir / "c").string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::filesystem::remove_all(dir);
+}

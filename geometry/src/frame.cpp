@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/LocalCartesian.hpp>
 
 namespace wattswath::geometry {
@@ -33,6 +34,12 @@ void validateGeoPoint(const GeoPoint& p, const std::string& where) {
 LocalFrame::LocalFrame(const GeoPoint& origin) : origin_(origin) {
   validateGeoPoint(origin, "frame origin");
   impl_ = std::make_shared<const Impl>(Impl{GeographicLib::LocalCartesian(origin.lat_deg, origin.lon_deg, origin.alt_m)});
+}
+
+double geodesicDistance(const GeoPoint& a, const GeoPoint& b) {
+  double s12 = 0.0;
+  GeographicLib::Geodesic::WGS84().Inverse(a.lat_deg, a.lon_deg, b.lat_deg, b.lon_deg, s12);
+  return s12;
 }
 
 Point LocalFrame::toLocal(double lat_deg, double lon_deg) const {

@@ -23,6 +23,9 @@ struct GeoPoint {
 /// both (and alt) are finite.
 void validateGeoPoint(const GeoPoint& p, const std::string& where);
 
+/// [m] The WGS84 geodesic distance between `a` and `b` (GeographicLib), heights ignored.
+double geodesicDistance(const GeoPoint& a, const GeoPoint& b);
+
 /// A local tangent-plane frame: x east, y north, z up [m], origin at a geodetic point.
 /// Wraps GeographicLib::LocalCartesian (exact ellipsoidal geodetic <-> ECEF <-> ENU transform).
 /// 2D use: toLocal() drops z; toGeodetic() returns the point at the origin's ellipsoid height whose
