@@ -134,6 +134,17 @@ TEST_F(OutputSafety, LogConvertRefusesExistingOutAndNeverItsInput) {
   EXPECT_NE(readAll(out).find("time_s,"), std::string::npos);
 }
 
+// Issue 20: `reproduce` with no arguments used to write into the checkout's docs/reproduction.md
+// (a compiled-in path) without --force; without --out it now writes nothing.
+TEST_F(OutputSafety, ReproduceWithoutOutWritesNothingIntoTheCheckout) {
+  const fs::path doc = wattswath::test::sourcePath("docs/reproduction.md");
+  const auto before = fs::last_write_time(doc);
+  const Outcome r = runCli({"reproduce", "--json"}, 300);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(fs::last_write_time(doc), before);
+  EXPECT_EQ(r.err.find("wrote "), std::string::npos) << r.err;
+}
+
 TEST_F(OutputSafety, ReproduceOutRefusesExistingWithoutForce) {
   const std::string out = write("report.md", "my notes\n");
   const auto before = fingerprint(out);
