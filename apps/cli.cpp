@@ -166,6 +166,28 @@ std::string writeAll(int fd, const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// Puts the written temporary `tmp` (signal-cleanup `slot`) in place as `target`: staged in the
+// current OutputSet, else renamed now (replacing the name itself: a symlink there is not followed).
+// With a non-empty `error` (the write failed) or a failed rename, removes it and throws naming `target`.
+void placeTemporary(const std::filesystem::path& tmp, const std::filesystem::path& target, int slot, std::string error) {
+  std::error_code ec;
+  if (error.empty() && g_output_set) {  // renamed with the rest of the set at its commit
+    g_output_set->stage(tmp.string(), target.string(), slot);
+    return;
+  }
+  if (error.empty()) {
+    std::filesystem::rename(tmp, target, ec);
+    if (ec) error = "cannot rename " + tmp.string() + " into place: " + ec.message();
+  }
+  if (!error.empty()) std::filesystem::remove(tmp, ec);
+  untrackTemporary(slot);
+  if (!error.empty()) throw std::runtime_error(target.string() + ": write failed (" + error + ")");
+}
+
+}  // namespace
+
 void writeTextFileAtomic(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
   const fs::path target(path);
@@ -181,17 +203,7 @@ void writeTextFileAtomic(const std::string& path, const std::string& text) {
   const int slot = trackTemporary(tmp.string());
   std::string error = writeAll(fd, text);
   if (::close(fd) != 0 && error.empty()) error = std::strerror(errno);
-  if (error.empty() && g_output_set) {  // renamed with the rest of the set at its commit
-    g_output_set->stage(tmp.string(), target.string(), slot);
-    return;
-  }
-  if (error.empty()) {
-    fs::rename(tmp, target, ec);  // replaces the name itself: a symlink there is not followed
-    if (ec) error = "cannot rename " + tmp.string() + " into place: " + ec.message();
-  }
-  if (!error.empty()) fs::remove(tmp, ec);
-  untrackTemporary(slot);
-  if (!error.empty()) throw std::runtime_error(path + ": write failed (" + error + ")");
+  placeTemporary(tmp, target, slot, error);
 }
 
 std::string stageOutput(const std::string& path, const std::function<void(const std::string&)>& write) {
@@ -205,21 +217,12 @@ std::string stageOutput(const std::string& path, const std::function<void(const 
   const int slot = trackTemporary(tmp.string());
   try {
     write(tmp.string());
-  } catch (...) {
+  } catch (...) {  // the writer's own error, as it gave it
     fs::remove(tmp, ec);
     untrackTemporary(slot);
     throw;
   }
-  if (g_output_set) {
-    g_output_set->stage(tmp.string(), path, slot);
-  } else {
-    fs::rename(tmp, target, ec);
-    untrackTemporary(slot);
-    if (ec) {
-      fs::remove(tmp, ec);
-      throw std::runtime_error(path + ": write failed (cannot rename the finished file into place)");
-    }
-  }
+  placeTemporary(tmp, target, slot, "");
   return path;
 }
 

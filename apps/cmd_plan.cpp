@@ -178,7 +178,8 @@ void checkHomeNear(const geo::GeoPoint& home, const geo::Ring& outer, const geo:
                                 "there and back. Check the coordinates (LAT,LON order) or the area");
 }
 
-geo::Point parseHome(const std::string& s, const geo::LocalFrame& frame) {
+/// The take-off point of `--home LAT,LON` [deg]; throws std::invalid_argument naming the option.
+geo::GeoPoint parseHome(const std::string& s) {
   const auto comma = s.find(',');
   double lat = NAN, lon = NAN;
   try {
@@ -191,7 +192,7 @@ geo::Point parseHome(const std::string& s, const geo::LocalFrame& frame) {
     throw std::invalid_argument("--home '" + s + "': expected LAT,LON in degrees, e.g. 43.7153,10.4616");
   }
   geo::validateGeoPoint({lat, lon, 0.0}, "--home");
-  return frame.toLocal(lat, lon);  // near the area (checkHomeNear), where the local frame is exact enough
+  return {lat, lon, 0.0};
 }
 
 nlohmann::json candidateJson(const pl::PlanCandidate& c, double plan_energy) {
@@ -434,11 +435,9 @@ PlanSetup setUp(const PlanOpts& o) {
   progress(work.summary);
   checkPlanWork(work, pr.spacing, !o.sorties.sorties.empty(), o.allow_large, o.area);
   if (!o.home.empty()) {
-    pr.home = parseHome(o.home, *s.area.frame);
-    const geo::GeoPoint g = s.area.frame->toGeodetic(pr.home);
-    const auto comma = o.home.find(',');
-    checkHomeNear({std::stod(o.home.substr(0, comma)), std::stod(o.home.substr(comma + 1)), g.alt_m}, pr.area.outer,
-                  *s.area.frame, "--home");
+    const geo::GeoPoint home = parseHome(o.home);
+    checkHomeNear(home, pr.area.outer, *s.area.frame, "--home");
+    pr.home = s.area.frame->toLocal(home.lat_deg, home.lon_deg);  // near the area, where the local frame is exact enough
   } else if (s.area.home) {
     pr.home = *s.area.home;
     checkHomeNear(s.area.frame->toGeodetic(pr.home), pr.area.outer, *s.area.frame, o.area + ": its home point");

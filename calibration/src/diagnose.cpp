@@ -138,13 +138,12 @@ std::vector<double> residualOf(const EnergyModel& m, const std::vector<PreparedL
 
 // The fitted model's sensitivity to each of its coefficients over every log, concatenated
 // [W per coefficient unit]: forward differences of 1e-4 of the value (or of 1e-6 near 0), stepped
-// back when the step would leave the coefficient's bounds.
-std::vector<std::vector<double>> modelColumns(const EnergyModel& m, const std::vector<PreparedLog>& logs) {
+// back when the step would leave the coefficient's bounds. `power`: m's power per log, already
+// computed by the caller.
+std::vector<std::vector<double>> modelColumns(const EnergyModel& m, const std::vector<PreparedLog>& logs,
+                                              const std::vector<std::vector<double>>& power) {
   std::vector<double> base;
-  for (const auto& l : logs) {
-    const auto p = modelPower(m, l);
-    base.insert(base.end(), p.begin(), p.end());
-  }
+  for (const auto& p : power) base.insert(base.end(), p.begin(), p.end());
   std::vector<std::vector<double>> cols;
   for (const auto& name : m.effectNames()) {
     const auto& coeffs = m.effect(name).coefficients();
@@ -238,7 +237,7 @@ Diagnosis diagnose(const EnergyModel& model, const Vehicle& v, const std::vector
   d.final_heldout = fin.heldout;
   d.final_rmse_w = rmsOf(residualOf(fin.full.model, logs, &d.final_power));
   d.final_effects = fin.full.model.effectNames();
-  d.signatures = residualSignatures(logs, d.final_power, s.signatures, modelColumns(fin.full.model, logs));
+  d.signatures = residualSignatures(logs, d.final_power, s.signatures, modelColumns(fin.full.model, logs, d.final_power));
   conclude(d);
   return d;
 }

@@ -26,6 +26,7 @@ struct Params {
   double speed, speed_up, speed_dn, accel, accel_z, radius, pos_xy_p, pos_z_p, vel_xy_p, vel_xy_i, vel_xy_imax, accel_max;
   double rtl_alt, rtl_alt_final, rtl_climb_min, rtl_loiter_s, land_speed, land_alt_low, spool_s;
   bool linear_slack;  // before 3.4: the leash slack shrinks linearly with the cross-track error
+  double leash_up, leash_dn;  // [m] the position controller's vertical leashes (climbing, descending)
 };
 
 // True for ArduCopter versions before 3.4 ("3.2", "3.3.3"), whose advance_wp_target_along_track
@@ -34,6 +35,12 @@ bool linearSlackVersion(const std::string& version) {
   int major = 0, minor = -1;
   if (std::sscanf(version.c_str(), "%d.%d", &major, &minor) < 2) return false;
   return major < 3 || (major == 3 && minor < 4);
+}
+
+// Leash length of a position controller (AC_PosControl::calc_leash_length) [m].
+double leashLength(double speed, double accel, double kp) {
+  const double l = speed <= accel / kp ? speed / kp : accel / (2.0 * kp * kp) + speed * speed / (2.0 * accel);
+  return std::max(l, 1.0);
 }
 
 Params readParams(const AutopilotConfig& ap) {
@@ -60,14 +67,11 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
   p.linear_slack = linearSlackVersion(ap.version);
+  p.leash_up = leashLength(p.speed_up, p.accel_z, p.pos_z_p);
+  p.leash_dn = leashLength(p.speed_dn, p.accel_z, p.pos_z_p);
   return p;
 }
 
-// Leash length of a position controller (AC_PosControl::calc_leash_length) [m].
-double leashLength(double speed, double accel, double kp) {
-  const double l = speed <= accel / kp ? speed / kp : accel / (2.0 * kp * kp) + speed * speed / (2.0 * accel);
-  return std::max(l, 1.0);
-}
 
 // The vehicle and the carrot it chases.
 struct Vehicle {
@@ -79,6 +83,7 @@ struct Vehicle {
 struct Leg {
   Eigen::Vector3d origin, dest, u;
   double length = 0.0, desired = 0.0, lim = 0.0, track_speed = 0.0, track_accel = 0.0, leash = 0.0, slow_down = 0.0;
+  double pos_leash = 1.0;  // [m] the position controller's horizontal leash at the leg's speed
   bool fast = false, slowing = false;
   Eigen::Vector3d carrot() const { return origin + u * desired; }
 };
@@ -98,15 +103,15 @@ Leg startLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double spee
   g.track_speed = detail::kinematicLimit(g.u, speed, P.speed_up, P.speed_dn);
   g.track_accel = detail::kinematicLimit(g.u, P.accel, P.accel_z, P.accel_z);
   g.leash = std::min(detail::kinematicLimit(g.u, leashLength(leash_speed, P.accel, P.pos_xy_p), 1e300, 1e300),
-                     detail::kinematicLimit(g.u, 1e300, leashLength(P.speed_up, P.accel_z, P.pos_z_p),
-                                            leashLength(P.speed_dn, P.accel_z, P.pos_z_p)));
+                     detail::kinematicLimit(g.u, 1e300, P.leash_up, P.leash_dn));
+  g.pos_leash = leashLength(speed, P.accel, P.pos_xy_p);
   g.slow_down = g.track_speed * g.track_speed / (4.0 * g.track_accel);
   g.lim = std::clamp(veh.v.dot(g.u), 0.0, g.track_speed);
   return g;
 }
 
 // Moves the carrot one step (AC_WPNav::advance_wp_target_along_track of 3.x).
-void advanceCarrot(Leg& g, const Vehicle& veh, double speed, const Params& P, double dt) {
+void advanceCarrot(Leg& g, const Vehicle& veh, const Params& P, double dt) {
   if (g.length <= 1e-9) return;
   const Eigen::Vector3d rel = veh.p - g.origin;
   const double covered = rel.dot(g.u);
@@ -115,9 +120,8 @@ void advanceCarrot(Leg& g, const Vehicle& veh, double speed, const Params& P, do
   // the track leash; before 3.4 the slack is the track leash minus that scaled error, from 3.4 on
   // the other side of the right triangle whose hypotenuse is the track leash. 0 beyond the leash.
   const Eigen::Vector3d err = rel - g.u * covered;
-  const double leash_xy = leashLength(speed, P.accel, P.pos_xy_p);
-  const double leash_z = err.z() >= 0.0 ? leashLength(P.speed_up, P.accel_z, P.pos_z_p) : leashLength(P.speed_dn, P.accel_z, P.pos_z_p);
-  const double scaled_err = std::max(g.leash * err.head<2>().norm() / leash_xy, g.leash * std::abs(err.z()) / leash_z);
+  const double leash_z = err.z() >= 0.0 ? P.leash_up : P.leash_dn;
+  const double scaled_err = std::max(g.leash * err.head<2>().norm() / g.pos_leash, g.leash * std::abs(err.z()) / leash_z);
   const double slack = scaled_err >= g.leash ? 0.0
                        : P.linear_slack ? g.leash - scaled_err
                                         : std::sqrt(g.leash * g.leash - scaled_err * scaled_err);
@@ -200,7 +204,7 @@ struct Flyer {
     Leg g = startLeg(from, to, speed, leash_speed, fast, veh, P);
     leash_speed = speed;  // recalculated at the position controller's first update on this leg
     while (true) {
-      advanceCarrot(g, veh, speed, P, rec.dt());
+      advanceCarrot(g, veh, P, rec.dt());
       chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, af, rec.dt());
       rec.tick(veh.p, veh.v, phase, step);
       const bool carrot_there = g.length <= 1e-9 || g.desired >= g.length;  // a degenerate leg has no carrot to move
