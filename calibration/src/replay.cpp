@@ -178,17 +178,21 @@ PreparedLog prepareLog(const FlightLog& log, const SegmentSettings& set, const s
       int j = i;
       while (j + 1 < n && (hs[j + 1] < set.stop_speed) == stopped) ++j;
       if (i > 0) starts.push_back(i);
-      if (!stopped) {
-        int last = i;
+      if (!stopped && j - i >= 4) {
+        // The fastest speed since the last split (running) and up to the run's end (suffix
+        // maxima), so a day-long moving run costs linear time, not a scan per local minimum.
+        std::vector<double> after_max(static_cast<size_t>(j - i + 1));
+        after_max.back() = hs[j];
+        for (int k = j - 1; k >= i; --k) after_max[k - i] = std::max(hs[k], after_max[k - i + 1]);
+        double before_max = std::max(hs[i], hs[i + 1]);
         for (int k = i + 2; k <= j - 2; ++k) {
+          before_max = std::max(before_max, hs[k]);
           bool local_min = true;
           for (int q = k - 2; q <= k + 2; ++q) local_min = local_min && hs[k] <= hs[q];
           if (!local_min) continue;
-          const double before = *std::max_element(hs.begin() + last, hs.begin() + k + 1);
-          const double after = *std::max_element(hs.begin() + k, hs.begin() + j + 1);
-          if (hs[k] < set.leg_slowdown * std::min(before, after)) {
+          if (hs[k] < set.leg_slowdown * std::min(before_max, after_max[k - i])) {
             starts.push_back(k);
-            last = k;
+            before_max = hs[k];
           }
         }
       }

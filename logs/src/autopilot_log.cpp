@@ -320,7 +320,7 @@ FlightLog readFlightLog(const std::string& path, const LogReadOptions& options) 
     case LogFormat::DataFlash: return readDataFlashLog(path, options);
     case LogFormat::Csv: break;
   }
-  FlightLog log = readCsvLog(path);
+  FlightLog log = readCsvLog(path, {}, options.max_file_bytes);
   if (log.airborne.empty()) {
     std::vector<double> t, i;
     for (const auto& s : log.samples) {

@@ -2,12 +2,15 @@
 // Private helpers of the binary log readers: whole-file reads, little-endian reads from a byte buffer.
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
+
+#include "wattswath/logs/tolerances.hpp"
 
 namespace wattswath::logs::binary {
 
@@ -26,11 +29,50 @@ T readLe(const std::uint8_t* p) {
   return v;
 }
 
-/// The bytes of the file at `path`; throws std::runtime_error naming it when it cannot be opened.
-inline std::vector<std::uint8_t> readFileBytes(const std::string& path) {
+/// The message for a log file of `size` bytes over the limit `max_bytes` [B].
+/// `streamed`: a pipe or device, of which only the first `size` bytes were read.
+inline std::string tooLargeMessage(const std::string& path, unsigned long long size, long long max_bytes,
+                                   bool streamed = false) {
+  const auto mib = [](unsigned long long b) { return std::to_string((b + (1ULL << 20) - 1) >> 20); };
+  return path + (streamed ? ": more than " : ": the file is ") + std::to_string(size - (streamed ? 1 : 0)) +
+         " bytes (" + mib(size) + " MiB); flight logs are read whole, " +
+         "at most " + mib(static_cast<unsigned long long>(max_bytes)) + " MiB (memory is about 2-3x the file); " +
+         "--max-log-size MIB raises the limit, or cut the log first";
+}
+
+/// The whole file at `path` as `Bytes` (std::string or std::vector<std::uint8_t>), refused before
+/// reading when larger than `max_bytes` [B] (pipes and devices: as soon as they pass it); throws
+/// std::runtime_error naming the file.
+template <typename Bytes>
+Bytes readWholeFile(const std::string& path, long long max_bytes) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open");
-  return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  Bytes out;
+  std::error_code ec;
+  const bool regular = std::filesystem::is_regular_file(path, ec);
+  const auto size = regular ? std::filesystem::file_size(path, ec) : 0;
+  if (regular && !ec) {
+    if (size > static_cast<unsigned long long>(max_bytes)) throw std::runtime_error(tooLargeMessage(path, size, max_bytes));
+    out.resize(static_cast<std::size_t>(size));
+    in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(size));
+    out.resize(static_cast<std::size_t>(in.gcount()));
+    return out;
+  }
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    const auto n = static_cast<std::size_t>(in.gcount());
+    if (out.size() + n > static_cast<unsigned long long>(max_bytes)) {
+      throw std::runtime_error(tooLargeMessage(path, static_cast<unsigned long long>(max_bytes) + 1, max_bytes, true));
+    }
+    out.insert(out.end(), buf, buf + n);
+  }
+  return out;
+}
+
+/// The bytes of the file at `path` (at most `max_bytes` [B]); throws std::runtime_error naming it
+/// when it cannot be opened or is larger.
+inline std::vector<std::uint8_t> readFileBytes(const std::string& path, long long max_bytes = tol::kLogMaxFileBytes) {
+  return readWholeFile<std::vector<std::uint8_t>>(path, max_bytes);
 }
 
 }  // namespace wattswath::logs::binary

@@ -229,7 +229,7 @@ FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string&
 }
 
 FlightLog readDataFlashLog(const std::string& path, const LogReadOptions& options) {
-  return readDataFlashBytes(binary::readFileBytes(path), path, options);
+  return readDataFlashBytes(binary::readFileBytes(path, options.max_file_bytes), path, options);
 }
 
 }  // namespace wattswath::logs

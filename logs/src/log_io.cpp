@@ -8,9 +8,12 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <string_view>
+#include <unordered_map>
 #include <sstream>
 #include <stdexcept>
 
+#include "binary_read.hpp"
 #include "wattswath/logs/local_fit.hpp"
 #include "wattswath/logs/tolerances.hpp"
 
@@ -110,12 +113,8 @@ void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const De
   }
 }
 
-FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the flight log");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return parseCsvLog(os.str(), path, d);
+FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d, long long max_file_bytes) {
+  return parseCsvLog(binary::readWholeFile<std::string>(path, max_file_bytes), path, d);
 }
 
 FlightLog parseCsvLog(const std::string& text_in, const std::string& source, const DerivativeSettings& d) {
@@ -134,100 +133,63 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
   size_t header_line = 0;
   size_t line_no = 0;
   size_t pos = 0;
-  std::vector<std::pair<size_t, std::vector<std::string>>> rows;
-  while (pos <= text.size()) {
-    size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string line(text.substr(pos, end - pos));
-    pos = end + 1;
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (trim(line).empty()) {
-      if (pos > text.size()) break;
-      continue;  // blank line: not a row
-    }
-    if (header.empty()) {
-      if (line[0] == '#') {
-        const std::string body = trim(line.substr(1));
-        const size_t colon = body.find(':');
-        if (colon != std::string::npos) log.metadata[trim(body.substr(0, colon))] = trim(body.substr(colon + 1));
-        continue;
-      }
-      header = splitCommas(line);
-      header_line = line_no;
-      for (size_t c = 0; c < header.size(); ++c) {
-        if (header[c].empty()) fail(source, line_no, "column " + std::to_string(c + 1) + " has an empty name");
-        for (size_t e = 0; e < c; ++e)
-          if (header[e] == header[c]) fail(source, line_no, "column '" + header[c] + "' appears twice");
-        const int k = knownIndex(header[c]);
-        if (k >= 0) {
-          col_of[k] = static_cast<int>(c);
-        } else {
-          extra_idx.push_back(static_cast<int>(c));
-          log.extra_columns.push_back(header[c]);
-        }
-      }
-      continue;
-    }
-    if (line[0] == '#') {
-      fail(source, line_no, "comment line after the header; comments ('# key: value') must come before the header");
-    }
-    rows.emplace_back(line_no, splitCommas(line));
-  }
-  if (header.empty()) throw std::runtime_error(source + ":" + std::to_string(line_no) + ": no header row found");
-
+  // Rows are converted as they are read (no copy of the table as strings); their line numbers are
+  // kept for the messages about derivatives.
+  std::vector<size_t> row_lines;
+  bool local = false, geodetic = false, have_power = false, have_vel = false, have_acc = false;
   auto has = [&](const char* n) { return col_of[knownIndex(n)] >= 0; };
-  auto requireCol = [&](const char* n, const std::string& why) {
-    if (!has(n)) fail(source, header_line, "missing required column '" + std::string(n) + "' (" + why + ")");
-  };
-  requireCol("time_s", "sample time");
-  const bool local = has("x_m") || has("y_m") || has("z_m");
-  const bool geodetic = !local && (has("lat_deg") || has("lon_deg") || has("alt_m"));
-  if (local) {
-    for (const char* n : {"x_m", "y_m", "z_m"}) requireCol(n, "local position x_m, y_m, z_m");
-  } else if (geodetic) {
-    for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) requireCol(n, "geodetic position lat_deg, lon_deg, alt_m");
-  } else {
-    fail(source, header_line, "missing required column 'x_m' (position: x_m, y_m, z_m or lat_deg, lon_deg, alt_m)");
-  }
-  const bool have_power = has("power_w");
-  if (!have_power) {
-    requireCol("voltage_v", "battery power: voltage_v and current_a, or power_w");
-    requireCol("current_a", "battery power: voltage_v and current_a, or power_w");
-  }
-  auto groupAll = [&](std::array<const char*, 3> g) {
-    const int n = has(g[0]) + has(g[1]) + has(g[2]);
-    if (n != 0 && n != 3) {
-      for (const char* c : g)
-        if (!has(c)) {
-          fail(source, header_line,
-               "missing column '" + std::string(c) + "': give all of " + g[0] + ", " + g[1] + ", " + g[2] + " or none");
-        }
+  // The header's checks, run once when the header row is read.
+  auto setupColumns = [&]() {
+    auto requireCol = [&](const char* n, const std::string& why) {
+      if (!has(n)) fail(source, header_line, "missing required column '" + std::string(n) + "' (" + why + ")");
+    };
+    requireCol("time_s", "sample time");
+    local = has("x_m") || has("y_m") || has("z_m");
+    geodetic = !local && (has("lat_deg") || has("lon_deg") || has("alt_m"));
+    if (local) {
+      for (const char* n : {"x_m", "y_m", "z_m"}) requireCol(n, "local position x_m, y_m, z_m");
+    } else if (geodetic) {
+      for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) requireCol(n, "geodetic position lat_deg, lon_deg, alt_m");
+    } else {
+      fail(source, header_line, "missing required column 'x_m' (position: x_m, y_m, z_m or lat_deg, lon_deg, alt_m)");
     }
-    return n == 3;
-  };
-  const bool have_vel = groupAll({"vx_mps", "vy_mps", "vz_mps"});
-  const bool have_acc = groupAll({"ax_mps2", "ay_mps2", "az_mps2"});
-  if (has("wind_x_mps") != has("wind_y_mps")) {
-    fail(source, header_line, std::string("missing column '") + (has("wind_x_mps") ? "wind_y_mps" : "wind_x_mps") +
-                                  "': give both wind columns or none");
-  }
-  // In a local-frame log the lat/lon/alt columns are not used: keep them verbatim.
-  if (local) {
-    for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) {
-      const int k = knownIndex(n);
-      if (col_of[k] >= 0) {
-        extra_idx.push_back(col_of[k]);
-        log.extra_columns.push_back(n);
-        col_of[k] = -1;
+    have_power = has("power_w");
+    if (!have_power) {
+      requireCol("voltage_v", "battery power: voltage_v and current_a, or power_w");
+      requireCol("current_a", "battery power: voltage_v and current_a, or power_w");
+    }
+    auto groupAll = [&](std::array<const char*, 3> g) {
+      const int n = has(g[0]) + has(g[1]) + has(g[2]);
+      if (n != 0 && n != 3) {
+        for (const char* c : g)
+          if (!has(c)) {
+            fail(source, header_line,
+                 "missing column '" + std::string(c) + "': give all of " + g[0] + ", " + g[1] + ", " + g[2] + " or none");
+          }
+      }
+      return n == 3;
+    };
+    have_vel = groupAll({"vx_mps", "vy_mps", "vz_mps"});
+    have_acc = groupAll({"ax_mps2", "ay_mps2", "az_mps2"});
+    if (has("wind_x_mps") != has("wind_y_mps")) {
+      fail(source, header_line, std::string("missing column '") + (has("wind_x_mps") ? "wind_y_mps" : "wind_x_mps") +
+                                    "': give both wind columns or none");
+    }
+    // In a local-frame log the lat/lon/alt columns are not used: keep them verbatim.
+    if (local) {
+      for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) {
+        const int k = knownIndex(n);
+        if (col_of[k] >= 0) {
+          extra_idx.push_back(col_of[k]);
+          log.extra_columns.push_back(n);
+          col_of[k] = -1;
+        }
       }
     }
-  }
 
+  };
   std::optional<GeographicLib::LocalCartesian> enu;
-  log.samples.reserve(rows.size());
-  log.extra_values.reserve(rows.size());
-  for (const auto& [ln, f] : rows) {
+  auto addRow = [&](size_t ln, const std::vector<std::string>& f) {
     if (f.size() != header.size()) {
       fail(source, ln, "row has " + std::to_string(f.size()) + " fields, the header has " +
                            std::to_string(header.size()));
@@ -315,7 +277,53 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
     for (int c : extra_idx) extra.push_back(f[c]);
     log.extra_values.push_back(std::move(extra));
     log.samples.push_back(s);
+  };
+  while (pos <= text.size()) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string line(text.substr(pos, end - pos));
+    pos = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) {
+      if (pos > text.size()) break;
+      continue;  // blank line: not a row
+    }
+    if (header.empty()) {
+      if (line[0] == '#') {
+        const std::string body = trim(line.substr(1));
+        const size_t colon = body.find(':');
+        if (colon != std::string::npos) log.metadata[trim(body.substr(0, colon))] = trim(body.substr(colon + 1));
+        continue;
+      }
+      header = splitCommas(line);
+      header_line = line_no;
+      std::unordered_map<std::string_view, size_t> seen;  // name -> first column: linear in the header's width
+      seen.reserve(header.size());
+      for (size_t c = 0; c < header.size(); ++c) {
+        if (header[c].empty()) fail(source, line_no, "column " + std::to_string(c + 1) + " has an empty name");
+        if (!seen.emplace(header[c], c).second) {
+          fail(source, line_no, "column '" + header[c] + "' appears twice (fields " + std::to_string(seen[header[c]] + 1) +
+                                    " and " + std::to_string(c + 1) + ")");
+        }
+        const int k = knownIndex(header[c]);
+        if (k >= 0) {
+          col_of[k] = static_cast<int>(c);
+        } else {
+          extra_idx.push_back(static_cast<int>(c));
+          log.extra_columns.push_back(header[c]);
+        }
+      }
+      setupColumns();
+      continue;
+    }
+    if (line[0] == '#') {
+      fail(source, line_no, "comment line after the header; comments ('# key: value') must come before the header");
+    }
+    row_lines.push_back(line_no);
+    addRow(line_no, splitCommas(line));
   }
+  if (header.empty()) throw std::runtime_error(source + ":" + std::to_string(line_no) + ": no header row found");
   // A local-frame log written from a geodetic one keeps its origin in the metadata.
   if (local && log.metadata.count("origin_lat_deg") && log.metadata.count("origin_lon_deg") &&
       log.metadata.count("origin_alt_m")) {
@@ -346,7 +354,7 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
   for (size_t i = 0; i < log.samples.size(); ++i) {
     const auto& x = log.samples[i];
     if (!x.velocity.allFinite() || !x.acceleration.allFinite()) {
-      fail(source, rows[i].first,
+      fail(source, row_lines[i],
            std::string("derived ") + (x.velocity.allFinite() ? "acceleration" : "velocity") + " at time " + fmt(x.t) +
                " s is not finite, expected finite derivatives (check for huge positions or near-zero time steps)");
     }
@@ -354,7 +362,7 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
     const bool vel_big = x.velocity.cwiseAbs().maxCoeff() > tol::kLogMaxMagnitude;
     if (vel_big || x.acceleration.cwiseAbs().maxCoeff() > tol::kLogMaxMagnitude) {
       const Eigen::Vector3d& v = vel_big ? x.velocity : x.acceleration;
-      fail(source, rows[i].first,
+      fail(source, row_lines[i],
            std::string("derived ") + (vel_big ? "velocity " : "acceleration ") + fmt(v.cwiseAbs().maxCoeff()) +
                (vel_big ? " m/s" : " m/s^2") + " at time " + fmt(x.t) + " s is too large, expected a magnitude of at most " +
                fmt(tol::kLogMaxMagnitude) + " (check for position jumps or near-zero time steps)");

@@ -303,7 +303,7 @@ AutopilotParameters readAutopilotParametersBytes(std::vector<std::uint8_t> bytes
 }
 
 AutopilotParameters readAutopilotParameters(const std::string& path, const LogReadOptions& options) {
-  return readAutopilotParametersBytes(binary::readFileBytes(path), path, options);
+  return readAutopilotParametersBytes(binary::readFileBytes(path, options.max_file_bytes), path, options);
 }
 
 }  // namespace wattswath::logs

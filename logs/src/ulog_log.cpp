@@ -186,7 +186,7 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
 }
 
 FlightLog readUlogLog(const std::string& path, const LogReadOptions& options) {
-  return readUlogBytes(binary::readFileBytes(path), path, options);
+  return readUlogBytes(binary::readFileBytes(path, options.max_file_bytes), path, options);
 }
 
 }  // namespace wattswath::logs

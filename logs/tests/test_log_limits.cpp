@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -198,6 +199,58 @@ TEST(ULogLimits, LenientResynchronisationOverPrintableGarbageIsLinear) {
   ASSERT_EQ(L.gaps().size(), 1u);
   EXPECT_EQ(L.gaps().front().offset, 59u);
   EXPECT_TRUE(L.gaps().front().to_end);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CsvLimits, AWideHeaderIsCheckedForDuplicatesInLinearTime) {
+  // 300,000 extra columns: comparing each name with every earlier one was 4.5e10 string
+  // comparisons (80,000 columns took 9.8 s); a hash of the names seen makes it linear (the 60 s
+  // watchdog of this program catches a return to the pairwise scan).
+  const int extra = 300000;
+  std::string header = "time_s,x_m,y_m,z_m,voltage_v,current_a";
+  for (int c = 0; c < extra; ++c) header += ",c" + std::to_string(c);
+  const std::string blanks(extra, ',');
+  std::string text = header + "\n0,0,0,10,12,20" + blanks + "\n1,1,0,10,12,20" + blanks + "\n2,2,0,10,12,20" + blanks + "\n";
+  const auto log = logs::parseCsvLog(text, "wide.csv", {});
+  ASSERT_EQ(log.extra_columns.size(), static_cast<size_t>(extra));
+  EXPECT_EQ(log.extra_columns.back(), "c299999");
+  ASSERT_EQ(log.samples.size(), 3u);
+  // A duplicate far apart is still found, naming both fields.
+  const std::string dup = errorOf([&] { logs::parseCsvLog(header + ",c7\n0,0,0,10,12,20" + blanks + ",\n", "dup.csv", {}); });
+  EXPECT_NE(dup.find("dup.csv:1: column 'c7' appears twice (fields 14 and 300007)"), std::string::npos) << dup;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(LogFileLimits, ALogLargerThanTheLimitIsRefusedBeforeItIsRead) {
+  // Logs are read whole: a file beyond LogReadOptions::max_file_bytes is refused up front with
+  // its size, the limit and the option, in every format.
+  const std::string dir = ::testing::TempDir();
+  const std::string csv = dir + "/limit.csv", bin = dir + "/limit.bin";
+  {
+    std::ofstream f(csv, std::ios::binary);
+    f << "time_s,x_m,y_m,z_m,voltage_v,current_a\n";
+    for (int i = 0; i < 200; ++i) f << i << ",0,0,10,12,20\n";
+  }
+  {
+    std::ofstream f(bin, std::ios::binary);
+    f << std::string("\xA3\x95", 2) << std::string(5000, '\0');
+  }
+  logs::LogReadOptions o;
+  o.max_file_bytes = 1000;
+  for (const std::string& path : {csv, bin}) {
+    const std::string m = errorOf([&] { logs::readFlightLog(path, o); });
+    EXPECT_NE(m.find(path + ": the file is "), std::string::npos) << m;
+    EXPECT_NE(m.find("at most 1 MiB"), std::string::npos) << m;
+    EXPECT_NE(m.find("--max-log-size"), std::string::npos) << m;
+  }
+  o.max_file_bytes = logs::tol::kLogMaxFileBytes;
+  EXPECT_EQ(logs::readFlightLog(csv, o).samples.size(), 200u);
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ struct LogReadOptions {
   std::string position_source; ///< force a position source ("XKF1", "NKF1", "NKF6", "EKF1", "vehicle_local_position"); empty: automatic
   AirborneSettings airborne;   ///< airborne detection settings
   double max_gap_s = tol::kLogMaxSampleGap;  ///< [s] longest time allowed between two samples (after the window); > 0
+  long long max_file_bytes = tol::kLogMaxFileBytes;  ///< [B] largest log file read (it is read whole); > 0
 };
 
 /// A landed-state change the autopilot logged (take-off or landing event).

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "wattswath/logs/flight_log.hpp"
+#include "wattswath/logs/tolerances.hpp"
 
 namespace wattswath::logs {
 
@@ -31,7 +32,9 @@ struct DerivativeSettings {
 /// tol::kLogMinTimeStep, lat/lon (or origin metadata) out of range, derived velocities or
 /// accelerations that are not finite, or fewer than two samples. Never drops rows. Empty cells are
 /// allowed only in the optional columns yaw_rad, mass_kg, wind_x_mps, wind_y_mps (NaN: not measured).
-FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d = {});
+/// A file larger than `max_file_bytes` [B] is refused before it is read.
+FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d = {},
+                     long long max_file_bytes = tol::kLogMaxFileBytes);
 
 /// Parses CSV text as readCsvLog does; `source` names it in messages and FlightLog::source.
 FlightLog parseCsvLog(const std::string& text, const std::string& source, const DerivativeSettings& d = {});
