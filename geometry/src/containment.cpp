@@ -72,9 +72,20 @@ void measureSegment(const Ring& outer, const std::vector<Ring>& holes, const Poi
 }  // namespace
 
 bool segmentLeavesArea(const PolygonWithHoles& area, const Point& a, const Point& b) {
-  ContainmentReport rep;
-  measureSegment(area.outer, {}, a, b, tol::kContainment, rep);
-  return rep.outside_m > 0.0;
+  // As measureSegment on the outer ring, stopping at the first piece outside (a route search asks
+  // this for thousands of candidate segments: no lengths or depths needed).
+  if ((b - a).norm() <= 0.0) return false;
+  std::vector<double> ts{0.0, 1.0};
+  crossingParams(a, b, area.outer, ts);
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end(), [](double u, double v) { return v - u <= 1e-12; }), ts.end());
+  for (size_t k = 0; k + 1 < ts.size(); ++k) {
+    const double t0 = std::clamp(ts[k], 0.0, 1.0), t1 = std::clamp(ts[k + 1], 0.0, 1.0);
+    if (t1 - t0 <= 0.0) continue;
+    const Point m = a + 0.5 * (t0 + t1) * (b - a);
+    if (!insideRing(area.outer, m) && distanceToRing(area.outer, m) > tol::kContainment) return true;
+  }
+  return false;
 }
 
 ContainmentReport checkContainment(const PolygonWithHoles& area, const CoveragePath& path, bool survey_only,

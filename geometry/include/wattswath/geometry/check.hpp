@@ -55,7 +55,7 @@ bool segmentEntersHole(const PolygonWithHoles& area, const Point& a, const Point
 /// tol::kContainment from it).
 bool segmentLeavesArea(const PolygonWithHoles& area, const Point& a, const Point& b);
 /// Shortest polyline from `a` to `b` [m] that enters no hole, over the holes' convex vertices and
-/// the outer boundary's reflex ones (visibility graph and Dijkstra); includes both ends. When both
+/// the outer boundary's reflex ones (visibility graph, A* with lazy edge checks); includes both ends. When both
 /// ends lie inside the outer boundary the route stays inside it; otherwise (a transit from home
 /// outside) it only avoids the holes.
 std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const Point& b);
