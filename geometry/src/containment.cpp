@@ -33,6 +33,20 @@ void crossingParams(const Point& a, const Point& b, const Ring& ring, std::vecto
   }
 }
 
+// Calls piece(t0, t1, middle) for each piece of segment a-b between consecutive parameters of
+// `ts` (the crossings, with 0 and 1), in order, until it returns true; returns whether one did.
+// Pieces between consecutive crossings are wholly on one side: each is classified at its middle.
+template <typename Piece>
+bool forEachPiece(const Point& a, const Point& b, std::vector<double>& ts, Piece piece) {
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end(), [](double u, double v) { return v - u <= 1e-12; }), ts.end());
+  for (size_t k = 0; k + 1 < ts.size(); ++k) {
+    const double t0 = std::clamp(ts[k], 0.0, 1.0), t1 = std::clamp(ts[k + 1], 0.0, 1.0);
+    if (t1 - t0 > 0.0 && piece(t0, t1, Point(a + 0.5 * (t0 + t1) * (b - a)))) return true;
+  }
+  return false;
+}
+
 // Adds the parts of segment a-b outside the outer ring or inside a hole to `rep`.
 void measureSegment(const Ring& outer, const std::vector<Ring>& holes, const Point& a, const Point& b,
                     double tolerance, ContainmentReport& rep) {
@@ -41,13 +55,7 @@ void measureSegment(const Ring& outer, const std::vector<Ring>& holes, const Poi
   std::vector<double> ts{0.0, 1.0};
   crossingParams(a, b, outer, ts);
   for (const auto& h : holes) crossingParams(a, b, h, ts);
-  std::sort(ts.begin(), ts.end());
-  // Pieces between consecutive crossings are wholly on one side: each is classified at its middle.
-  ts.erase(std::unique(ts.begin(), ts.end(), [](double u, double v) { return v - u <= 1e-12; }), ts.end());
-  for (size_t k = 0; k + 1 < ts.size(); ++k) {
-    const double t0 = std::clamp(ts[k], 0.0, 1.0), t1 = std::clamp(ts[k + 1], 0.0, 1.0);
-    if (t1 - t0 <= 0.0) continue;
-    const Point m = a + 0.5 * (t0 + t1) * (b - a);
+  forEachPiece(a, b, ts, [&](double t0, double t1, const Point& m) {
     auto depthTo = [&](const Ring& r) {
       const Point ends[3] = {a + t0 * (b - a), m, a + t1 * (b - a)};
       double dmax = 0.0;
@@ -57,7 +65,7 @@ void measureSegment(const Ring& outer, const std::vector<Ring>& holes, const Poi
     if (!insideRing(outer, m) && distanceToRing(outer, m) > tolerance) {
       rep.outside_m += (t1 - t0) * len;
       rep.max_depth_m = std::max(rep.max_depth_m, depthTo(outer));
-      continue;
+      return false;
     }
     for (const auto& h : holes) {
       if (insideRing(h, m) && distanceToRing(h, m) > tolerance) {
@@ -66,7 +74,8 @@ void measureSegment(const Ring& outer, const std::vector<Ring>& holes, const Poi
         break;
       }
     }
-  }
+    return false;
+  });
 }
 
 }  // namespace
@@ -77,15 +86,9 @@ bool segmentLeavesArea(const PolygonWithHoles& area, const Point& a, const Point
   if ((b - a).norm() <= 0.0) return false;
   std::vector<double> ts{0.0, 1.0};
   crossingParams(a, b, area.outer, ts);
-  std::sort(ts.begin(), ts.end());
-  ts.erase(std::unique(ts.begin(), ts.end(), [](double u, double v) { return v - u <= 1e-12; }), ts.end());
-  for (size_t k = 0; k + 1 < ts.size(); ++k) {
-    const double t0 = std::clamp(ts[k], 0.0, 1.0), t1 = std::clamp(ts[k + 1], 0.0, 1.0);
-    if (t1 - t0 <= 0.0) continue;
-    const Point m = a + 0.5 * (t0 + t1) * (b - a);
-    if (!insideRing(area.outer, m) && distanceToRing(area.outer, m) > tol::kContainment) return true;
-  }
-  return false;
+  return forEachPiece(a, b, ts, [&](double, double, const Point& m) {
+    return !insideRing(area.outer, m) && distanceToRing(area.outer, m) > tol::kContainment;
+  });
 }
 
 ContainmentReport checkContainment(const PolygonWithHoles& area, const CoveragePath& path, bool survey_only,
