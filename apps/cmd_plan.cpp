@@ -536,6 +536,7 @@ void runPlan(const PlanOpts& o) {
     s.notes.push_back("camera: sweeps at most " + fixedText(ps.camera_max_speed, 2) + " m/s (a photo every " +
                       fixedText(s.photos->trigger_distance_m, 2) + " m, at least " + fixedText(o.trigger_interval_s, 2) + " s apart)");
   }
+  checkCommandableSpeeds(vehicle.max_speed_mps, ps.camera_max_speed, o.vehicle);
   ps.spirals = !o.no_spiral;
   ps.overshoot = o.overshoot;
   const auto model = energy::marinsModel(vehicle);

@@ -6,6 +6,7 @@
 
 #include "cli.hpp"
 #include "wattswath/mission/files.hpp"
+#include "wattswath/planner/mission_from_plan.hpp"
 
 namespace wattswath::apps {
 
@@ -38,6 +39,23 @@ void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool a
                                 fixedText(kMaxSweepLinesWithoutOverride, 0) +
                                 " planned without --allow-large (planning time and memory grow with the line count); "
                                 "check --spacing, or give --allow-large to plan it anyway");
+  }
+}
+
+void checkCommandableSpeeds(double vehicle_max_speed, double camera_max_speed, const std::string& vehicle_source) {
+  const double floor = planner::kMinCommandedSpeed;
+  const std::string why = " m/s, the slowest speed a mission can command (ArduCopter 3.x ignores DO_CHANGE_SPEED below " +
+                          fixedText(floor, 1) + " m/s), so the mission would fly faster than the limit; ";
+  if (vehicle_max_speed < floor) {
+    throw std::invalid_argument(vehicle_source + ": max_speed_mps " + fixedText(vehicle_max_speed, 2) + " m/s is below " +
+                                fixedText(floor, 1) + why +
+                                "raise it, or fly such a vehicle with the autopilot's own speed parameter (WPNAV_SPEED) set "
+                                "and no speed commands");
+  }
+  if (camera_max_speed > 0.0 && camera_max_speed < floor) {
+    throw std::invalid_argument("the camera's sweep speed limit " + fixedText(camera_max_speed, 2) + " m/s (--camera-max-speed "
+                                "or trigger distance / --trigger-interval) is below " + fixedText(floor, 1) + why +
+                                "lower --frontal-overlap or --trigger-interval, or fly higher");
   }
 }
 

@@ -28,4 +28,9 @@ PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, double
 /// `allow_large`), saying which option changes it.
 void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool allow_large, const std::string& source);
 
+/// Throws std::invalid_argument when the vehicle's max speed or the camera's sweep-speed cap [m/s]
+/// (0: none) is below planner::kMinCommandedSpeed: a mission cannot command such a speed
+/// (ArduCopter ignores slower DO_CHANGE_SPEED), so it would fly faster than the limit.
+void checkCommandableSpeeds(double vehicle_max_speed, double camera_max_speed, const std::string& vehicle_source);
+
 }  // namespace wattswath::apps

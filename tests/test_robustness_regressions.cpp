@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -293,3 +294,33 @@ TEST(Regression, PlanFarHomeIsRefusedNotSilentlyMoved) {
   EXPECT_EQ(r.status, 0) << r.err;
   std::filesystem::remove_all(dir);
 }
+
+namespace {
+
+TEST(Regression, PlanRefusesSpeedLimitsNoMissionCanCommand) {
+  // Issue 20: a vehicle limited to 0.5 m/s (or a camera limited to 0.3 m/s) got a mission
+  // commanding 1 m/s, the slowest DO_CHANGE_SPEED ArduCopter 3.x obeys, with only a note.
+  const auto dir = std::filesystem::temp_directory_path() / ("wattswath_slow_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ifstream in(sourcePath("data/vehicles/iris.json"));
+  std::string v((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key = "\"max_speed_mps\": 16.0";
+  ASSERT_NE(v.find(key), std::string::npos);
+  v.replace(v.find(key), key.size(), "\"max_speed_mps\": 0.5");
+  const std::string slow = (dir / "slow.json").string();
+  std::ofstream(slow) << v;
+  auto r = runCli({"plan", sourcePath("data/areas/espiral_rectangle.geojson"), "--vehicle", slow, "--spacing", "20", "--out",
+                   (dir / "a").string()});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("slow.json: max_speed_mps 0.50 m/s is below 1.0 m/s, the slowest speed a mission can command"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "a" / "mission.plan"));
+  r = runCli({"plan", sourcePath("data/areas/espiral_rectangle.geojson"), "--vehicle", "data/vehicles/iris.json", "--spacing",
+              "20", "--camera-max-speed", "0.3", "--out", (dir / "b").string()});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("the camera's sweep speed limit 0.30 m/s"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace

@@ -81,10 +81,10 @@ FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyMo
   const double dt = 1.0 / s.rate_hz;
   // A waypoint 1e300 m away would otherwise loop for ever filling memory.
   if (!(std::isfinite(total) && total * s.rate_hz < s.max_samples)) {
-    throw std::invalid_argument("simulateFlight: the flight lasts " + std::to_string(total) + " s, " +
-                                std::to_string(total * s.rate_hz) + " samples at " + std::to_string(s.rate_hz) +
-                                " Hz, expected at most " + std::to_string(s.max_samples) +
-                                " samples (waypoints too far apart?)");
+    throw std::invalid_argument("simulateFlight: the flight lasts " + num(total, 6) + " s, " +
+                                num(total * s.rate_hz, 6) + " samples at " + num(s.rate_hz, 6) +
+                                " Hz, expected at most " + num(s.max_samples, 12) +
+                                " samples (waypoints too far apart, or thousands of stops? a lower --rate gives fewer samples)");
   }
   size_t k = 0;
   for (double tt = 0.0; tt <= total; tt += dt) {

@@ -9,6 +9,10 @@
 #include <random>
 #include <vector>
 
+#include "test_util.hpp"
+#include "wattswath/calibration/diagnose.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/energy/vehicle.hpp"
 #include "wattswath/calibration/replay.hpp"
 
 namespace {
@@ -82,6 +86,25 @@ TEST(ReplayLimits, TwoDaysOfMovingRunArePreparedInLinearTime) {
   const auto P = cal::prepareLog(log);
   ASSERT_EQ(P.leg.size(), static_cast<size_t>(n));
   EXPECT_EQ(P.legs.size(), 1u);  // shallow ripples split nothing
+}
+
+TEST(SimulateLimits, AFlightOfMillionsOfSamplesIsRefusedBeforeSampling) {
+  // 288 km at 8 m/s and 100 Hz: 3.6 million samples (about 700 MB of CSV) are refused up front,
+  // naming the duration and the remedy; the same flight at 10 Hz is simulated.
+  const std::vector<Eigen::Vector3d> path{{0, 0, 15}, {288000, 0, 15}};
+  const auto m = wattswath::energy::buildModel(wattswath::energy::loadVehicle(wattswath::test::sourcePath("data/vehicles/iris.json")),
+                                 {"hover", "kinetic", "parasitic_drag"});
+  cal::SimulationSettings s;
+  s.rate_hz = 100.0;
+  try {
+    cal::simulateFlight(path, m, s);
+    FAIL() << "3.6 million samples accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("expected at most 2000000 samples"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a lower --rate"), std::string::npos) << e.what();
+  }
+  s.rate_hz = 1.0;
+  EXPECT_NEAR(cal::simulateFlight(path, m, s).duration(), 36000.0, 200.0);
 }
 
 }  // namespace

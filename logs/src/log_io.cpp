@@ -436,6 +436,10 @@ std::string writeCsvLog(const FlightLog& log) {
   return out;
 }
 
+/// [m] shortest leg of a waypoint path: the vehicle stops and turns at each waypoint, so 1 mm legs
+/// (200,000 of them made a 985 MB log) are mistakes, not a path.
+constexpr double kMinPathLeg = 0.01;
+
 std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const std::string& source) {
   std::istringstream in(text);
   std::vector<Eigen::Vector3d> w;
@@ -464,6 +468,12 @@ std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const st
           std::abs(z) <= tol::kLogMaxMagnitude)) {
       throw std::runtime_error(source + ":" + std::to_string(ln) + ": expected three numbers x y z [m] of magnitude at most " +
                                number(tol::kLogMaxMagnitude) + ", got '" + line + "'");
+    }
+    if (!w.empty() && (Eigen::Vector3d(x, y, z) - w.back()).norm() < kMinPathLeg) {
+      throw std::runtime_error(source + ":" + std::to_string(ln) + ": waypoint '" + line + "' is " +
+                               number((Eigen::Vector3d(x, y, z) - w.back()).norm()) +
+                               " m from the previous one, expected legs of at least " + number(kMinPathLeg) +
+                               " m (each waypoint is a stop and a turn: remove the repeat)");
     }
     w.emplace_back(x, y, z);
   }

@@ -166,3 +166,16 @@ TEST(WaypointPath, HeaderCommentsSeparatorsAndCrlf) {
   EXPECT_THROW(parseWaypointPath("0 0 0\n1 2 nan\n", "nan.txt"), std::runtime_error);
   EXPECT_THROW(readWaypointPath(sourcePath("tests/data/bad/does_not_exist.txt")), std::runtime_error);
 }
+
+TEST(WaypointPath, LegsShorterThanOneCentimetreAreRefusedNamingTheLine) {
+  // Issue 20: 200,000 legs of 1 mm simulated as 200,000 stops and turns (a 985 MB log).
+  try {
+    parseWaypointPath("0 0 15\n10 0 15\n10.001 0 15\n", "tiny.txt");
+    FAIL() << "a 1 mm leg was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("tiny.txt:3: waypoint '10.001 0 15' is 0.001 m from the previous one"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(parseWaypointPath("0 0 15\n10 0 15\n10.02 0 15\n", "ok.txt").size(), 3u);
+}

@@ -200,7 +200,7 @@ struct SimulationSettings {
   double voltage_start_v = 12.4;   ///< [V] battery voltage at the start (linear sag); 1..1000
   double voltage_end_v = 11.2;     ///< [V] battery voltage at the end
   unsigned seed = 1;               ///< random seed (fixed: same log every time)
-  double max_samples = 2e7;        ///< [-] refuse flights needing more samples (about 2 GB of log); 1..1e9
+  double max_samples = 2e6;        ///< [-] refuse flights needing more samples (about 400 MB of CSV, 1 GB of memory); 1..1e9
 };
 
 /// A canonical log of `truth` flown through `waypoints` (ENU [m]): at each waypoint the vehicle

@@ -55,7 +55,7 @@ void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const De
 /// line; blank lines and '#' comments are skipped, and so is a first line that does not start with
 /// a number (a header). Throws std::runtime_error "SOURCE:LINE: expected three numbers x y z [m],
 /// got '...'" for anything else, for a coordinate beyond tol::kLogMaxMagnitude, and "SOURCE: a path
-/// needs at least 2 waypoints".
+/// needs at least 2 waypoints"; a waypoint within 0.01 m of the previous one is an error (each is a stop).
 std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const std::string& source);
 
 /// Reads a waypoint path file as parseWaypointPath() does; throws naming `path` when it cannot be read.
