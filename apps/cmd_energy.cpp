@@ -238,7 +238,8 @@ void registerTurns(CLI::App& app) {
   cmd->callback([o]() {
     checkReportWritable(o->report, o->report_svg, o->force, {o->vehicle});
     requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
-    requireRange("--angle", o->angle, 0.0, true, 180.0, "an interior angle in (0, 180] deg");
+    requireRange("--angle", o->angle, en::kMinTurnAngle * 180.0 / M_PI, false, 180.0,
+                 "an interior angle in [0.5, 180] deg (below it Marins' rounded turn overshoots the vertex without bound)");
     const auto v = en::loadVehicle(o->vehicle);
     const double v_max = o->max_speed != 0.0 ? o->max_speed : v.max_speed_mps;
     requireRange("--max-speed", v_max, 0.0, true, 200.0, "a speed limit in (0, 200] m/s");
@@ -255,6 +256,15 @@ void registerTurns(CLI::App& app) {
     const auto model = en::marinsModel(v, dragMode(o->drag));
     const auto c = en::compareTurnStrategies(model, o->distance, o->angle * M_PI / 180.0, limitsOf(v),
                                              v.max_yaw_rate_radps, v_max, st);
+    // The paper's loop overshoots the vertex by R cot(beta/2): say so when that is beyond the legs.
+    std::vector<std::string> notes;
+    const double overshoot = en::roundedOvershoot(c.rounded.radius, o->angle * M_PI / 180.0);
+    if (overshoot > o->distance) {
+      notes.push_back("the rounded turn overshoots the vertex by " + report::formatNumber(overshoot, 1) +
+                      " m on each branch (R cot(beta/2), Marins Eq. 15), beyond the " + formatNumber(o->distance) +
+                      " m legs: at so sharp an angle the loop flies far from the corner; stop and turn, or turn on a "
+                      "tighter radius at a lower speed");
+    }
     if (!o->report.empty() || !o->report_svg.empty()) {
       auto data = turnReportData(model, limitsOf(v), v.max_yaw_rate_radps, v_max, st, o->angle, o->distance);
       data.facts.insert(data.facts.begin(),
@@ -286,7 +296,8 @@ void registerTurns(CLI::App& app) {
                    {"extra_length_m", c.rounded.extra_length},
                    {"time_s", c.rounded.time},
                    {"breakdown", breakdownJson(c.rounded.breakdown)}}},
-                 {"saving_pct", c.saving_pct}});
+                 {"saving_pct", c.saving_pct},
+                 {"notes", notes}});
       return;
     }
     std::cout << std::fixed << std::setprecision(1) << "two legs of " << o->distance << " m at beta = " << o->angle
@@ -297,6 +308,7 @@ void registerTurns(CLI::App& app) {
               << "rounded:    " << c.rounded.energy << " J (" << std::setprecision(1) << c.rounded.path_length
               << " m at " << std::setprecision(2) << c.rounded.speed << " m/s, radius " << c.rounded.radius << " m)\n"
               << "saving of the rounded turn: " << std::setprecision(1) << c.saving_pct << " %\n";
+    for (const auto& n : notes) std::cout << "note: " << n << "\n";
   });
 }
 

@@ -324,3 +324,21 @@ TEST(Regression, PlanRefusesSpeedLimitsNoMissionCanCommand) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Regression, TurnsAtAHairpinAreBoundedAndTheOvershootIsSaid) {
+  // Issue 20: at an interior angle of 1e-6 deg Marins' rounded loop was 32,000 km long (1.4 km at
+  // 1 deg), printed as a -79 % "saving" with no word on why.
+  auto r = runCli({"turns", "--vehicle", "data/vehicles/iris.json", "--distance", "100", "--angle", "1e-6"});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("option --angle = 1e-06, expected an interior angle in [0.5, 180] deg"), std::string::npos) << r.err;
+  r = runCli({"turns", "--vehicle", "data/vehicles/iris.json", "--distance", "100", "--angle", "1"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("note: the rounded turn overshoots the vertex by 493.5 m on each branch"), std::string::npos) << r.out;
+  r = runCli({"turns", "--vehicle", "data/vehicles/iris.json", "--distance", "100", "--angle", "90"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("note:"), std::string::npos) << r.out;  // a right angle overshoots by R only
+}
+
+}  // namespace

@@ -16,9 +16,11 @@ void checkCommon(double d, double beta, double yaw_rate) {
   if (!(d > 0.0) || !std::isfinite(d)) {
     throw std::invalid_argument("turn strategies: leg length = " + formatNumber(d) + " m, expected a finite value > 0");
   }
-  if (!(beta > 0.0 && beta <= M_PI)) {
+  if (!(beta >= kMinTurnAngle && beta <= M_PI)) {
     throw std::invalid_argument("turn strategies: angle beta = " + formatNumber(beta * 180.0 / M_PI) +
-                                " deg, expected an interior angle in (0, 180] deg");
+                                " deg, expected an interior angle in [" + formatNumber(kMinTurnAngle * 180.0 / M_PI) +
+                                ", 180] deg (below it the legs nearly fold back onto each other and the rounded "
+                                "turn's overshoot R cot(beta/2) grows without bound: 1.2 km at 1 deg)");
   }
   if (!(yaw_rate > 0.0) || !std::isfinite(yaw_rate)) {
     throw std::invalid_argument("turn strategies: max yaw rate = " + formatNumber(yaw_rate) + " rad/s, expected > 0");
@@ -33,6 +35,8 @@ void checkSpeed(const char* what, double v, double v_max) {
 }
 
 }  // namespace
+
+double roundedOvershoot(double radius, double beta) { return radius * std::cos(0.5 * beta) / std::sin(0.5 * beta); }
 
 double roundedExtraLength(double radius, double beta) {
   const double cot_half = std::cos(0.5 * beta) / std::sin(0.5 * beta);  // (1 + cos b) / sin b
@@ -65,7 +69,7 @@ RoundedTurn roundedTurn(const EnergyModel& model, double d, double beta, double 
   r.extra_length = roundedExtraLength(r.radius, beta);
   r.path_length = 2.0 * d + r.extra_length;
   // Each branch is extended by R cot(beta/2) past the vertex; the loop turns (pi + beta) on radius R.
-  const double branch = d + r.radius * std::cos(0.5 * beta) / std::sin(0.5 * beta);
+  const double branch = d + roundedOvershoot(r.radius, beta);
   std::vector<Piece> pieces = buildLegProfile(branch, from_rest ? 0.0 : speed, speed, speed, lim);
   pieces.push_back(arc(r.radius, M_PI + beta, speed));
   for (const auto& p : buildLegProfile(branch, speed, speed, from_rest ? 0.0 : speed, lim)) pieces.push_back(p);

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <memory>
 #include <optional>
+#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 #include <ogr_geometry.h>
@@ -197,9 +198,20 @@ void checkXmlSafe(const std::string& text, const std::string& source) {
 json parseJsonBounded(const std::string& text, const std::string& source) {
   // Nesting is bounded while parsing (GeoJSON needs 8 levels, a GeometryCollection 2 more each):
   // deeper input would overflow the stack in the recursive readers or in dump().
-  const json::parser_callback_t bound = [&](int depth, json::parse_event_t, json&) {
+  // A key given twice in one object is refused: JSON readers disagree on which one counts (ours
+  // and GDAL's keep the last), so the area would be a guess.
+  std::vector<std::unordered_set<std::string>> keys;  // the keys of each open object
+  const json::parser_callback_t bound = [&](int depth, json::parse_event_t event, json& parsed) {
     if (depth > kMaxJsonDepth) {
       fail(source, "JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep (the limit of an area file)");
+    }
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == json::parse_event_t::key && !keys.empty() && parsed.is_string()) {
+      const auto& k = parsed.get_ref<const std::string&>();
+      if (!keys.back().insert(k).second) {
+        fail(source, "key \"" + k + "\" appears twice in one JSON object; expected each key once (which one counts is a guess)");
+      }
     }
     return true;
   };

@@ -117,6 +117,9 @@ void addGeometry(const OGRGeometry& g, const std::string& name, OgrTarget& fc, i
   } else if ((t == wkbLineString || t == wkbMultiLineString) && !fc.strict) {
     addLines(g, name, fc);
   } else if (t == wkbPoint && lowerAscii(fc.role) == "home") {
+    if (fc.out.home) {
+      fail(fc.source, name + ": a second home point; expected one (which one the vehicle takes off from would be a guess)");
+    }
     const auto& p = *g.toPoint();
     fc.out.home = GeoPoint{p.getY(), p.getX(), p.Is3D() ? p.getZ() : 0.0};
   } else if ((t == wkbPoint || t == wkbMultiPoint) && !fc.strict) {

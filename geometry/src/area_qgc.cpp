@@ -183,6 +183,23 @@ RawArea parseMissionPlannerPoly(const std::string& text, const std::string& sour
   return out;
 }
 
+namespace {
+
+/// Throws unless `frame` (column 3 of a WPL row) is a global MAV_FRAME, whose x / y are lat / lon:
+/// a local frame's are metres from an origin the file does not give. Altitude frames differ, but an
+/// area's vertices use no altitude, so all global frames read alike.
+void checkGlobalFrame(double frame, const std::string& text, const std::string& source, const std::string& where) {
+  for (double global : {0.0, 3.0, 5.0, 6.0, 10.0, 11.0})
+    if (frame == global) return;
+  const char* local = frame == 1.0 ? " (MAV_FRAME_LOCAL_NED: metres)" : frame == 4.0 ? " (MAV_FRAME_LOCAL_ENU: metres)"
+                      : frame == 2.0                                  ? " (MAV_FRAME_MISSION: not a position)"
+                                                                      : "";
+  fail(source, where + ", column 3 (frame): " + text + local +
+                   " is not a global frame; a survey area's vertices need lat/lon (frame 0, 3, 5, 6, 10 or 11)");
+}
+
+}  // namespace
+
 RawArea parseQgcWpl(const std::string& text, const std::string& source) {
   RawArea out;
   std::istringstream in(text);
@@ -231,6 +248,7 @@ RawArea parseQgcWpl(const std::string& text, const std::string& source) {
       out.notes.push_back(source + ": " + where + ": skipped MAV_CMD " + std::to_string(command) +
                           " (not a NAV_WAYPOINT, so not a vertex)");
     } else {
+      checkGlobalFrame(v[2], cols[2], source, where);
       poly.outer.pts.emplace_back(lon, lat);
       poly.outer.labels.push_back("vertex " + std::to_string(poly.outer.pts.size() - 1) + " (row " + std::to_string(row) + ", line " + std::to_string(lineNo) + ")");
     }

@@ -175,8 +175,31 @@ void projectRing(LabeledRing& r, const LocalFrame& frame, const std::string& sou
   for (auto& p : r.pts) p = frame.toLocal(p.y(), p.x());
 }
 
+/// [m] largest coordinate of an area given in metres: a local frame spans a survey, not a planet
+/// (1e308 m squared overflowed to an infinite area).
+constexpr double kMaxLocalCoordinate = 1e7;
+
+/// Throws naming the file, ring and vertex when a metre vertex is not finite or beyond kMaxLocalCoordinate.
+void checkMetreRing(const LabeledRing& r, const std::string& source) {
+  for (size_t i = 0; i < r.pts.size(); ++i) {
+    const Point& p = r.pts[i];
+    if (!(std::abs(p.x()) <= kMaxLocalCoordinate && std::abs(p.y()) <= kMaxLocalCoordinate)) {
+      std::ostringstream v;
+      v << "(" << p.x() << ", " << p.y() << ")";
+      throw SurveyAreaError(source + ": " + r.name + ", " + r.labels[i] + ": " + v.str() +
+                            " m is not a finite coordinate within 1e7 m of the local frame's origin (x east, y north "
+                            "in metres); coordinates this large are another CRS: give the file its CRS, or "
+                            "--wkt-units lonlat for degrees");
+    }
+  }
+}
+
 void projectPolygon(LabeledPolygon& p, const std::optional<LocalFrame>& frame, bool geodetic, const std::string& source) {
-  if (!geodetic) return;
+  if (!geodetic) {
+    checkMetreRing(p.outer, source);
+    for (const auto& h : p.holes) checkMetreRing(h, source);
+    return;
+  }
   if (!frame) throw SurveyAreaError(source + ": coordinates are lon/lat but the area has no geodetic frame");
   projectRing(p.outer, *frame, source);
   for (auto& h : p.holes) projectRing(h, *frame, source);

@@ -6,6 +6,7 @@
 /// one constant speed v, overshoot the vertex and loop round on a circle of radius R = v / omega_max,
 /// turning (pi + beta), so that the vertex is still covered; the path is longer by Eq. 15.
 
+#include <cmath>
 #include <optional>
 
 #include "wattswath/energy/model.hpp"
@@ -13,6 +14,14 @@
 #include "wattswath/energy/profile.hpp"
 
 namespace wattswath::energy {
+
+/// [rad] smallest interior angle compared (0.5 deg): the rounded turn overshoots the vertex by
+/// R cot(beta/2) on each branch, 115 R at 1 deg and without bound as beta -> 0.
+inline constexpr double kMinTurnAngle = 0.5 * M_PI / 180.0;
+
+/// The rounded turn's overshoot past the vertex on each branch, R cot(beta/2) [m], for `radius` [m]
+/// and `beta` [rad] in (0, pi].
+double roundedOvershoot(double radius, double beta);
 
 /// Extra length of the rounded path over the two branches, Marins Eq. 15 [m]:
 /// 2 R (1 + cos beta) / sin beta + R (pi + beta), written with (1 + cos b)/sin b = cot(b/2) so that
@@ -66,7 +75,7 @@ SharpStopTurn sharpStopTurn(const EnergyModel& model, double leg_length, double 
                             const ProfileLimits& limits, double max_yaw_rate);
 
 /// Compares the two strategies for branches of `leg_length` [m] (> 0) meeting at interior angle `beta`
-/// [rad] in (0, pi], speeds at most `v_max` [m/s], yaw rate `max_yaw_rate` [rad/s]. Throws
+/// [rad] in [kMinTurnAngle, pi], speeds at most `v_max` [m/s], yaw rate `max_yaw_rate` [rad/s]. Throws
 /// std::invalid_argument naming the value when an input is out of range.
 TurnComparison compareTurnStrategies(const EnergyModel& model, double leg_length, double beta,
                                      const ProfileLimits& limits, double max_yaw_rate, double v_max,
