@@ -114,11 +114,11 @@ void validate(const Vehicle& v, const std::string& source) {
   requireRange(source, "propeller_efficiency", v.propeller_efficiency, 0.01, false, 1.0, false,
                "an efficiency in [0.01, 1]");
   requireRange(source, "drag_area_m2", v.drag_area_m2, 0.0, false, 100.0, false, "an area in [0, 100] m^2");
-  requireRange(source, "max_acceleration_mps2", v.max_acceleration_mps2, 0.0, true, 100.0, false,
-               "an acceleration in (0, 100] m/s^2");
-  requireRange(source, "max_yaw_rate_radps", v.max_yaw_rate_radps, 0.0, true, 100.0, false,
-               "a yaw rate in (0, 100] rad/s");
-  requireRange(source, "max_speed_mps", v.max_speed_mps, 0.0, true, 200.0, false, "a speed in (0, 200] m/s");
+  requireRange(source, "max_acceleration_mps2", v.max_acceleration_mps2, 0.05, false, 100.0, false,
+               "an acceleration in [0.05, 100] m/s^2 (autopilots accept 0.5 m/s^2 and more; 1e-300 gave 0 s, 0 J legs)");
+  requireRange(source, "max_yaw_rate_radps", v.max_yaw_rate_radps, 0.01, false, 100.0, false,
+               "a yaw rate in [0.01, 100] rad/s");
+  requireRange(source, "max_speed_mps", v.max_speed_mps, 0.1, false, 200.0, false, "a speed in [0.1, 200] m/s");
   requireRange(source, "air_density_kgpm3", v.air_density_kgpm3, 0.01, false, 5.0, false,
                "an air density in [0.01, 5] kg/m^3");
   requireRange(source, "gravity_mps2", v.gravity_mps2, 0.01, false, 30.0, false, "a gravity in [0.01, 30] m/s^2");
@@ -127,15 +127,15 @@ void validate(const Vehicle& v, const std::string& source) {
 
 void validateBattery(const Battery& b, const std::string& source) {
   const auto& p = b.pack;
-  requireRange(source, "battery.capacity_ah", p.capacity_ah, 0.0, true, 1e4, false, "a capacity in (0, 10000] A h");
-  requireRange(source, "battery.rated_discharge_time_s", p.rated_discharge_time_s, 0.0, true, 1e7, false,
-               "a time in (0, 1e7] s");
-  requireRange(source, "battery.voltage_full_v", p.voltage_full_v, 0.0, true, 1e4, false,
-               "a voltage in (0, 10000] V");
+  requireRange(source, "battery.capacity_ah", p.capacity_ah, 0.01, false, 1e4, false, "a capacity in [0.01, 10000] A h");
+  requireRange(source, "battery.rated_discharge_time_s", p.rated_discharge_time_s, 1.0, false, 1e7, false,
+               "a time in [1, 1e7] s");
+  requireRange(source, "battery.voltage_full_v", p.voltage_full_v, 0.1, false, 1e4, false,
+               "a voltage in [0.1, 10000] V");
   requireRange(source, "battery.voltage_standard_v", p.voltage_standard_v, 0.0, true, p.voltage_full_v, true,
                "a voltage in (0, voltage_full_v) V");
   requireRange(source, "battery.mass_kg", p.mass_kg, 0.0, false, 1e4, false, "a mass in [0, 10000] kg");
-  requireRange(source, "battery.usable_fraction", p.usable_fraction, 0.0, true, 1.0, false, "a fraction in (0, 1]");
+  requireRange(source, "battery.usable_fraction", p.usable_fraction, 0.01, false, 1.0, false, "a fraction in [0.01, 1]");
   requireRange(source, "battery.peukert_exponent", p.peukert_exponent, 1.0, false, 2.0, false,
                "an exponent in [1, 2]");
   if (b.series < 1 || b.parallel < 1 || b.series > 100 || b.parallel > 100) {
