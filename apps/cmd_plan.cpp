@@ -49,7 +49,7 @@ struct PlanOpts {
   SortieRequest sorties;
   double overshoot = 0.0;  // [m] --overshoot: sweep lines may run on beyond the boundary
   bool force = false, json = false, no_report = false, no_spiral = false, gpkg = false;
-  bool allow_large = false;  // --allow-large: plan beyond kMaxSweepLinesWithoutOverride lines
+  bool allow_large = false;  // --allow-large: plan beyond kMaxSweepLinesWithoutOverride lines or kMaxAreaVerticesWithoutOverride vertices
   std::string report_svg, report;
 };
 
@@ -431,7 +431,7 @@ PlanSetup setUp(const PlanOpts& o) {
   pr.no_fly = s.area.no_fly;
   pr.altitude = o.altitude;
   setSpacing(o, s);
-  const PlanWorkEstimate work = estimatePlanWork(pr.area, pr.spacing);
+  const PlanWorkEstimate work = estimatePlanWork(pr.area, pr.no_fly, pr.spacing);
   progress(work.summary);
   checkPlanWork(work, pr.spacing, !o.sorties.sorties.empty(), o.allow_large, o.area);
   if (!o.home.empty()) {
@@ -647,8 +647,8 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
   cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
   cmd->add_flag("--allow-large", o->allow_large,
-                "Plan even when the area needs more than 5000 sweep lines at this spacing (refused by default: "
-                "planning time and memory grow with the line count)");
+                "Plan even when the area needs more than 5000 sweep lines at this spacing or has more than 1000 "
+                "vertices (refused by default: planning time and memory grow with them)");
   auto* altitude = cmd->add_option("--altitude", o->altitude, "flight height above home [m] (default 10)")->check(CLI::Range(0.1, 1000.0));
   cmd->add_option("--gsd", o->gsd_cm, "ground sampling distance [cm/px] that sets the altitude (with --sensor-mm, --focal-mm, --image-px; instead of --altitude)")
       ->check(CLI::Range(0.01, 1000.0))

@@ -10,9 +10,13 @@
 
 namespace wattswath::apps {
 
-PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, double spacing) {
+PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, const std::vector<geometry::Ring>& no_fly,
+                                  double spacing) {
   if (!(spacing > 0.0)) throw std::invalid_argument("estimatePlanWork: spacing must be > 0");
   PlanWorkEstimate e;
+  e.vertices = area.outer.size();
+  for (const auto& h : area.holes) e.vertices += h.size();
+  for (const auto& z : no_fly) e.vertices += z.size();
   e.min_width_m = geometry::minimumWidth(area.outer);
   e.min_lines = std::floor(e.min_width_m / spacing);
   e.sweep_km = geometry::area(area) / spacing / 1000.0;
@@ -31,6 +35,14 @@ void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool a
         " waypoints: more than one mission can hold (" + std::to_string(mission::kMaxMissionItems) +
         " items, MAVLink's limit). Widen --spacing to at least " + fixedText(std::ceil(e.min_width_m * 2.0 / max_items * 100.0) / 100.0, 2) +
         " m, or split the survey with --sorties");
+  }
+  if (!allow_large && e.vertices > kMaxAreaVerticesWithoutOverride) {
+    throw std::invalid_argument(source + ": the area and its no-fly zones have " + std::to_string(e.vertices) +
+                                " vertices, more than the " + std::to_string(kMaxAreaVerticesWithoutOverride) +
+                                " planned without --allow-large (routing around the boundary grows faster than the "
+                                "vertex count: minutes for a few thousand); simplify the boundary first (QGIS "
+                                "Simplify, or ogr2ogr -simplify in a metric CRS; a tolerance of 0.5 m keeps the "
+                                "shape), or give --allow-large to plan it anyway");
   }
   if (!allow_large && e.min_lines > kMaxSweepLinesWithoutOverride) {
     throw std::invalid_argument(source + ": at " + fixedText(spacing, 2) + " m spacing the area (at least " +

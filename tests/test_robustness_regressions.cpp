@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -339,6 +340,34 @@ TEST(Regression, TurnsAtAHairpinAreBoundedAndTheOvershootIsSaid) {
   r = runCli({"turns", "--vehicle", "data/vehicles/iris.json", "--distance", "100", "--angle", "90"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.find("note:"), std::string::npos) << r.out;  // a right angle overshoots by R only
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Regression, PlanRefusesThousandsOfVerticesUnlessAllowedLarge) {
+  // Issue 20: a 10,000-vertex polygon took 13 GB and no answer in 10 minutes (now about 30 s);
+  // a wiggly 1,811-vertex field still took over 2 minutes. Beyond 1,000 vertices plan asks for a
+  // simplified boundary or --allow-large, before any work.
+  const auto dir = std::filesystem::temp_directory_path() / ("wattswath_vertices_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string area = (dir / "wiggly.geojson").string();
+  std::ostringstream ring;
+  ring.precision(10);
+  const int n = 1200;
+  for (int i = 0; i <= n; ++i) {  // 300 m circle with 7 lobes of 20 m near Pisa, closed
+    const double a = 2.0 * M_PI * (i % n) / n, r = 300.0 + 20.0 * std::sin(7.0 * a);
+    ring << (i ? "," : "") << "[" << 10.40 + r * std::cos(a) / (111320.0 * std::cos(43.72 * M_PI / 180.0)) << ","
+         << 43.72 + r * std::sin(a) / 110540.0 << "]";
+  }
+  std::ofstream(area) << R"({"type":"Polygon","coordinates":[[)" << ring.str() << "]]}";
+  const auto r = runCli({"plan", area, "--vehicle", "data/vehicles/iris.json", "--spacing", "20", "--out", (dir / "o").string()}, 20);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("vertices, more than the 1000 planned without --allow-large"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("simplify the boundary first"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o" / "mission.plan"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
