@@ -152,7 +152,8 @@ std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const
     queue.pop();
     if (done[u] || f != dist[u] + h(u)) continue;  // settled, or a stale entry (pushed as exactly dist + h)
     if (!checked[u]) {
-      // Its tentative parent cannot see it: the best parent among the settled nodes that can.
+      // Offered by a parent not yet checked: if that parent cannot see it, take the best settled
+      // node that can (or drop it until a newly settled node offers it again).
       checked[u] = true;
       if (blocked(nodes[prev[u]], nodes[u])) {
         dist[u] = std::numeric_limits<double>::infinity();
