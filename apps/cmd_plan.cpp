@@ -433,7 +433,7 @@ PlanSetup setUp(const PlanOpts& o) {
   setSpacing(o, s);
   const PlanWorkEstimate work = estimatePlanWork(pr.area, pr.no_fly, pr.spacing);
   progress(work.summary);
-  checkPlanWork(work, pr.spacing, !o.sorties.sorties.empty(), o.allow_large, o.area);
+  checkPlanWork(work, pr.spacing, !o.sorties.sorties.empty(), o.allow_large, o.area, o.spacing <= 0.0);
   if (!o.home.empty()) {
     const geo::GeoPoint home = parseHome(o.home);
     checkHomeNear(home, pr.area.outer, *s.area.frame, "--home");

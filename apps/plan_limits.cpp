@@ -10,6 +10,14 @@
 
 namespace wattswath::apps {
 
+namespace {
+
+/// A spacing [m] as the messages write it: 2 decimals, or 3 significant digits below 1 cm (a
+/// camera's --overlap near 1 gives micrometres, which "0.00 m" hid).
+std::string spacingText(double spacing) { return spacing >= 0.01 ? fixedText(spacing, 2) : formatNumber(spacing); }
+
+}  // namespace
+
 PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, const std::vector<geometry::Ring>& no_fly,
                                   double spacing) {
   if (!(spacing > 0.0)) throw std::invalid_argument("estimatePlanWork: spacing must be > 0");
@@ -21,20 +29,22 @@ PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, const 
   e.min_lines = std::floor(e.min_width_m / spacing);
   e.sweep_km = geometry::area(area) / spacing / 1000.0;
   e.summary = "plan: the area is at least " + fixedText(e.min_width_m, 1) + " m wide: at least " + fixedText(e.min_lines, 0) +
-              " sweep lines at " + fixedText(spacing, 2) + " m spacing, about " + fixedText(e.sweep_km, 1) + " km of sweeps";
+              " sweep lines at " + spacingText(spacing) + " m spacing, about " + fixedText(e.sweep_km, 1) + " km of sweeps";
   return e;
 }
 
-void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool allow_large, const std::string& source) {
+void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool allow_large, const std::string& source,
+                   bool from_camera) {
   const double items = 2.0 * e.min_lines;  // every line is entered and left: two waypoints at least
   const double max_items = static_cast<double>(mission::kMaxMissionItems);
   if (!split && items > max_items) {
     throw std::invalid_argument(
-        source + ": at " + fixedText(spacing, 2) + " m spacing the area (at least " + fixedText(e.min_width_m, 1) +
-        " m wide) needs at least " + fixedText(e.min_lines, 0) + " sweep lines, so at least " + fixedText(items, 0) +
-        " waypoints: more than one mission can hold (" + std::to_string(mission::kMaxMissionItems) +
-        " items, MAVLink's limit). Widen --spacing to at least " + fixedText(std::ceil(e.min_width_m * 2.0 / max_items * 100.0) / 100.0, 2) +
-        " m, or split the survey with --sorties");
+        source + ": at " + spacingText(spacing) + " m spacing" + (from_camera ? " (the camera's footprint and --overlap)" : "") +
+        " the area (at least " + fixedText(e.min_width_m, 1) + " m wide) needs at least " + fixedText(e.min_lines, 0) +
+        " sweep lines, so at least " + fixedText(items, 0) + " waypoints: more than one mission can hold (" +
+        std::to_string(mission::kMaxMissionItems) + " items, MAVLink's limit). " +
+        (from_camera ? "Lower --overlap (or fly higher) for a spacing of at least " : "Widen --spacing to at least ") +
+        fixedText(std::ceil(e.min_width_m * 2.0 / max_items * 100.0) / 100.0, 2) + " m, or split the survey with --sorties");
   }
   if (!allow_large && e.vertices > kMaxAreaVerticesWithoutOverride) {
     throw std::invalid_argument(source + ": the area and its no-fly zones have " + std::to_string(e.vertices) +
@@ -45,7 +55,7 @@ void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool a
                                 "shape), or give --allow-large to plan it anyway");
   }
   if (!allow_large && e.min_lines > kMaxSweepLinesWithoutOverride) {
-    throw std::invalid_argument(source + ": at " + fixedText(spacing, 2) + " m spacing the area (at least " +
+    throw std::invalid_argument(source + ": at " + spacingText(spacing) + " m spacing the area (at least " +
                                 fixedText(e.min_width_m, 1) + " m wide) needs at least " + fixedText(e.min_lines, 0) +
                                 " sweep lines (about " + fixedText(e.sweep_km, 0) + " km of sweeps), more than the " +
                                 fixedText(kMaxSweepLinesWithoutOverride, 0) +

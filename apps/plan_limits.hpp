@@ -36,7 +36,10 @@ PlanWorkEstimate estimatePlanWork(const geometry::PolygonWithHoles& area, const 
 /// `split` into sorties) or needs more than kMaxSweepLinesWithoutOverride lines (unless
 /// `allow_large`) or more than kMaxAreaVerticesWithoutOverride vertices (unless `allow_large`),
 /// saying which option changes it.
-void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool allow_large, const std::string& source);
+/// `from_camera`: the spacing came from the camera's footprint and --overlap (the message names
+/// those options instead of --spacing).
+void checkPlanWork(const PlanWorkEstimate& e, double spacing, bool split, bool allow_large, const std::string& source,
+                   bool from_camera = false);
 
 /// Throws std::invalid_argument when the vehicle's max speed or the camera's sweep-speed cap [m/s]
 /// (0: none) is below planner::kMinCommandedSpeed: a mission cannot command such a speed

@@ -371,3 +371,22 @@ TEST(Regression, PlanRefusesThousandsOfVerticesUnlessAllowedLarge) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Regression, AnOverlapNearOneIsRefusedUpFrontNamingTheOverlap) {
+  // Issue 20: --overlap 0.9999999 filled 3.8 GB and then said only "std::bad_alloc". The work
+  // estimate refuses it before planning, and names the camera's options, not --spacing.
+  const auto dir = std::filesystem::temp_directory_path() / ("wattswath_overlap_" + std::to_string(::getpid()));
+  const auto r = runCli({"plan", sourcePath("data/areas/espiral_rectangle.geojson"), "--vehicle", "data/vehicles/iris.json",
+                         "--fov", "60", "--altitude", "50", "--overlap", "0.9999999", "--out", (dir / "o").string()},
+                        20);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("m spacing (the camera's footprint and --overlap)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Lower --overlap (or fly higher)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o" / "mission.plan"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
