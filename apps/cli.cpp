@@ -66,6 +66,10 @@ void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& o) {
   cmd->add_option("--max-gap", o.max_gap_s,
                   "Longest time between two samples; a longer gap (logger stopped, two flights) is refused [s]")
       ->check(CLI::Range(1e-3, 1e7));
+  addMaxLogSizeOption(cmd, o);
+}
+
+void addMaxLogSizeOption(CLI::App* cmd, logs::LogReadOptions& o) {
   cmd->add_option_function<double>(
          "--max-log-size", [&o](double mib) { o.max_file_bytes = static_cast<long long>(mib * 1048576.0); },
          "Largest log file read, read whole [MiB] (default 512: about 1.5 GB of memory)")

@@ -97,6 +97,8 @@ void writeReport(const report::HtmlReport& report, const std::string& html_path,
 /// Adds the flight-log reading options (--from, --to, --airborne, --lenient, --battery-instance,
 /// --position-source, --airborne-current, --max-gap) to `cmd`, storing into `options`. Use with logs::readFlightLog().
 void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& options);
+/// Adds --max-log-size [MiB] (LogReadOptions::max_file_bytes) to `cmd`; part of addLogReadOptions.
+void addMaxLogSizeOption(CLI::App* cmd, logs::LogReadOptions& o);
 
 /// Adds `--layer NAME` and `--where SQL` (which layer and features of a GIS area file GDAL reads) to `cmd`.
 void addAreaSelectOptions(CLI::App* cmd, std::string& layer, std::string& where);

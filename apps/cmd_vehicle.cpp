@@ -174,6 +174,7 @@ void registerParams(CLI::App& vehicle_cmd) {
   cmd->add_flag("--all", o->all, "Keep every parameter of the log, not only the flight-behaviour ones");
   cmd->add_flag("--lenient", o->read.lenient,
                 "Read past corrupt parts of the log (each skip is a warning); a cut final record of a .bin is always accepted");
+  addMaxLogSizeOption(cmd, o->read);
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json)->description(
       "Print a summary on stdout: {firmware, version, parameter_count, kept: {...}, ...}");
