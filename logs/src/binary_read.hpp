@@ -29,14 +29,14 @@ T readLe(const std::uint8_t* p) {
   return v;
 }
 
-/// The message for a log file of `size` bytes over the limit `max_bytes` [B].
-/// `streamed`: a pipe or device, of which only the first `size` bytes were read.
-inline std::string tooLargeMessage(const std::string& path, unsigned long long size, long long max_bytes,
-                                   bool streamed = false) {
+/// The message for a log file over the limit `max_bytes` [B]: `size` [B] is its size, or 0 for a
+/// pipe or device read until it passed the limit.
+inline std::string tooLargeMessage(const std::string& path, unsigned long long size, long long max_bytes) {
   const auto mib = [](unsigned long long b) { return std::to_string((b + (1ULL << 20) - 1) >> 20); };
-  return path + (streamed ? ": more than " : ": the file is ") + std::to_string(size - (streamed ? 1 : 0)) +
-         " bytes (" + mib(size) + " MiB); flight logs are read whole, " +
-         "at most " + mib(static_cast<unsigned long long>(max_bytes)) + " MiB (memory is about 2-3x the file); " +
+  const auto limit = static_cast<unsigned long long>(max_bytes);
+  return path + (size > 0 ? ": the file is " + std::to_string(size) + " bytes (" + mib(size) + " MiB)"
+                          : ": more than " + std::to_string(limit) + " bytes") +
+         "; flight logs are read whole, at most " + mib(limit) + " MiB (memory is about 2-3x the file); " +
          "--max-log-size MIB raises the limit, or cut the log first";
 }
 
@@ -62,7 +62,7 @@ Bytes readWholeFile(const std::string& path, long long max_bytes) {
   while (in.read(buf, sizeof buf) || in.gcount() > 0) {
     const auto n = static_cast<std::size_t>(in.gcount());
     if (out.size() + n > static_cast<unsigned long long>(max_bytes)) {
-      throw std::runtime_error(tooLargeMessage(path, static_cast<unsigned long long>(max_bytes) + 1, max_bytes, true));
+      throw std::runtime_error(tooLargeMessage(path, 0, max_bytes));
     }
     out.insert(out.end(), buf, buf + n);
   }
