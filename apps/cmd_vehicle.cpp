@@ -9,6 +9,7 @@
 
 #include "cli.hpp"
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/io/text_file.hpp"
 #include "wattswath/logs/airframe.hpp"
 #include "wattswath/logs/parameters.hpp"
 
@@ -53,11 +54,7 @@ OrderedJson autopilotObject(const logs::AutopilotParameters& p, const std::map<s
 }
 
 std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open vehicle file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return io::readTextFile(path, {energy::kMaxVehicleFileBytes, "vehicle files", ""});  // a runtime_error naming the file
 }
 
 // BASE's JSON text (validated as a vehicle first, so every error names the file and field) with

@@ -1,6 +1,6 @@
-# `cmake --install build --prefix P`: the six libraries' public headers (include/wattswath/...),
+# `cmake --install build --prefix P`: the seven libraries' public headers (include/wattswath/...),
 # the static libraries and the CMake package wattswath (lib/cmake/wattswath/) with the namespaced
-# targets wattswath::geometry, ::energy, ::logs, ::mission, ::calibration and ::planner, the same
+# targets wattswath::io, ::geometry, ::energy, ::logs, ::mission, ::calibration and ::planner, the same
 # names as the in-tree ALIAS targets (EXPORT_NAME in each library's CMakeLists.txt); also the
 # `wattswath` command line (bin/). A consumer: find_package(wattswath) and link wattswath::planner
 # (examples/consumer/ is one, built by the test install_consumer). The heavy dependencies stay
@@ -8,7 +8,7 @@
 # (find_dependency) and recreates the wrapper targets wattswath::ompl and wattswath::geographiclib.
 include(CMakePackageConfigHelpers)
 
-set(WATTSWATH_LIBRARIES geometry energy logs mission calibration planner)
+set(WATTSWATH_LIBRARIES io geometry energy logs mission calibration planner)
 set(WATTSWATH_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/wattswath)
 
 foreach(library IN LISTS WATTSWATH_LIBRARIES)

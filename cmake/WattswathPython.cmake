@@ -1,6 +1,6 @@
 # Python bindings (python/, module `wattswath`, pybind11): finds the interpreter and pybind11 and
 # sets WATTSWATH_PYTHON, ON by default when both are found (OFF skips the module and its tests).
-# The module is a shared object, so python/CMakeLists.txt compiles the six static libraries as
+# The module is a shared object, so python/CMakeLists.txt compiles the seven static libraries as
 # position-independent code when it is ON.
 #
 # `python3` on PATH may be a pyenv shim whose interpreter has no development files or NumPy, so the

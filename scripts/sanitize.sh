@@ -6,7 +6,7 @@
 # the planner; "all" builds and runs every test). Any sanitizer report aborts the program.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-default_tests="test_bad_inputs test_robustness_regressions test_output_safety test_log_io test_energy_core
+default_tests="test_io test_bad_inputs test_robustness_regressions test_output_safety test_log_io test_energy_core
   test_numerical_guards test_geoio test_mission test_flight test_mission_calibration test_planner_degenerate test_planner"
 tests="${SANITIZE_TESTS:-$default_tests}"
 source scripts/sanitizer_tree.sh

@@ -14,6 +14,7 @@
 #include "test_util.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
 #include "wattswath/calibration/diagnose.hpp"
+#include "wattswath/calibration/user_effect.hpp"
 #include "wattswath/logs/log_io.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -387,6 +388,53 @@ TEST(Regression, AnOverlapNearOneIsRefusedUpFrontNamingTheOverlap) {
   EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "o" / "mission.plan"));
   std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// A sparse file of `bytes` bytes (no disk used): the size limits are checked before reading.
+std::string sparseFile(const std::string& name, long long bytes) {
+  const auto p = std::filesystem::temp_directory_path() / ("wattswath_" + name + "_" + std::to_string(::getpid()));
+  std::ofstream(p) << "{";
+  std::filesystem::resize_file(p, static_cast<std::uintmax_t>(bytes));
+  return p.string();
+}
+
+TEST(Regression, MissionVehicleEffectAndPathFilesOverTheirLimitAreRefusedBeforeReading) {
+  // Mission, vehicle, effect and waypoint-path files used to be read whole whatever their size
+  // (a 20 GB file named by mistake filled the memory). Each reader now refuses a file over its
+  // limit by its size, naming the file, the size and the limit.
+  struct Case {
+    std::vector<std::string> args;
+    std::string file, expected;
+  };
+  const std::string vehicle = sparseFile("vehicle.json", wattswath::energy::kMaxVehicleFileBytes + 1);
+  const std::string mission = sparseFile("mission.plan", 64LL * 1024 * 1024 + 1);
+  const std::string effect = sparseFile("effect.json", 16LL * 1024 * 1024 + 1);
+  const std::string path = sparseFile("path.txt", wattswath::logs::kMaxPathFileBytes + 1);
+  const std::vector<Case> cases = {
+      {{"predict", sourcePath("tests/data/good/mission_survey.plan"), "--vehicle", vehicle}, vehicle,
+       "bytes; vehicle files of at most 16777216 bytes (16 MiB) are read"},
+      {{"predict", mission, "--vehicle", "data/vehicles/iris.json"}, mission,
+       "bytes; mission files of at most 67108864 bytes (64 MiB) are read"},
+      {{"simulate", "--vehicle", "data/vehicles/iris.json", "--path", path, "--out", path + ".csv"}, path,
+       "bytes; path files of at most 67108864 bytes (64 MiB) are read"},
+  };
+  for (const auto& c : cases) {
+    const auto r = runCli(c.args, 20);
+    EXPECT_NE(r.status, 0) << c.file;
+    EXPECT_NE(r.err.find(c.file + ": the file has "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+  }
+  try {
+    wattswath::calibration::readEffectFile(effect);
+    ADD_FAILURE() << "an oversized effect file was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("effect files of at most 16777216 bytes (16 MiB) are read"), std::string::npos) << e.what();
+  }
+  for (const auto& f : {vehicle, mission, effect, path}) std::filesystem::remove(f);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // User-defined effects from a formula in a JSON model file (issue 18): muparser evaluates the
 // formula, private to this file.
 #include "wattswath/calibration/user_effect.hpp"
+#include "wattswath/io/strict_json.hpp"
+#include "wattswath/io/text_file.hpp"
 
 #include <muParser.h>
 
@@ -159,11 +161,16 @@ std::unique_ptr<energy::Effect> makeFormulaEffect(const FormulaEffectSpec& spec,
 }
 
 std::vector<FormulaEffectSpec> parseEffectFile(const std::string& text, const std::string& source) {
+  // Strict JSON: nesting bounded, and a field given twice (which value counts would be a guess) refused.
+  constexpr int kMaxDepth = 64;
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw std::invalid_argument(source + ": not JSON (" + std::string(e.what()) + "), expected an effect model file");
+    j = io::parseStrictJson(text, kMaxDepth);
+  } catch (const io::JsonError& e) {
+    if (e.problem() == io::JsonProblem::duplicate_key) {
+      throw std::invalid_argument(source + ": field '" + e.key() + "' appears twice in one object, expected each field once");
+    }
+    throw std::invalid_argument(source + ": " + e.what() + ", expected an effect model file");
   }
   std::vector<FormulaEffectSpec> out;
   if (j.is_object() && j.contains("effects")) {
@@ -202,11 +209,8 @@ energy::EnergyModel buildModelWith(const energy::Vehicle& v, const std::vector<s
 }
 
 std::vector<FormulaEffectSpec> readEffectFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parseEffectFile(ss.str(), path);
+  // io::FileError is a std::runtime_error naming the file.
+  return parseEffectFile(io::readTextFile(path, {kMaxEffectFileBytes, "effect files", ""}), path);
 }
 
 }  // namespace wattswath::calibration

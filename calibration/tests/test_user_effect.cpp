@@ -62,7 +62,11 @@ TEST(UserEffect, ErrorsNameFileFieldValueAndExpectation) {
   EXPECT_NE(errorOf(R"J({"name": "x", "power": "t", "coefficients": [{"name": "t", "unit": "s", "value": 1, "lower": 0, "upper": 2}]})J")
                 .find("is a variable of the formula"),
             std::string::npos);
-  EXPECT_NE(errorOf("{not json").find("model.json: not JSON"), std::string::npos);
+  EXPECT_NE(errorOf("{not json").find("model.json: not valid JSON"), std::string::npos);
+  EXPECT_NE(errorOf("[1e999]").find("model.json: not valid JSON"), std::string::npos);  // out of range, not a crash
+  EXPECT_NE(errorOf(R"J({"name": "x", "power": "k", "name": "y", "coefficients": []})J")
+                .find("model.json: field 'name' appears twice in one object, expected each field once"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"J({"effects": [{"name": "x", "coefficients": []}]})J").find("effects[0].power is missing"),
             std::string::npos);
 }

@@ -1,4 +1,7 @@
 #include "wattswath/energy/peers.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/io/strict_json.hpp"
+#include "wattswath/io/text_file.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -57,13 +60,12 @@ DiFrancoModel DiFrancoModel::published() {
 }
 
 DiFrancoModel DiFrancoModel::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open Di Franco model file");
+  constexpr int kMaxDepth = 16;  // the model file is a flat object of numbers and lists
   nlohmann::json j;
   try {
-    in >> j;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
+    j = io::parseStrictJson(io::readTextFile(path, {kMaxVehicleFileBytes, "peer model files", ""}), kMaxDepth);
+  } catch (const io::JsonError& e) {  // io::FileError, a std::runtime_error naming the file, passes
+    throw std::runtime_error(path + ": " + e.what());
   }
   auto num = [&](const char* key) {
     if (!j.contains(key) || !j[key].is_number()) throw std::runtime_error(path + ": missing number field '" + key + "'");

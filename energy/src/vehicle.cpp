@@ -1,4 +1,6 @@
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/io/strict_json.hpp"
+#include "wattswath/io/text_file.hpp"
 
 #include <climits>
 #include <cmath>
@@ -146,37 +148,23 @@ void validateBattery(const Battery& b, const std::string& source) {
 }
 
 Vehicle parseVehicle(const std::string& json_text, const std::string& source) {
-  json j;
-  // A field given twice would silently keep the last value: reject it, naming the field.
-  std::vector<std::set<std::string>> keys_seen;
-  std::string duplicate;
-  // Nesting is bounded while parsing: a value nested ~70k deep would otherwise overflow the stack
-  // later, in the recursive dump() that quotes it in a message.
+  // Nesting is bounded while parsing (a value nested ~70k deep would otherwise overflow the stack
+  // later, in the recursive dump() that quotes it in a message), and a field given twice, which
+  // would silently keep the last value, is refused naming the field.
   constexpr int kMaxDepth = 64;
-  const json::parser_callback_t check_duplicates = [&](int depth, json::parse_event_t event, json& parsed) {
-    if (depth > kMaxDepth) {
-      throw std::invalid_argument(prefix(source) + "JSON nested more than " + std::to_string(kMaxDepth) +
-                                  " levels deep, expected a flat vehicle object (nesting of at most " +
-                                  std::to_string(kMaxDepth) + ")");
-    }
-    if (event == json::parse_event_t::object_start) {
-      keys_seen.emplace_back();
-    } else if (event == json::parse_event_t::object_end && !keys_seen.empty()) {
-      keys_seen.pop_back();
-    } else if (event == json::parse_event_t::key && !keys_seen.empty() && parsed.is_string()) {
-      const auto& k = parsed.get_ref<const std::string&>();
-      if (!keys_seen.back().insert(k).second && duplicate.empty()) duplicate = k;
-    }
-    return true;
-  };
+  json j;
   try {
-    j = json::parse(json_text, check_duplicates);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
-    throw std::invalid_argument(prefix(source) + "not valid JSON (" + e.what() + ")");
-  }
-  if (!duplicate.empty()) {
-    throw std::invalid_argument(prefix(source) + "field '" + duplicate +
-                                "' appears twice, expected each field once");
+    j = io::parseStrictJson(json_text, kMaxDepth);
+  } catch (const io::JsonError& e) {
+    switch (e.problem()) {
+      case io::JsonProblem::too_deep:
+        throw std::invalid_argument(prefix(source) + e.what() + ", expected a flat vehicle object (nesting of at most " +
+                                    std::to_string(kMaxDepth) + ")");
+      case io::JsonProblem::duplicate_key:
+        throw std::invalid_argument(prefix(source) + "field '" + e.key() + "' appears twice, expected each field once");
+      case io::JsonProblem::invalid: break;
+    }
+    throw std::invalid_argument(prefix(source) + e.what());
   }
   if (!j.is_object()) throw std::invalid_argument(prefix(source) + "expected a JSON object at the top level");
   rejectUnknown(j, knownVehicleKeys(), source, "");
@@ -234,12 +222,10 @@ Vehicle parseVehicle(const std::string& json_text, const std::string& source) {
 }
 
 Vehicle loadVehicle(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open vehicle file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  // io::FileError is a std::runtime_error naming the file.
+  const std::string text = io::readTextFile(path, {kMaxVehicleFileBytes, "vehicle files", ""});
   try {
-    return parseVehicle(ss.str(), path);
+    return parseVehicle(text, path);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(e.what());
   }

@@ -12,6 +12,7 @@
 #include <ogr_geometry.h>
 
 #include "area_internal.hpp"
+#include "wattswath/io/strict_json.hpp"
 #include "gdal_util.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 
@@ -200,25 +201,16 @@ json parseJsonBounded(const std::string& text, const std::string& source) {
   // deeper input would overflow the stack in the recursive readers or in dump().
   // A key given twice in one object is refused: JSON readers disagree on which one counts (ours
   // and GDAL's keep the last), so the area would be a guess.
-  std::vector<std::unordered_set<std::string>> keys;  // the keys of each open object
-  const json::parser_callback_t bound = [&](int depth, json::parse_event_t event, json& parsed) {
-    if (depth > kMaxJsonDepth) {
-      fail(source, "JSON nested more than " + std::to_string(kMaxJsonDepth) + " levels deep (the limit of an area file)");
-    }
-    if (event == json::parse_event_t::object_start) keys.emplace_back();
-    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
-    if (event == json::parse_event_t::key && !keys.empty() && parsed.is_string()) {
-      const auto& k = parsed.get_ref<const std::string&>();
-      if (!keys.back().insert(k).second) {
-        fail(source, "key \"" + k + "\" appears twice in one JSON object; expected each key once (which one counts is a guess)");
-      }
-    }
-    return true;
-  };
   try {
-    return json::parse(text, bound);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
-    fail(source, std::string("not valid JSON: ") + e.what());
+    return io::parseStrictJson(text, kMaxJsonDepth);
+  } catch (const io::JsonError& e) {
+    switch (e.problem()) {
+      case io::JsonProblem::too_deep: fail(source, std::string(e.what()) + " (the limit of an area file)");
+      case io::JsonProblem::duplicate_key:
+        fail(source, std::string(e.what()) + "; expected each key once (which one counts is a guess)");
+      case io::JsonProblem::invalid: break;
+    }
+    fail(source, e.what());
   }
 }
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "area_internal.hpp"
+#include "wattswath/io/text_file.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 
 namespace wattswath::geometry {
@@ -18,18 +19,11 @@ using namespace detail;
 
 /// Reads a text-format area file whole, refusing files over kMaxAreaFileBytes before reading.
 std::string readText(const std::string& path) {
-  std::ifstream f(path, std::ios::binary | std::ios::ate);
-  if (!f) throw SurveyAreaError(path + ": cannot open the file");
-  const auto size = static_cast<long long>(f.tellg());
-  if (size > kMaxAreaFileBytes) {
-    throw SurveyAreaError(path + ": the file has " + std::to_string(size) + " bytes; area files of at most " +
-                          std::to_string(kMaxAreaFileBytes) + " bytes (64 MiB) are read (simplify the polygon, e.g. "
-                          "ogr2ogr -simplify 0.5)");
+  try {
+    return io::readTextFile(path, {kMaxAreaFileBytes, "area files", "simplify the polygon, e.g. ogr2ogr -simplify 0.5"});
+  } catch (const io::FileError& e) {
+    throw SurveyAreaError(e.what());
   }
-  f.seekg(0);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
 }
 
 std::string extensionOf(const std::string& path) {

@@ -1,4 +1,5 @@
 #include "wattswath/logs/log_io.hpp"
+#include "wattswath/io/text_file.hpp"
 
 #include <GeographicLib/LocalCartesian.hpp>
 
@@ -482,11 +483,8 @@ std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const st
 }
 
 std::vector<Eigen::Vector3d> readWaypointPath(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the path file");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return parseWaypointPath(os.str(), path);
+  // io::FileError is a std::runtime_error naming the file.
+  return parseWaypointPath(io::readTextFile(path, {kMaxPathFileBytes, "path files", ""}), path);
 }
 
 }  // namespace wattswath::logs

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "files_internal.hpp"
+#include "wattswath/io/text_file.hpp"
 
 namespace wattswath::mission {
 namespace {
@@ -34,12 +35,11 @@ Format byContent(const std::string& text) {
 }
 
 std::string readText(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) fail(path, "cannot open the file");
-  std::ostringstream s;
-  s << f.rdbuf();
-  if (f.bad()) fail(path, "cannot read the file");
-  return s.str();
+  try {
+    return io::readTextFile(path, {kMaxMissionFileBytes, "mission files", ""});
+  } catch (const io::FileError& e) {
+    throw MissionError(e.what());
+  }
 }
 
 }  // namespace

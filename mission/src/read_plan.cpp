@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files_internal.hpp"
+#include "wattswath/io/strict_json.hpp"
 
 namespace wattswath::mission {
 namespace {
@@ -182,11 +183,19 @@ void readMissionHeader(const json& mj, const std::string& where, Mission& m) {
   readHome(mj, where, m);
 }
 
+// Nesting is bounded while parsing (QGroundControl writes about 8 levels; deeper input would
+// overflow the stack in the recursive dump() that quotes a value in a message) and a key given twice
+// in one object is refused: which one QGroundControl would take is a guess.
+constexpr int kMaxPlanJsonDepth = 64;
+
 json parseJson(const std::string& text, const std::string& source) {
   try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    fail(source, std::string("not valid JSON (a QGroundControl .plan): ") + e.what());
+    return io::parseStrictJson(text, kMaxPlanJsonDepth);
+  } catch (const io::JsonError& e) {
+    const std::string why = e.problem() == io::JsonProblem::duplicate_key ? "; expected each key once (which one counts is a guess)"
+                            : e.problem() == io::JsonProblem::too_deep    ? " (the limit of a mission file)"
+                                                                          : " (a QGroundControl .plan)";
+    fail(source, e.what() + why);
   }
 }
 

@@ -50,7 +50,11 @@ std::vector<FormulaEffectSpec> parseEffectFile(const std::string& text, const st
 energy::EnergyModel buildModelWith(const energy::Vehicle& v, const std::vector<std::string>& names,
                                    const std::vector<FormulaEffectSpec>& user);
 
-/// parseEffectFile of the file at `path`; throws std::runtime_error when it cannot be read.
+/// Largest effect model file read [B] (read whole).
+inline constexpr long long kMaxEffectFileBytes = 16LL * 1024 * 1024;
+
+/// parseEffectFile of the file at `path`; throws std::runtime_error when it cannot be read or is
+/// over kMaxEffectFileBytes.
 std::vector<FormulaEffectSpec> readEffectFile(const std::string& path);
 
 }  // namespace wattswath::calibration

@@ -73,7 +73,11 @@ void validate(const Vehicle& v, const std::string& source = "");
 /// range when `b` is not a physically valid battery; `source` is prefixed when not empty.
 void validateBattery(const Battery& b, const std::string& source = "");
 
-/// Reads a vehicle JSON file and validates it; throws std::runtime_error naming the file and field.
+/// Largest vehicle file read [B] (read whole; a vehicle with every autopilot parameter is ~100 kB).
+inline constexpr long long kMaxVehicleFileBytes = 16LL * 1024 * 1024;
+
+/// Reads a vehicle JSON file and validates it; throws std::runtime_error naming the file and field
+/// (a file over kMaxVehicleFileBytes is refused before it is read).
 Vehicle loadVehicle(const std::string& path);
 
 /// Parses a vehicle from JSON text; `source` names it in error messages.

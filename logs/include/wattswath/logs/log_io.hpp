@@ -58,7 +58,11 @@ void deriveKinematics(FlightLog& log, bool velocity, bool acceleration, const De
 /// needs at least 2 waypoints"; a waypoint within 0.01 m of the previous one is an error (each is a stop).
 std::vector<Eigen::Vector3d> parseWaypointPath(const std::string& text, const std::string& source);
 
-/// Reads a waypoint path file as parseWaypointPath() does; throws naming `path` when it cannot be read.
+/// Largest waypoint path file read [B] (read whole).
+inline constexpr long long kMaxPathFileBytes = 64LL * 1024 * 1024;
+
+/// Reads a waypoint path file as parseWaypointPath() does; throws naming `path` when it cannot be
+/// read or is over kMaxPathFileBytes.
 std::vector<Eigen::Vector3d> readWaypointPath(const std::string& path);
 
 }  // namespace wattswath::logs

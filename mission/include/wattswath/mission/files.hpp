@@ -28,6 +28,9 @@ inline constexpr std::size_t kMaxMissionItems = 65534;
 /// naming the count, the limit and what to change. Every mission writer calls it before writing.
 void checkMissionItemCount(std::size_t items);
 
+/// Largest mission file read [B] (read whole; a 65,534-item `.plan` is about 30 MB).
+inline constexpr long long kMaxMissionFileBytes = 64LL * 1024 * 1024;
+
 /// How missions are read and checked.
 struct ReadOptions {
   bool lenient = false;                      ///< an unsupported command becomes a warning and its item is dropped
@@ -37,7 +40,8 @@ struct ReadOptions {
 
 /// Reads a mission file: `.plan` (QGroundControl JSON) or `.waypoints` / `.txt` (QGC WPL 110),
 /// chosen by the extension and the content (which must agree when both are known). Throws
-/// MissionError when the file cannot be opened or read, or as parseQgcPlan / parseQgcWpl.
+/// MissionError when the file cannot be opened or read or is over kMaxMissionFileBytes, or as
+/// parseQgcPlan / parseQgcWpl.
 Mission readMission(const std::string& path, const ReadOptions& o = {});
 
 /// Parses QGroundControl `.plan` text (fileType "Plan", version 1, mission version 2) by QGC's own
