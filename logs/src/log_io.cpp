@@ -49,19 +49,26 @@ std::vector<std::string> splitCommas(const std::string& line) {
   throw std::runtime_error(source + ":" + std::to_string(line) + ": " + what);
 }
 
-/// Columns the model uses, with whether an empty cell means "not measured".
+/// The columns the model uses, in the order of kKnown.
+enum Column : int {
+  kTime, kX, kY, kZ, kLat, kLon, kAlt, kVx, kVy, kVz, kAx, kAy, kAz,
+  kYaw, kVoltage, kCurrent, kPower, kMass, kWindX, kWindY, kColumnCount
+};
+
+/// A column the model uses, with whether an empty cell means "not measured".
 struct Known {
   const char* name;
   bool empty_ok;
 };
-constexpr std::array<Known, 20> kKnown = {{{"time_s", false},    {"x_m", false},       {"y_m", false},
-                                           {"z_m", false},       {"lat_deg", false},   {"lon_deg", false},
-                                           {"alt_m", false},     {"vx_mps", false},    {"vy_mps", false},
-                                           {"vz_mps", false},    {"ax_mps2", false},   {"ay_mps2", false},
-                                           {"az_mps2", false},   {"yaw_rad", true},    {"voltage_v", false},
-                                           {"current_a", false}, {"power_w", false},   {"mass_kg", true},
-                                           {"wind_x_mps", true}, {"wind_y_mps", true}}};
+constexpr std::array<Known, kColumnCount> kKnown = {{{"time_s", false},    {"x_m", false},       {"y_m", false},
+                                                     {"z_m", false},       {"lat_deg", false},   {"lon_deg", false},
+                                                     {"alt_m", false},     {"vx_mps", false},    {"vy_mps", false},
+                                                     {"vz_mps", false},    {"ax_mps2", false},   {"ay_mps2", false},
+                                                     {"az_mps2", false},   {"yaw_rad", true},    {"voltage_v", false},
+                                                     {"current_a", false}, {"power_w", false},   {"mass_kg", true},
+                                                     {"wind_x_mps", true}, {"wind_y_mps", true}}};
 
+/// The known column named `n`, or -1 (run once per header column, not per cell).
 int knownIndex(const std::string& n) {
   for (size_t i = 0; i < kKnown.size(); ++i)
     if (n == kKnown[i].name) return static_cast<int>(i);
@@ -118,240 +125,239 @@ FlightLog readCsvLog(const std::string& path, const DerivativeSettings& d, long 
   return parseCsvLog(binary::readWholeFile<std::string>(path, max_file_bytes), path, d);
 }
 
-FlightLog parseCsvLog(const std::string& text_in, const std::string& source, const DerivativeSettings& d) {
-  FlightLog log;
-  log.source = source;
-  log.format = "csv";
-  std::string_view text(text_in);
-  if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
-      static_cast<unsigned char>(text[2]) == 0xBF) {
-    text.remove_prefix(3);
+namespace {
+
+/// Reads a canonical CSV log into a FlightLog: the header once (names, duplicates and which
+/// columns are present), then row by row, converting each row as it is read. Every error names
+/// the source, the line and the column.
+class CsvLogReader {
+ public:
+  CsvLogReader(FlightLog& log, const std::string& source) : log_(log), source_(source) {}
+
+  /// Whether the header row has been read.
+  bool hasHeader() const { return !header_.empty(); }
+  /// The header's line number (1-based).
+  size_t headerLine() const { return header_line_; }
+  /// Whether positions are local x, y, z [m] (else geodetic, converted to ENU).
+  bool local() const { return local_; }
+  /// Whether the log gives velocities (else they are derived).
+  bool haveVelocity() const { return have_vel_; }
+  /// Whether the log gives accelerations (else they are derived).
+  bool haveAcceleration() const { return have_acc_; }
+
+  /// Reads the header row at `line_no`: names, duplicates, known and extra columns, then the checks.
+  void readHeader(const std::string& line, size_t line_no) {
+    header_ = splitCommas(line);
+    header_line_ = line_no;
+    std::unordered_map<std::string_view, size_t> seen;  // name -> first column: linear in the header's width
+    seen.reserve(header_.size());
+    for (size_t c = 0; c < header_.size(); ++c) {
+      if (header_[c].empty()) fail(source_, line_no, "column " + std::to_string(c + 1) + " has an empty name");
+      if (!seen.emplace(header_[c], c).second) {
+        fail(source_, line_no, "column '" + header_[c] + "' appears twice (fields " + std::to_string(seen[header_[c]] + 1) +
+                                   " and " + std::to_string(c + 1) + ")");
+      }
+      const int k = knownIndex(header_[c]);
+      if (k >= 0) {
+        col_of_[k] = static_cast<int>(c);
+      } else {
+        extra_idx_.push_back(static_cast<int>(c));
+        log_.extra_columns.push_back(header_[c]);
+      }
+    }
+    checkColumns();
   }
 
-  std::vector<std::string> header;
-  std::vector<int> col_of(kKnown.size(), -1);  // known column -> index in the row
-  std::vector<int> extra_idx;
-  size_t header_line = 0;
-  size_t line_no = 0;
-  size_t pos = 0;
-  // Rows are converted as they are read (no copy of the table as strings); their line numbers are
-  // kept for the messages about derivatives.
-  std::vector<size_t> row_lines;
-  bool local = false, geodetic = false, have_power = false, have_vel = false, have_acc = false;
-  auto has = [&](const char* n) { return col_of[knownIndex(n)] >= 0; };
-  // The header's checks, run once when the header row is read.
-  auto setupColumns = [&]() {
-    auto requireCol = [&](const char* n, const std::string& why) {
-      if (!has(n)) fail(source, header_line, "missing required column '" + std::string(n) + "' (" + why + ")");
-    };
-    requireCol("time_s", "sample time");
-    local = has("x_m") || has("y_m") || has("z_m");
-    geodetic = !local && (has("lat_deg") || has("lon_deg") || has("alt_m"));
-    if (local) {
-      for (const char* n : {"x_m", "y_m", "z_m"}) requireCol(n, "local position x_m, y_m, z_m");
+  /// Converts the row at line `ln` (its comma-separated fields) into a sample.
+  void addRow(size_t ln, const std::vector<std::string>& f) {
+    if (f.size() != header_.size()) {
+      fail(source_, ln, "row has " + std::to_string(f.size()) + " fields, the header has " + std::to_string(header_.size()));
+    }
+    LogSample s;
+    s.t = number(kTime, ln, f);
+    s.position = position(ln, f);
+    if (have_vel_) s.velocity = {number(kVx, ln, f), number(kVy, ln, f), number(kVz, ln, f)};
+    if (have_acc_) s.acceleration = {number(kAx, ln, f), number(kAy, ln, f), number(kAz, ln, f)};
+    s.yaw = number(kYaw, ln, f);
+    s.voltage = number(kVoltage, ln, f);
+    s.current = number(kCurrent, ln, f);
+    if (s.current < tol::kLogMinCurrent) {
+      fail(source_, ln, "column 'current_a': value " + fmt(s.current) + " A is below " + fmt(tol::kLogMinCurrent) +
+                            " A (a multirotor draws current: is the current sensor's sign or offset wrong?)");
+    }
+    s.power = have_power_ ? number(kPower, ln, f) : s.voltage * s.current;
+    if (!have_power_ && !(std::abs(s.power) <= tol::kLogMaxMagnitude)) {
+      // Written back as power_w, which is bounded like every value: the log would not read back.
+      fail(source_, ln, "columns 'voltage_v' x 'current_a': power " + fmt(s.power) +
+                            " W is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
+    }
+    s.mass = number(kMass, ln, f);
+    s.wind = {number(kWindX, ln, f), number(kWindY, ln, f)};
+    checkTime(ln, s.t);
+    std::vector<std::string> extra;
+    extra.reserve(extra_idx_.size());
+    for (int c : extra_idx_) extra.push_back(f[c]);
+    log_.extra_values.push_back(std::move(extra));
+    log_.samples.push_back(s);
+  }
+
+ private:
+  bool has(Column k) const { return col_of_[k] >= 0; }
+
+  void require(Column k, const std::string& why) const {
+    if (!has(k)) fail(source_, header_line_, "missing required column '" + std::string(kKnown[k].name) + "' (" + why + ")");
+  }
+
+  /// Whether all three columns of `g` are present; one or two of them is an error naming the missing one.
+  bool groupAll(std::array<Column, 3> g) const {
+    const int n = has(g[0]) + has(g[1]) + has(g[2]);
+    if (n != 0 && n != 3) {
+      for (Column c : g)
+        if (!has(c)) {
+          fail(source_, header_line_,
+               "missing column '" + std::string(kKnown[c].name) + "': give all of " + kKnown[g[0]].name + ", " +
+                   kKnown[g[1]].name + ", " + kKnown[g[2]].name + " or none");
+        }
+    }
+    return n == 3;
+  }
+
+  /// The header's checks: time, one kind of position, power, whole groups, both wind columns.
+  void checkColumns() {
+    require(kTime, "sample time");
+    local_ = has(kX) || has(kY) || has(kZ);
+    const bool geodetic = !local_ && (has(kLat) || has(kLon) || has(kAlt));
+    if (local_) {
+      for (Column c : {kX, kY, kZ}) require(c, "local position x_m, y_m, z_m");
     } else if (geodetic) {
-      for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) requireCol(n, "geodetic position lat_deg, lon_deg, alt_m");
+      for (Column c : {kLat, kLon, kAlt}) require(c, "geodetic position lat_deg, lon_deg, alt_m");
     } else {
-      fail(source, header_line, "missing required column 'x_m' (position: x_m, y_m, z_m or lat_deg, lon_deg, alt_m)");
+      fail(source_, header_line_, "missing required column 'x_m' (position: x_m, y_m, z_m or lat_deg, lon_deg, alt_m)");
     }
-    have_power = has("power_w");
-    if (!have_power) {
-      requireCol("voltage_v", "battery power: voltage_v and current_a, or power_w");
-      requireCol("current_a", "battery power: voltage_v and current_a, or power_w");
+    have_power_ = has(kPower);
+    if (!have_power_) {
+      require(kVoltage, "battery power: voltage_v and current_a, or power_w");
+      require(kCurrent, "battery power: voltage_v and current_a, or power_w");
     }
-    auto groupAll = [&](std::array<const char*, 3> g) {
-      const int n = has(g[0]) + has(g[1]) + has(g[2]);
-      if (n != 0 && n != 3) {
-        for (const char* c : g)
-          if (!has(c)) {
-            fail(source, header_line,
-                 "missing column '" + std::string(c) + "': give all of " + g[0] + ", " + g[1] + ", " + g[2] + " or none");
-          }
-      }
-      return n == 3;
-    };
-    have_vel = groupAll({"vx_mps", "vy_mps", "vz_mps"});
-    have_acc = groupAll({"ax_mps2", "ay_mps2", "az_mps2"});
-    if (has("wind_x_mps") != has("wind_y_mps")) {
-      fail(source, header_line, std::string("missing column '") + (has("wind_x_mps") ? "wind_y_mps" : "wind_x_mps") +
-                                    "': give both wind columns or none");
+    have_vel_ = groupAll({kVx, kVy, kVz});
+    have_acc_ = groupAll({kAx, kAy, kAz});
+    if (has(kWindX) != has(kWindY)) {
+      fail(source_, header_line_,
+           std::string("missing column '") + (has(kWindX) ? "wind_y_mps" : "wind_x_mps") + "': give both wind columns or none");
     }
     // In a local-frame log the lat/lon/alt columns are not used: keep them verbatim.
-    if (local) {
-      for (const char* n : {"lat_deg", "lon_deg", "alt_m"}) {
-        const int k = knownIndex(n);
-        if (col_of[k] >= 0) {
-          extra_idx.push_back(col_of[k]);
-          log.extra_columns.push_back(n);
-          col_of[k] = -1;
+    if (local_) {
+      for (Column c : {kLat, kLon, kAlt}) {
+        if (has(c)) {
+          extra_idx_.push_back(col_of_[c]);
+          log_.extra_columns.push_back(kKnown[c].name);
+          col_of_[c] = -1;
         }
       }
     }
+  }
 
-  };
-  std::optional<GeographicLib::LocalCartesian> enu;
-  auto addRow = [&](size_t ln, const std::vector<std::string>& f) {
-    if (f.size() != header.size()) {
-      fail(source, ln, "row has " + std::to_string(f.size()) + " fields, the header has " +
-                           std::to_string(header.size()));
+  /// The value of column `k` in the row at line `ln`: NaN when absent (or empty where allowed),
+  /// else a finite number within the log's bounds.
+  double number(Column k, size_t ln, const std::vector<std::string>& f) const {
+    const int c = col_of_[k];
+    if (c < 0) return kNaN;
+    const std::string& cell = f[c];
+    const std::string name = kKnown[k].name;
+    if (cell.empty()) {
+      if (kKnown[k].empty_ok) return kNaN;
+      fail(source_, ln, "column '" + name + "' (field " + std::to_string(c + 1) + "): empty value, expected a finite number");
     }
-    auto num = [&, ln = ln, &f = f](const char* n) -> double {
-      const int k = knownIndex(n);
-      const int c = col_of[k];
-      if (c < 0) return kNaN;
-      const std::string& cell = f[c];
-      if (cell.empty()) {
-        if (kKnown[k].empty_ok) return kNaN;
-        fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) +
-                             "): empty value, expected a finite number");
-      }
-      double v = 0.0;
-      const char* b = cell.data();
-      const char* e = b + cell.size();
-      if (*b == '+' && e - b > 1 && b[1] != '-') ++b;
-      auto r = std::from_chars(b, e, v);
-      if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v)) {
-        fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) + "): value '" + cell +
-                             "' is not a finite number");
-      }
-      const bool bounded_elsewhere = k == knownIndex("time_s") || k == knownIndex("lat_deg") || k == knownIndex("lon_deg");
-      if (!bounded_elsewhere && std::abs(v) > tol::kLogMaxMagnitude) {
-        fail(source, ln, "column '" + std::string(n) + "' (field " + std::to_string(c + 1) + "): value '" + cell +
-                             "' is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
-      }
-      return v;
-    };
-    LogSample s;
-    s.t = num("time_s");
-    if (local) {
-      s.position = {num("x_m"), num("y_m"), num("z_m")};
-    } else {
-      const double lat = num("lat_deg"), lon = num("lon_deg"), alt = num("alt_m");
-      if (std::abs(lat) > 90.0) {
-        fail(source, ln, "column 'lat_deg': value " + fmt(lat) + " is outside -90..90 degrees");
-      }
-      if (std::abs(lon) > 180.0) {
-        fail(source, ln, "column 'lon_deg': value " + fmt(lon) + " is outside -180..180 degrees");
-      }
-      if (std::abs(alt) > tol::kLogMaxAltitude) {
-        fail(source, ln, "column 'alt_m': value " + fmt(alt) + " is outside " + altitudeRange());
-      }
-      if (!enu) {
-        enu.emplace(lat, lon, alt);
-        log.has_geodetic_origin = true;
-        log.origin_lat_deg = lat;
-        log.origin_lon_deg = lon;
-        log.origin_alt_m = alt;
-      }
-      double x = 0, y = 0, z = 0;
-      enu->Forward(lat, lon, alt, x, y, z);
-      s.position = {x, y, z};
+    double v = 0.0;
+    const char* b = cell.data();
+    const char* e = b + cell.size();
+    if (*b == '+' && e - b > 1 && b[1] != '-') ++b;
+    auto r = std::from_chars(b, e, v);
+    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v)) {
+      fail(source_, ln, "column '" + name + "' (field " + std::to_string(c + 1) + "): value '" + cell + "' is not a finite number");
     }
-    if (have_vel) s.velocity = {num("vx_mps"), num("vy_mps"), num("vz_mps")};
-    if (have_acc) s.acceleration = {num("ax_mps2"), num("ay_mps2"), num("az_mps2")};
-    s.yaw = num("yaw_rad");
-    s.voltage = num("voltage_v");
-    s.current = num("current_a");
-    if (s.current < tol::kLogMinCurrent) {
-      fail(source, ln, "column 'current_a': value " + fmt(s.current) + " A is below " + fmt(tol::kLogMinCurrent) +
-                           " A (a multirotor draws current: is the current sensor's sign or offset wrong?)");
+    const bool bounded_elsewhere = k == kTime || k == kLat || k == kLon;
+    if (!bounded_elsewhere && std::abs(v) > tol::kLogMaxMagnitude) {
+      fail(source_, ln, "column '" + name + "' (field " + std::to_string(c + 1) + "): value '" + cell +
+                            "' is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
     }
-    s.power = have_power ? num("power_w") : s.voltage * s.current;
-    if (!have_power && !(std::abs(s.power) <= tol::kLogMaxMagnitude)) {
-      // Written back as power_w, which is bounded like every value: the log would not read back.
-      fail(source, ln, "columns 'voltage_v' x 'current_a': power " + fmt(s.power) +
-                           " W is too large, expected a magnitude of at most " + fmt(tol::kLogMaxMagnitude));
-    }
+    return v;
+  }
 
-    s.mass = num("mass_kg");
-    s.wind = {num("wind_x_mps"), num("wind_y_mps")};
-    if (!log.samples.empty() && !(s.t > log.samples.back().t)) {
-      fail(source, ln, "column 'time_s': time " + fmt(s.t) + " s does not increase (previous row: " +
-                           fmt(log.samples.back().t) + " s)");
+  /// The row's position [m]: local as given, or geodetic converted to ENU about the first row.
+  Eigen::Vector3d position(size_t ln, const std::vector<std::string>& f) {
+    if (local_) return {number(kX, ln, f), number(kY, ln, f), number(kZ, ln, f)};
+    const double lat = number(kLat, ln, f), lon = number(kLon, ln, f), alt = number(kAlt, ln, f);
+    if (std::abs(lat) > 90.0) fail(source_, ln, "column 'lat_deg': value " + fmt(lat) + " is outside -90..90 degrees");
+    if (std::abs(lon) > 180.0) fail(source_, ln, "column 'lon_deg': value " + fmt(lon) + " is outside -180..180 degrees");
+    if (std::abs(alt) > tol::kLogMaxAltitude) {
+      fail(source_, ln, "column 'alt_m': value " + fmt(alt) + " is outside " + altitudeRange());
     }
-    if (!log.samples.empty() && s.t - log.samples.back().t < tol::kLogMinTimeStep) {
-      fail(source, ln, "column 'time_s': time " + fmt(s.t) + " s is only " + fmt(s.t - log.samples.back().t) +
-                           " s after the previous row, expected steps of at least " + fmt(tol::kLogMinTimeStep) + " s");
+    if (!enu_) {
+      enu_.emplace(lat, lon, alt);
+      log_.has_geodetic_origin = true;
+      log_.origin_lat_deg = lat;
+      log_.origin_lon_deg = lon;
+      log_.origin_alt_m = alt;
     }
-    std::vector<std::string> extra;
-    extra.reserve(extra_idx.size());
-    for (int c : extra_idx) extra.push_back(f[c]);
-    log.extra_values.push_back(std::move(extra));
-    log.samples.push_back(s);
+    double x = 0, y = 0, z = 0;
+    enu_->Forward(lat, lon, alt, x, y, z);
+    return {x, y, z};
+  }
+
+  /// Times must increase by at least the log's smallest step.
+  void checkTime(size_t ln, double t) const {
+    if (log_.samples.empty()) return;
+    const double previous = log_.samples.back().t;
+    if (!(t > previous)) {
+      fail(source_, ln, "column 'time_s': time " + fmt(t) + " s does not increase (previous row: " + fmt(previous) + " s)");
+    }
+    if (t - previous < tol::kLogMinTimeStep) {
+      fail(source_, ln, "column 'time_s': time " + fmt(t) + " s is only " + fmt(t - previous) +
+                            " s after the previous row, expected steps of at least " + fmt(tol::kLogMinTimeStep) + " s");
+    }
+  }
+
+  FlightLog& log_;
+  const std::string& source_;
+  std::vector<std::string> header_;
+  std::array<int, kColumnCount> col_of_ = [] {
+    std::array<int, kColumnCount> a{};
+    a.fill(-1);
+    return a;
+  }();                          // known column -> index in the row
+  std::vector<int> extra_idx_;  // columns kept verbatim
+  size_t header_line_ = 0;
+  bool local_ = false, have_power_ = false, have_vel_ = false, have_acc_ = false;
+  std::optional<GeographicLib::LocalCartesian> enu_;
+};
+
+/// A local-frame log written from a geodetic one keeps its origin in the metadata: read it back.
+void readGeodeticOrigin(FlightLog& log, const std::string& source, size_t header_line) {
+  if (!(log.metadata.count("origin_lat_deg") && log.metadata.count("origin_lon_deg") && log.metadata.count("origin_alt_m"))) {
+    return;
+  }
+  // Whole-text, finite, in range: std::stod would read "43.7abc" as 43.7 and accept "nan".
+  auto origin = [&](const char* key, double limit, const std::string& expected) {
+    const std::string& text = log.metadata[key];
+    double v = 0.0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v) ||
+        std::abs(v) > limit) {
+      fail(source, header_line, "metadata '" + std::string(key) + "': value '" + text + "', expected " + expected);
+    }
+    return v;
   };
-  while (pos <= text.size()) {
-    size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string line(text.substr(pos, end - pos));
-    pos = end + 1;
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (trim(line).empty()) {
-      if (pos > text.size()) break;
-      continue;  // blank line: not a row
-    }
-    if (header.empty()) {
-      if (line[0] == '#') {
-        const std::string body = trim(line.substr(1));
-        const size_t colon = body.find(':');
-        if (colon != std::string::npos) log.metadata[trim(body.substr(0, colon))] = trim(body.substr(colon + 1));
-        continue;
-      }
-      header = splitCommas(line);
-      header_line = line_no;
-      std::unordered_map<std::string_view, size_t> seen;  // name -> first column: linear in the header's width
-      seen.reserve(header.size());
-      for (size_t c = 0; c < header.size(); ++c) {
-        if (header[c].empty()) fail(source, line_no, "column " + std::to_string(c + 1) + " has an empty name");
-        if (!seen.emplace(header[c], c).second) {
-          fail(source, line_no, "column '" + header[c] + "' appears twice (fields " + std::to_string(seen[header[c]] + 1) +
-                                    " and " + std::to_string(c + 1) + ")");
-        }
-        const int k = knownIndex(header[c]);
-        if (k >= 0) {
-          col_of[k] = static_cast<int>(c);
-        } else {
-          extra_idx.push_back(static_cast<int>(c));
-          log.extra_columns.push_back(header[c]);
-        }
-      }
-      setupColumns();
-      continue;
-    }
-    if (line[0] == '#') {
-      fail(source, line_no, "comment line after the header; comments ('# key: value') must come before the header");
-    }
-    row_lines.push_back(line_no);
-    addRow(line_no, splitCommas(line));
-  }
-  if (header.empty()) throw std::runtime_error(source + ":" + std::to_string(line_no) + ": no header row found");
-  // A local-frame log written from a geodetic one keeps its origin in the metadata.
-  if (local && log.metadata.count("origin_lat_deg") && log.metadata.count("origin_lon_deg") &&
-      log.metadata.count("origin_alt_m")) {
-    // Whole-text, finite, in range: std::stod would read "43.7abc" as 43.7 and accept "nan".
-    auto origin = [&](const char* key, double limit, const char* expected) {
-      const std::string& text = log.metadata[key];
-      double v = 0.0;
-      const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-      if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v) ||
-          std::abs(v) > limit) {
-        fail(source, header_line, "metadata '" + std::string(key) + "': value '" + text + "', expected " + expected);
-      }
-      return v;
-    };
-    log.origin_lat_deg = origin("origin_lat_deg", 90.0, "a latitude in -90..90 degrees");
-    log.origin_lon_deg = origin("origin_lon_deg", 180.0, "a longitude in -180..180 degrees");
-    log.origin_alt_m = origin("origin_alt_m", tol::kLogMaxAltitude, ("an altitude in " + altitudeRange()).c_str());
-    log.has_geodetic_origin = true;
-    for (const char* k : {"origin_lat_deg", "origin_lon_deg", "origin_alt_m"}) log.metadata.erase(k);
-  }
-  if (log.samples.size() < 2) {
-    throw std::runtime_error(source + ":" + std::to_string(line_no) + ": the log has " +
-                             std::to_string(log.samples.size()) + " sample(s), at least 2 are needed");
-  }
-  deriveKinematics(log, !have_vel, !have_acc, d);
-  // Finite inputs can still give non-finite derivatives (positions near 1e308, time steps of
-  // 1e-320 s); every later sum would turn NaN silently, so name the first such row.
+  log.origin_lat_deg = origin("origin_lat_deg", 90.0, "a latitude in -90..90 degrees");
+  log.origin_lon_deg = origin("origin_lon_deg", 180.0, "a longitude in -180..180 degrees");
+  log.origin_alt_m = origin("origin_alt_m", tol::kLogMaxAltitude, "an altitude in " + altitudeRange());
+  log.has_geodetic_origin = true;
+  for (const char* k : {"origin_lat_deg", "origin_lon_deg", "origin_alt_m"}) log.metadata.erase(k);
+}
+
+/// Finite inputs can still give non-finite or huge derivatives (positions near 1e308, time steps of
+/// 1e-320 s); every later sum would turn NaN silently, so name the first such row.
+void checkDerivatives(const FlightLog& log, const std::string& source, const std::vector<size_t>& row_lines) {
   for (size_t i = 0; i < log.samples.size(); ++i) {
     const auto& x = log.samples[i];
     if (!x.velocity.allFinite() || !x.acceleration.allFinite()) {
@@ -369,6 +375,58 @@ FlightLog parseCsvLog(const std::string& text_in, const std::string& source, con
                fmt(tol::kLogMaxMagnitude) + " (check for position jumps or near-zero time steps)");
     }
   }
+}
+
+}  // namespace
+
+FlightLog parseCsvLog(const std::string& text_in, const std::string& source, const DerivativeSettings& d) {
+  FlightLog log;
+  log.source = source;
+  log.format = "csv";
+  std::string_view text(text_in);
+  if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
+      static_cast<unsigned char>(text[2]) == 0xBF) {
+    text.remove_prefix(3);
+  }
+  CsvLogReader reader(log, source);
+  std::vector<size_t> row_lines;  // each sample's line, for the messages about derivatives
+  size_t line_no = 0;
+  size_t pos = 0;
+  while (pos <= text.size()) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string line(text.substr(pos, end - pos));
+    pos = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (trim(line).empty()) {
+      if (pos > text.size()) break;
+      continue;  // blank line: not a row
+    }
+    if (!reader.hasHeader()) {
+      if (line[0] == '#') {  // "# key: value" metadata before the header
+        const std::string body = trim(line.substr(1));
+        const size_t colon = body.find(':');
+        if (colon != std::string::npos) log.metadata[trim(body.substr(0, colon))] = trim(body.substr(colon + 1));
+        continue;
+      }
+      reader.readHeader(line, line_no);
+      continue;
+    }
+    if (line[0] == '#') {
+      fail(source, line_no, "comment line after the header; comments ('# key: value') must come before the header");
+    }
+    row_lines.push_back(line_no);
+    reader.addRow(line_no, splitCommas(line));
+  }
+  if (!reader.hasHeader()) throw std::runtime_error(source + ":" + std::to_string(line_no) + ": no header row found");
+  if (reader.local()) readGeodeticOrigin(log, source, reader.headerLine());
+  if (log.samples.size() < 2) {
+    throw std::runtime_error(source + ":" + std::to_string(line_no) + ": the log has " +
+                             std::to_string(log.samples.size()) + " sample(s), at least 2 are needed");
+  }
+  deriveKinematics(log, !reader.haveVelocity(), !reader.haveAcceleration(), d);
+  checkDerivatives(log, source, row_lines);
   return log;
 }
 
