@@ -1,5 +1,7 @@
 #include "wattswath/calibration/mission_calibration.hpp"
 
+#include <filesystem>
+#include <iomanip>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -118,6 +120,32 @@ std::vector<double> nelderMead(F cost, std::vector<double> x0, int max_evals) {
     }
   }
   return pts[std::min_element(val.begin(), val.end()) - val.begin()];
+}
+
+// The minimum of `cost` on [0, 1]: the best of a grid of `grid` + 1 points, refined by a
+// golden-section search of `iters` steps between its neighbours (a time misfit is not unimodal:
+// waypoint passages move in steps).
+template <class F>
+double gridThenGolden(F cost, int grid, int iters) {
+  int best = 0;
+  double fbest = 1e300;
+  for (int i = 0; i <= grid; ++i) {
+    const double f = cost(static_cast<double>(i) / grid);
+    if (f < fbest) fbest = f, best = i;
+  }
+  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = std::max(0, best - 1) / static_cast<double>(grid), b = std::min(grid, best + 1) / static_cast<double>(grid);
+  double c = b - r * (b - a), d = a + r * (b - a);
+  double fc = cost(c), fd = cost(d);
+  for (int i = 0; i < iters; ++i) {
+    if (fc < fd) {
+      b = d, d = c, fd = fc, c = b - r * (b - a), fc = cost(c);
+    } else {
+      a = c, c = d, fc = fd, d = a + r * (b - a), fd = cost(d);
+    }
+  }
+  const double u = fc < fd ? c : d;
+  return std::min(fc, fd) <= fbest ? u : static_cast<double>(best) / grid;
 }
 
 // The measured side of a flight, computed once.
@@ -299,6 +327,49 @@ FlightComparison compareFlight(const MissionFlight& f, const energy::Vehicle& v,
   return compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints));
 }
 
+namespace {
+
+// Each flight's own value of the acceleration parameter `acc` (x[0]), the other parameters kept at
+// `x` (x[0] is the joint value): when the flights want values more than 25 % apart, one set of
+// parameters does not describe them all, and the note says so (changed settings, or a behaviour the
+// model lacks).
+template <class Cost>
+void checkAgreement(const std::vector<Prepared>& prepared, const FreeParameter& acc, const std::vector<double>& x,
+                    Cost flightCost, CalibrationResult& r) {
+  r.acceleration_parameter = acc.name;
+  auto num = [](double v) {
+    std::ostringstream os;
+    os << std::setprecision(3) << v;
+    return os.str();
+  };
+  double lo = 1e300, hi = -1e300;
+  std::ostringstream each;
+  for (const auto& p : prepared) {
+    std::vector<double> xf = x;
+    xf[0] = gridThenGolden([&](double u) { xf[0] = u; return flightCost(xf, p); }, 45, 15);
+    FlightAcceleration fa;
+    fa.flight = std::filesystem::path(p.flight->name).filename().string();
+    fa.value = acc.lo + xf[0] * (acc.hi - acc.lo);
+    fa.misfit_alone = flightCost(xf, p);
+    fa.misfit_joint = flightCost(x, p);
+    lo = std::min(lo, fa.value), hi = std::max(hi, fa.value);
+    each << (r.per_flight.empty() ? "" : ", ") << fa.flight << " " << num(fa.value);
+    r.per_flight.push_back(fa);
+  }
+  const double joint = acc.lo + x[0] * (acc.hi - acc.lo);
+  r.fitted.push_back(acc.name + " of each flight alone: " + each.str() + " " + acc.unit + " (together " +
+                     num(joint) + ")");
+  r.flights_agree = hi <= 1.25 * lo;
+  if (!r.flights_agree) {
+    r.notes.push_back("the flights do not agree on " + acc.name + ": each alone wants " + each.str() + " " + acc.unit +
+                      ", together " + num(joint) + ". One set of parameters does not describe them all: the "
+                      "setting may have changed between flights, or the model lacks a behaviour they differ in; the logs "
+                      "cannot tell which, and a prediction of another flight may be off by this spread");
+  }
+}
+
+}  // namespace
+
 CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, const energy::Vehicle& v,
                                     const energy::EnergyModel& model, const mission::AutopilotConfig& autopilot,
                                     const CalibrationSettings& s) {
@@ -325,7 +396,8 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   for (const auto& fp : free) x0.push_back(std::clamp((autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo), 0.0, 1.0));
   x0.push_back(0.05);
   const mission::Airframe airframe = mission::airframeOfVehicle(v, v.name);  // once, not per evaluation
-  auto cost = [&](const std::vector<double>& x, int variant) {
+  // The time misfit of one flight flown with the parameters `x` and the behaviour `variant`.
+  auto flightCost = [&](const std::vector<double>& x, int variant, const Prepared& p) {
     mission::AutopilotConfig ap = autopilot;
     mission::FlightSettings fs;
     fs.dt = s.sim_dt;
@@ -333,15 +405,15 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     fs.stop_at_waypoints = variant & 1;
     fs.speed_change_late = variant & 2;
     apply(x, ap, fs.takeoff_delay_s);
-    double c = 0.0;
-    for (const auto& p : prepared) {
-      try {
-        const auto flown = mission::flyMission(p.steps, ap, fs);
-        c += timeCost(p.measured, predictedTimes(flown, {}, p.waypoints));
-      } catch (const std::exception&) {
-        c += 100.0;
-      }
+    try {
+      return timeCost(p.measured, predictedTimes(mission::flyMission(p.steps, ap, fs), {}, p.waypoints));
+    } catch (const std::exception&) {
+      return 100.0;
     }
+  };
+  auto cost = [&](const std::vector<double>& x, int variant) {
+    double c = 0.0;
+    for (const auto& p : prepared) c += flightCost(x, variant, p);
     return c;
   };
   // Corner and speed-change behaviour: the autopilot's own rules, a stop at every waypoint, speed
@@ -374,6 +446,16 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     r.fitted.push_back(os.str());
   }
   r.fitted.push_back("take-off delay: " + std::to_string(r.takeoff_delay_s) + " s from the take-off command to lift-off");
+  if (prepared.size() >= 2 && !free.empty()) {
+    // The other behaviour parameters at their starting values (fitted jointly they would absorb the
+    // flights' differences), the take-off delay at the joint fit.
+    std::vector<double> base = x0;
+    base.back() = x.back();
+    base.front() = x.front();
+    checkAgreement(prepared, free.front(), base, [&](const std::vector<double>& xf, const Prepared& p) {
+      return flightCost(xf, chosen, p);
+    }, r);
+  }
   // Energy: the model's coefficients fitted to the logged power on the logged kinematics.
   if (s.fit_energy) {
     std::vector<PreparedLog> logs;
@@ -412,6 +494,7 @@ std::string calibrationToJson(const CalibrationResult& r) {
     for (const auto& c : e->coefficients()) j["coefficients"][e->name()][c.name] = c.value;
   j["fitted"] = r.fitted;
   j["notes"] = r.notes;
+  j["flights_agree"] = r.flights_agree;
   for (const auto& f : r.after) j["flights"].push_back(f.name);
   return j.dump();
 }

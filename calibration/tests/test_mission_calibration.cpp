@@ -5,7 +5,13 @@
 
 #include <cmath>
 
+#include "test_util.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/mission/flight.hpp"
+#include "wattswath/energy/vehicle.hpp"
+#include "wattswath/mission/files.hpp"
+#include "wattswath/mission/predict.hpp"
 
 using namespace wattswath::calibration;
 
@@ -62,4 +68,74 @@ TEST(MissionCalibration, WaypointTheTrackNeverComesNearIsNotMatched) {
   EXPECT_TRUE(std::isnan(ft.leg_s[0]));
   EXPECT_TRUE(std::isnan(ft.leg_s[1]));
   EXPECT_NEAR(ft.leg_s[2], 20.0, 0.11);  // the matched neighbours still give their leg
+}
+
+namespace {
+
+// A 100 m square of fast waypoints at 6 m/s, 10 m up, near Pisa, then RTL.
+const char* kSquare =
+    "QGC WPL 110\n"
+    "0\t1\t0\t16\t0\t0\t0\t0\t43.7159500\t10.4613000\t0\t1\n"
+    "1\t0\t3\t22\t0\t0\t0\t0\t43.7159500\t10.4613000\t10\t1\n"
+    "2\t0\t2\t178\t1\t6\t-1\t0\t0\t0\t0\t1\n"
+    "3\t0\t3\t16\t0\t0\t0\t0\t43.7168500\t10.4613000\t10\t1\n"
+    "4\t0\t3\t16\t0\t0\t0\t0\t43.7168500\t10.4625430\t10\t1\n"
+    "5\t0\t3\t16\t0\t0\t0\t0\t43.7159500\t10.4625430\t10\t1\n"
+    "6\t0\t3\t16\t0\t0\t0\t0\t43.7159500\t10.4613000\t10\t1\n"
+    "7\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+
+// The square flown by the ArduCopter 3.x model with WPNAV_ACCEL `accel` [cm/s/s], as a log of
+// constant 200 W from the take-off command to the end: what a vehicle set up that way would log.
+MissionFlight flownSquare(const std::string& name, double accel, const wattswath::energy::Vehicle& v) {
+  namespace ms = wattswath::mission;
+  MissionFlight f;
+  f.name = name;
+  f.mission = ms::parseQgcWpl(kSquare, name);
+  ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, v.name);  // ArduCopter 3.x, the leash model
+  ap.parameters["WPNAV_ACCEL"] = accel;
+  ms::FlightSettings fs;
+  fs.dt = 0.02;
+  fs.airframe = ms::airframeOfVehicle(v, v.name);
+  const auto flown = ms::flyMission(ms::sequenceMission(f.mission), ap, fs);
+  for (const auto& s : flown.samples) {
+    wattswath::logs::LogSample l;
+    l.t = s.t;
+    l.position = s.position;
+    l.velocity = s.velocity;
+    l.voltage = 12.0;
+    l.current = 200.0 / 12.0;
+    l.power = 200.0;
+    f.log.samples.push_back(l);
+  }
+  f.log.source = name;
+  return f;
+}
+
+}  // namespace
+
+TEST(MissionCalibration, FlightsSetUpWithDifferentAccelerationsAreToldApartAndSaidToDisagree) {
+  // Two logs of one mission flown with WPNAV_ACCEL 60 and 200 cm/s/s: each flight alone wants its
+  // own value, and the calibration says the flights do not agree instead of only printing the
+  // compromise. Two flights flown alike agree.
+  const auto v = wattswath::energy::loadVehicle(wattswath::test::sourcePath("data/vehicles/iris-plus-arducopter3.json"));
+  const auto model = wattswath::energy::buildModel(v, {"hover"});
+  const auto ap = wattswath::mission::parseAutopilot(v.autopilot_json, v.name);
+  CalibrationSettings cs;
+  cs.max_evaluations = 40;
+  cs.fit_energy = false;
+  const auto apart = calibrateMissions({flownSquare("slow.csv", 60, v), flownSquare("quick.csv", 200, v)}, v, model, ap, cs);
+  ASSERT_EQ(apart.per_flight.size(), 2u);
+  EXPECT_EQ(apart.acceleration_parameter, "WPNAV_ACCEL");
+  EXPECT_NEAR(apart.per_flight[0].value, 60.0, 12.0);
+  // The quick flight cuts its corners: the track alignment (built for GPS offsets) moves it by
+  // 0.4 m and its passages with it, so its own value comes out near 140, still far from the slow one.
+  EXPECT_GT(apart.per_flight[1].value, 1.8 * apart.per_flight[0].value);
+  EXPECT_FALSE(apart.flights_agree);
+  bool said = false;
+  for (const auto& n : apart.notes) said = said || n.find("the flights do not agree on WPNAV_ACCEL") != std::string::npos;
+  EXPECT_TRUE(said);
+  const auto alike = calibrateMissions({flownSquare("a.csv", 100, v), flownSquare("b.csv", 100, v)}, v, model, ap, cs);
+  EXPECT_TRUE(alike.flights_agree);
+  ASSERT_EQ(alike.per_flight.size(), 2u);
+  EXPECT_NEAR(alike.per_flight[0].value, alike.per_flight[1].value, 0.1 * alike.per_flight[1].value);
 }

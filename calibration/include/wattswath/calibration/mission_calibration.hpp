@@ -80,6 +80,16 @@ struct CalibrationSettings {
   bool fit_energy = true;        ///< false: keep the model's coefficients
 };
 
+/// One flight's own value of the acceleration parameter (WPNAV_ACCEL, MPC_ACC_HOR), the other
+/// behaviour parameters kept at their starting values (the take-off delay at the joint fit): whether
+/// the flights agree on how the vehicle accelerates.
+struct FlightAcceleration {
+  std::string flight;            ///< the flight's name (its log)
+  double value = 0.0;            ///< the parameter fitted on this flight alone [its unit]
+  double misfit_alone = 0.0;     ///< [-] the flight's time misfit with its own value
+  double misfit_joint = 0.0;     ///< [-] the flight's time misfit with the joint value (others as above)
+};
+
 /// A calibrated autopilot and energy model, with the errors before and after.
 struct CalibrationResult {
   mission::AutopilotConfig autopilot;     ///< with the fitted parameters written in
@@ -91,6 +101,9 @@ struct CalibrationResult {
   std::vector<FlightComparison> before;   ///< per flight, uncalibrated
   std::vector<FlightComparison> after;    ///< per flight, calibrated
   std::vector<std::string> notes;         ///< what could not be determined, and why
+  std::string acceleration_parameter;     ///< the acceleration parameter of per_flight (empty: one flight)
+  std::vector<FlightAcceleration> per_flight;  ///< each flight's own acceleration (two flights or more)
+  bool flights_agree = true;              ///< false when their own accelerations differ by more than 25 %
 };
 
 /// Calibrates on `flights`. Throws std::invalid_argument when there is no flight or a log has no
