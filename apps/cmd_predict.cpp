@@ -25,6 +25,7 @@ namespace ms = wattswath::mission;
 struct PredictOptions {
   std::string mission, vehicle, effects, samples_out, report, report_svg;
   double reserve_pct = 25.0;
+  double energy_margin_pct = 10.0;
   bool json = false, lenient = false, force = false;
 };
 
@@ -57,6 +58,11 @@ report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::Autop
   if (p.battery.known) {
     d.facts.push_back({"battery at landing", report::formatNumber(100.0 * p.battery.usable_left_end, 1) + " % usable left (reserve " +
                                                  report::formatNumber(o.reserve_pct, 0) + " %)"});
+    if (p.battery.energy_margin > 0.0) {
+      d.facts.push_back({"with " + report::formatNumber(100.0 * p.battery.energy_margin, 0) + " % more energy",
+                         report::formatNumber(100.0 * p.battery.usable_left_end_with_margin, 1) +
+                             " % usable left (the prediction's error margin, --energy-margin)"});
+    }
   }
   for (const auto& w : p.warnings) d.facts.push_back({"note", w});
   return report::missionReport(d);
@@ -87,6 +93,9 @@ nlohmann::json toJson(const ms::MissionPrediction& p, const ms::AutopilotConfig&
                     {"usable_left_at_landing", p.battery.usable_left_end},
                     {"reserve_fraction", p.battery.reserve_fraction},
                     {"fits", p.battery.fits},
+                    {"energy_margin", p.battery.energy_margin},
+                    {"usable_left_at_landing_with_margin", p.battery.usable_left_end_with_margin},
+                    {"fits_with_margin", p.battery.fits_with_margin},
                     {"depleted", p.battery.depleted},
                     {"verdict", p.battery.verdict}};
     if (p.battery.depleted) j["battery"]["depleted_at_s"] = p.battery.depleted_at_s;
@@ -138,6 +147,11 @@ void registerPredictCommand(CLI::App& app) {
                   "Comma-separated effects of the energy model (default: the vehicle file's calibration when it has one, "
                   "else hover,kinetic,parasitic_drag from its physics)");
   cmd->add_option("--reserve", o->reserve_pct, "Usable charge to keep on landing [%]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  cmd->add_option("--energy-margin", o->energy_margin_pct,
+                  "Extra energy the reserve verdict also checks, for the prediction's own error [%] (uncalibrated "
+                  "predictions of real flights were off by up to 9 %: docs/validation.md; 0: none)")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
   cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
   cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
   addReportOptions(cmd, o->report, o->report_svg, o->force);
@@ -146,7 +160,8 @@ void registerPredictCommand(CLI::App& app) {
     if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, {o->mission, o->vehicle});
     checkReportWritable(o->report, o->report_svg, o->force, {o->mission, o->vehicle, o->samples_out});
     const en::Vehicle v = en::loadVehicle(o->vehicle);
-    const PredictionSetup setup = predictionSetup(v, o->vehicle, o->effects, o->reserve_pct);
+    PredictionSetup setup = predictionSetup(v, o->vehicle, o->effects, o->reserve_pct);
+    setup.settings.energy_margin = o->energy_margin_pct / 100.0;
     const en::EnergyModel& model = setup.model;
     const bool use_calibration = setup.calibrated;
     const ms::AutopilotConfig& ap = setup.autopilot;

@@ -44,6 +44,28 @@ TEST(CliPredict, SurveyPlanGivesTheJsonContractAndABatteryVerdict) {
   EXPECT_EQ(j["autopilot"]["model"], "arducopter-leash");
 }
 
+TEST(CliPredict, AReserveWithinThePredictionsErrorIsTooCloseToCall) {
+  // The verdict also checks the energy with --energy-margin (default 10 %) more: a landing charge
+  // that keeps the reserve only as predicted is "too close to call", not "Fits".
+  const std::string base = "predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
+                           sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --json";
+  const json j = runJson(base);
+  const auto& b = j["battery"];
+  EXPECT_NEAR(b["energy_margin"].get<double>(), 0.10, 1e-12);
+  const double left = b["usable_left_at_landing"].get<double>(), with = b["usable_left_at_landing_with_margin"].get<double>();
+  ASSERT_GT(left - with, 0.01);  // more energy, less charge left
+  EXPECT_EQ(b["verdict"].get<std::string>().rfind("Fits: ", 0), 0u) << b["verdict"];
+  // A reserve between the two landing charges: kept as predicted, not with the margin.
+  const std::string reserve = std::to_string(100.0 * 0.5 * (left + with));
+  const json close = runJson(base + " --reserve " + reserve);
+  EXPECT_TRUE(close["battery"]["fits"].get<bool>());
+  EXPECT_FALSE(close["battery"]["fits_with_margin"].get<bool>());
+  EXPECT_EQ(close["battery"]["verdict"].get<std::string>().rfind("Too close to call: ", 0), 0u) << close["battery"]["verdict"];
+  // Without a margin the same reserve fits.
+  const json none = runJson(base + " --reserve " + reserve + " --energy-margin 0");
+  EXPECT_EQ(none["battery"]["verdict"].get<std::string>().rfind("Fits: ", 0), 0u) << none["battery"]["verdict"];
+}
+
 TEST(CliPredict, VehicleWithoutBatterySaysSoInsteadOfANumber) {
   const json j = runJson("predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
                          sourcePath("tests/data/iris-no-battery.json") + " --json");

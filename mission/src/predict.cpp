@@ -7,17 +7,55 @@
 namespace wattswath::mission {
 namespace {
 
+// The usable charge left at landing (0 when the cut-off is reached) of `profile` with its power
+// scaled by `scale`, and the discharge it came from.
+energy::EnduranceResult discharge(const energy::Battery& b, std::vector<energy::PowerStep> profile, double scale) {
+  for (auto& step : profile) step.power_w *= scale;
+  energy::DischargeSettings ds;
+  ds.dt_s = 1.0;
+  return energy::simulateProfile(b, profile, ds);
+}
+
+double usableLeft(const energy::Battery& b, const energy::EnduranceResult& r) {
+  const double left = (r.final_residual_ah - energy::cutoffResidualAh(b)) / (b.pack.usable_fraction * b.capacityAh());
+  return r.depleted ? 0.0 : std::min(left, 1.0);
+}
+
+// One plain sentence on the reserve, with and without the margin for the prediction's error.
+std::string verdictText(const BatteryPrediction& out, double endurance_s) {
+  std::ostringstream v;
+  v.precision(3);
+  const double margin_pct = 100.0 * out.energy_margin;
+  if (out.depleted) {
+    v << "Does not fit: the battery reaches its cut-off " << endurance_s << " s into the flight.";
+  } else if (!out.fits) {
+    v << "Fits, but lands with " << 100.0 * out.usable_left_end << " % of the usable charge, below the "
+      << 100.0 * out.reserve_fraction << " % reserve.";
+  } else if (out.energy_margin <= 0.0) {
+    v << "Fits: lands with " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
+      << 100.0 * out.reserve_fraction << " %).";
+  } else if (!out.fits_with_margin) {
+    v << "Too close to call: as predicted it lands with " << 100.0 * out.usable_left_end
+      << " % of the usable charge (reserve " << 100.0 * out.reserve_fraction << " %), but with " << margin_pct
+      << " % more energy (the prediction's error margin, --energy-margin) only " << 100.0 * out.usable_left_end_with_margin
+      << " %. Shorten the mission, or calibrate the model on your own logs (wattswath calibrate).";
+  } else {
+    v << "Fits: lands with " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
+      << 100.0 * out.reserve_fraction << " %), " << 100.0 * out.usable_left_end_with_margin << " % with " << margin_pct
+      << " % more energy for the prediction's error.";
+  }
+  return v.str();
+}
+
 void batteryAlong(const energy::Battery& b, const FlightPieces& fp, const std::vector<double>& e, double reserve,
-                  BatteryPrediction& out) {
+                  double margin, BatteryPrediction& out) {
   std::vector<energy::PowerStep> profile;
   profile.reserve(fp.pieces.size());
   for (std::size_t i = 0; i < fp.pieces.size(); ++i) {
     const double d = fp.pieces[i].duration;
     profile.push_back({d, d > 0.0 ? std::max(0.0, e[i] / d) : 0.0});
   }
-  energy::DischargeSettings ds;
-  ds.dt_s = 1.0;
-  const energy::EnduranceResult r = energy::simulateProfile(b, profile, ds);
+  const energy::EnduranceResult r = discharge(b, profile, 1.0);
   out.known = true;
   out.reserve_fraction = reserve;
   for (const auto& smp : r.series) {
@@ -27,21 +65,13 @@ void batteryAlong(const energy::Battery& b, const FlightPieces& fp, const std::v
   }
   out.depleted = r.depleted;
   out.depleted_at_s = r.depleted ? r.endurance_s : 0.0;
-  const double left = (r.final_residual_ah - energy::cutoffResidualAh(b)) / (b.pack.usable_fraction * b.capacityAh());
-  out.usable_left_end = r.depleted ? 0.0 : std::min(left, 1.0);
+  out.usable_left_end = usableLeft(b, r);
   out.fits = !r.depleted && out.usable_left_end >= reserve;
-  std::ostringstream v;
-  v.precision(3);
-  if (r.depleted) {
-    v << "Does not fit: the battery reaches its cut-off " << r.endurance_s << " s into the flight.";
-  } else if (!out.fits) {
-    v << "Fits, but lands with " << 100.0 * out.usable_left_end << " % of the usable charge, below the "
-      << 100.0 * reserve << " % reserve.";
-  } else {
-    v << "Fits: lands with " << 100.0 * out.usable_left_end << " % of the usable charge (reserve " << 100.0 * reserve
-      << " %).";
-  }
-  out.verdict = v.str();
+  out.energy_margin = margin;
+  const energy::EnduranceResult rm = margin > 0.0 ? discharge(b, profile, 1.0 + margin) : r;
+  out.usable_left_end_with_margin = usableLeft(b, rm);
+  out.fits_with_margin = !rm.depleted && out.usable_left_end_with_margin >= reserve;
+  out.verdict = verdictText(out, r.endurance_s);
 }
 
 }  // namespace
@@ -50,6 +80,9 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
                                  const AutopilotConfig& autopilot, const PredictSettings& s) {
   if (!(s.reserve_fraction >= 0.0 && s.reserve_fraction <= 0.9)) {
     throw std::invalid_argument("reserve fraction " + std::to_string(s.reserve_fraction) + ", expected 0..0.9");
+  }
+  if (!(s.energy_margin >= 0.0 && s.energy_margin <= 1.0)) {
+    throw std::invalid_argument("energy margin " + std::to_string(s.energy_margin) + ", expected 0..1");
   }
   MissionPrediction p;
   p.warnings = m.warnings;
@@ -86,7 +119,7 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   p.breakdown.time = p.total.time_s;
   p.breakdown.length = p.total.distance_m;
   for (const std::string& n : p.flight.notes) p.warnings.push_back(n);
-  if (v.battery) batteryAlong(*v.battery, p.pieces, p.piece_energy_j, s.reserve_fraction, p.battery);
+  if (v.battery) batteryAlong(*v.battery, p.pieces, p.piece_energy_j, s.reserve_fraction, s.energy_margin, p.battery);
   return p;
 }
 

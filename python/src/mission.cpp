@@ -20,7 +20,9 @@ py::dict batteryDict(const ms::BatteryPrediction& b) {
                   py::arg("reserve_fraction") = b.reserve_fraction, py::arg("fits") = b.fits,
                   py::arg("depleted") = b.depleted, py::arg("depleted_at_s") = b.depleted_at_s,
                   py::arg("t_s") = toArray(b.t_s), py::arg("usable_left") = toArray(b.usable_left),
-                  py::arg("voltage_v") = toArray(b.voltage_v), py::arg("verdict") = b.verdict);
+                  py::arg("voltage_v") = toArray(b.voltage_v), py::arg("energy_margin") = b.energy_margin,
+                  py::arg("usable_left_end_with_margin") = b.usable_left_end_with_margin,
+                  py::arg("fits_with_margin") = b.fits_with_margin, py::arg("verdict") = b.verdict);
 }
 
 py::list itemList(const std::vector<ms::ItemPrediction>& items) {
@@ -48,10 +50,11 @@ py::dict trajectoryDict(const ms::FlownMission& f) {
 
 // Predicts `m` on vehicle `v` flown by the autopilot its file describes (ArduCopter 4.5 defaults without one).
 py::dict predict(const ms::Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
-                 double reserve_fraction) {
+                 double reserve_fraction, double energy_margin) {
   const ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, v.name);
   ms::PredictSettings s;
   s.reserve_fraction = reserve_fraction;
+  s.energy_margin = energy_margin;
   const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, s);
   py::dict phases;
   for (int i = 0; i < ms::kFlightPhaseCount; ++i)
@@ -101,10 +104,11 @@ void bindMission(py::module_& m) {
         "Reads a .plan (QGroundControl JSON) or .waypoints (QGC WPL 110) mission; lenient turns an unsupported "
         "command into a warning. RuntimeError names the item and field.");
   m.def("predict_mission", &predict, py::arg("mission"), py::arg("vehicle"), py::arg("model"),
-        py::arg("reserve_fraction") = 0.25,
+        py::arg("reserve_fraction") = 0.25, py::arg("energy_margin") = 0.10,
         "Predicts the mission flown by the vehicle's autopilot model (its file's 'autopilot', else ArduCopter 4.5) "
         "from take-off command to landing: dict energy_j, time_s, distance_m, phases, items, breakdown, battery, "
-        "trajectory {t [s], position N x 3 [m], velocity N x 3 [m/s], step, phase}, warnings.");
+        "trajectory {t [s], position N x 3 [m], velocity N x 3 [m/s], step, phase}, warnings. The battery verdict "
+        "also checks energy_margin [-] more energy for the prediction's own error.");
 }
 
 }  // namespace wattswath::python

@@ -20,6 +20,9 @@ namespace wattswath::mission {
 struct PredictSettings {
   FlightSettings flight;           ///< simulation settings of the behaviour model
   double reserve_fraction = 0.25;  ///< [-] share of the usable charge to keep on landing; 0..0.9
+  /// [-] extra energy the reserve verdict also checks, for the prediction's own error (0..1): the
+  /// uncalibrated predictions of real flights in docs/validation.md are off by up to 9 %
+  double energy_margin = 0.10;
   /// true: flight.airframe is taken from the vehicle (airframeOfVehicle); false: as given
   bool airframe_from_vehicle = true;
 };
@@ -54,6 +57,9 @@ struct BatteryPrediction {
   double usable_left_end = 0.0;    ///< [-] usable charge left on landing (1 full, 0 cut-off)
   double reserve_fraction = 0.0;   ///< [-] reserve asked for
   bool fits = false;               ///< true when the landing leaves at least the reserve
+  double energy_margin = 0.0;      ///< [-] extra energy checked for the prediction's error
+  double usable_left_end_with_margin = 0.0;  ///< [-] usable charge left on landing with that extra energy
+  bool fits_with_margin = false;   ///< true when the reserve is kept with the extra energy too
   bool depleted = false;           ///< true when the cut-off is reached in flight
   double depleted_at_s = 0.0;      ///< [s] when the cut-off is reached (depleted only)
   std::vector<double> t_s;         ///< [s] times of the state-of-charge samples
