@@ -1,4 +1,5 @@
 #include "cli.hpp"
+#include "output_journal.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -249,6 +250,12 @@ OutputSet::OutputSet(const std::string& dir) : dir_(dir) {
                                "for it to finish or choose another output folder");
     throw std::runtime_error(dir + ": cannot lock the output folder (" + std::strerror(err) + ")");
   }
+  // A commit of an earlier run cut short by a crash is completed first (its journal says which files).
+  const int completed = completeInterruptedCommit(dir);
+  if (completed > 0) {
+    progress(dir + ": completed the interrupted commit of an earlier run (" + std::to_string(completed) +
+             " file(s) renamed into place from its journal " + kCommitJournal + ")");
+  }
   previous_ = g_output_set;
   g_output_set = this;
   guard_ = std::shared_ptr<void>(new TemporaryGuard, [](void* g) { delete static_cast<TemporaryGuard*>(g); });
@@ -268,18 +275,42 @@ OutputSet::~OutputSet() {
 void OutputSet::stage(const std::string& tmp, const std::string& target, int slot) { staged_.push_back({tmp, target, slot}); }
 
 void OutputSet::commit() {
+  namespace fs = std::filesystem;
   std::error_code ec;
+  // The files inside the folder are listed in its journal (flushed) before they are renamed, so a
+  // crash midway is completed by the next run; files elsewhere (a --report path) go first.
+  const fs::path dir = fs::absolute(dir_, ec);
+  std::vector<std::pair<std::string, std::string>> journaled;
+  std::vector<Staged> order;
+  for (const auto& f : staged_) {
+    const fs::path t = fs::absolute(f.target, ec), tmp = fs::absolute(f.tmp, ec);
+    if (t.parent_path() == dir && tmp.parent_path() == dir) {
+      journaled.emplace_back(tmp.filename().string(), t.filename().string());
+    } else {
+      order.push_back(f);
+    }
+  }
+  for (const auto& f : staged_) {
+    const fs::path t = fs::absolute(f.target, ec), tmp = fs::absolute(f.tmp, ec);
+    if (t.parent_path() == dir && tmp.parent_path() == dir) order.push_back(f);
+  }
+  staged_ = order;
+  const std::size_t first_journaled = staged_.size() - journaled.size();
   for (std::size_t k = 0; k < staged_.size(); ++k) {
+    if (k == first_journaled && !journaled.empty()) writeCommitJournal(dir_, journaled);
     std::filesystem::rename(staged_[k].tmp, staged_[k].target, ec);
     if (ec) {
       const std::string msg = staged_[k].target + ": write failed (cannot rename " + staged_[k].tmp + " into place: " +
                               ec.message() + "); " + std::to_string(k) + " of the " + std::to_string(staged_.size()) +
                               " files of this run were already in place";
       staged_.erase(staged_.begin(), staged_.begin() + static_cast<long>(k));
+      removeCommitJournal(dir_);
       throw std::runtime_error(msg);
     }
     untrackTemporary(staged_[k].slot);
   }
+  syncFolder(dir_);
+  removeCommitJournal(dir_);
   staged_.clear();
 }
 

@@ -318,4 +318,33 @@ TEST_F(OutputSafety, PlanIntoAFolderAnotherRunHoldsIsRefused) {
   EXPECT_FALSE(fs::exists(path("mission.plan")));
 }
 
+// Issue 20 follow-up: the output set used to be committed by renaming its files one after another,
+// so a power cut between two renames left part of one run's files beside part of another's. The
+// files are now listed in the folder's journal (.wattswath-commit, flushed) before the renames; the
+// next run into the folder completes an interrupted commit before anything else.
+TEST_F(OutputSafety, PlanCompletesTheCommitAnEarlierRunLeftHalfDone) {
+  const std::string area = wattswath::test::sourcePath("data/areas/espiral_rectangle.geojson");
+  Outcome r = runCli({"plan", area, "--vehicle", kVehicle, "--spacing", "20", "--out", dir_.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(path(".wattswath-commit")));  // a finished commit leaves no journal
+  // As a crash would leave it: the journal, one temporary still to rename, one already renamed,
+  // and entries that are not this program's temporaries (left alone).
+  write("notes.txt", "old\n");
+  write("notes.txt.tmp.0123456789abcdef", "new\n");
+  write("other.txt", "untouched\n");
+  write(".wattswath-commit",
+        "# wattswath: files of an interrupted run\n"
+        "notes.txt.tmp.0123456789abcdef\tnotes.txt\n"
+        "legs.csv.tmp.00000000000000aa\tlegs.csv\n"
+        "other.txt\tnotes.txt\n"
+        "../other.txt.tmp.0123456789abcdef\t../other.txt\n");
+  r = runCli({"plan", area, "--vehicle", kVehicle, "--spacing", "20", "--out", dir_.string(), "--force"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("completed the interrupted commit of an earlier run (1 file(s)"), std::string::npos) << r.err;
+  EXPECT_EQ(readAll(path("notes.txt")), "new\n");
+  EXPECT_EQ(readAll(path("other.txt")), "untouched\n");
+  EXPECT_FALSE(fs::exists(path(".wattswath-commit")));
+  EXPECT_FALSE(temporaryLeft());
+}
+
 }  // namespace
