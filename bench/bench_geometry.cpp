@@ -1,13 +1,15 @@
 // Geometry benchmarks: boustrophedon decomposition and candidate generation (boustrophedon at one
 // angle, all cells, and spiral) for the real IRIS survey area with its no-fly zone and for a
 // synthetic 100 ha field with 10 holes. Baseline in the same run: the same 100 ha field without
-// holes; and reading the bundled area files. Run: build/bin/bench_geometry (docs/performance.md, section "Geometry").
+// holes; and reading the bundled area files. Route checks on a 1,200-vertex star: the plain loops
+// (Baseline) against the ring's R-tree. Run: build/bin/bench_geometry (docs/performance.md, section "Geometry").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <random>
 #include <string>
 
+#include "ring_index.hpp"  // geometry/src: the internal index, against the plain loops
 #include "wattswath/geometry/check.hpp"
 #include "wattswath/geometry/coverage.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -83,6 +85,41 @@ BENCHMARK(BM_Decompose_Field100ha_10Holes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Candidates_Field100ha_NoHoles_Baseline)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Candidates_Field100ha_10Holes)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CoverageCheck_Field100ha_10Holes)->Unit(benchmark::kMillisecond);
+
+// Transit routes on a 1,200-vertex star (the issue-20 case after repairs): every visibility check
+// against the outer ring, as the plain loops answer it (Baseline) and through the ring's R-tree.
+g::PolygonWithHoles star() {
+  g::PolygonWithHoles a;
+  const int n = 1200;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * M_PI * i / n, r = 300.0 + 20.0 * std::sin(7.0 * t) + (i % 2 ? 2.0 : 0.0);
+    a.outer.emplace_back(r * std::cos(t), r * std::sin(t));
+  }
+  return a;
+}
+std::vector<std::pair<g::Point, g::Point>> chords() {
+  std::vector<std::pair<g::Point, g::Point>> c;
+  for (int k = 0; k < 64; ++k) {
+    const double t = 2.0 * M_PI * k / 64;
+    c.push_back({g::Point(270.0 * std::cos(t), 270.0 * std::sin(t)), g::Point(-270.0 * std::cos(t + 0.9), -270.0 * std::sin(t + 0.9))});
+  }
+  return c;
+}
+void BM_SegmentLeavesArea_Star1200_Baseline(benchmark::State& st) {
+  const auto a = star();
+  const auto c = chords();
+  for (auto _ : st)
+    for (const auto& [p, q] : c) benchmark::DoNotOptimize(g::segmentLeavesArea(a, p, q));
+}
+void BM_SegmentLeavesArea_Star1200_Indexed(benchmark::State& st) {
+  const auto a = star();
+  const auto c = chords();
+  const g::detail::RingIndex index(a.outer);
+  for (auto _ : st)
+    for (const auto& [p, q] : c) benchmark::DoNotOptimize(g::detail::segmentLeavesRing(index, p, q));
+}
+BENCHMARK(BM_SegmentLeavesArea_Star1200_Baseline)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SegmentLeavesArea_Star1200_Indexed)->Unit(benchmark::kMicrosecond);
 
 void BM_Decompose_IrisArea_NoFly(benchmark::State& st) { decompose(st, irisArea()); }
 void BM_Candidates_IrisArea_NoFly(benchmark::State& st) { candidates(st, irisArea()); }

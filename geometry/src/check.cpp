@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <sstream>
 
 #include "cgal_ops.hpp"
+#include "ring_index.hpp"
 #include "wattswath/geometry/tolerances.hpp"
 
 namespace wattswath::geometry {
@@ -109,8 +111,14 @@ bool segmentEntersHole(const PolygonWithHoles& area, const Point& a, const Point
 std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const Point& b) {
   const bool stay_inside = insideRing(area.outer, a) || distanceToRing(area.outer, a) <= tol::kContainment;
   const bool b_inside = insideRing(area.outer, b) || distanceToRing(area.outer, b) <= tol::kContainment;
+  // A large outer ring is indexed once for the many visibility checks (each answer as the plain loop's).
+  std::optional<detail::RingIndex> outer;
+  if (stay_inside && b_inside && area.outer.size() >= detail::kMinIndexedVertices) outer.emplace(area.outer);
+  auto leaves = [&](const Point& p, const Point& q) {
+    return outer ? detail::segmentLeavesRing(*outer, p, q) : segmentLeavesArea(area, p, q);
+  };
   auto blocked = [&](const Point& p, const Point& q) {
-    return segmentEntersHole(area, p, q) || (stay_inside && b_inside && segmentLeavesArea(area, p, q));
+    return segmentEntersHole(area, p, q) || (stay_inside && b_inside && leaves(p, q));
   };
   if (!blocked(a, b)) return {a, b};
   std::vector<Point> nodes{a, b};

@@ -4,33 +4,16 @@
 #include <cmath>
 #include <limits>
 
+#include "ring_index.hpp"
 #include "wattswath/geometry/check.hpp"
 
 namespace wattswath::geometry {
 namespace {
 
-double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Parameters in (0, 1) where segment a-b crosses or touches an edge of `ring`.
 void crossingParams(const Point& a, const Point& b, const Ring& ring, std::vector<double>& ts) {
-  const Point d = b - a;
   const size_t n = ring.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Point& p = ring[i];
-    const Point e = ring[(i + 1) % n] - p;
-    const double den = cross(d, e);
-    if (std::abs(den) <= 1e-15 * std::max(1.0, d.squaredNorm() + e.squaredNorm())) {
-      // Parallel: the ends of a collinear overlap split the segment.
-      const double l2 = d.squaredNorm();
-      if (l2 > 0.0) {
-        ts.push_back((p - a).dot(d) / l2);
-        ts.push_back((p + e - a).dot(d) / l2);
-      }
-      continue;
-    }
-    const double t = cross(p - a, e) / den, u = cross(p - a, d) / den;
-    if (u >= -1e-12 && u <= 1.0 + 1e-12) ts.push_back(t);
-  }
+  for (size_t i = 0; i < n; ++i) detail::edgeCrossing(a, b, ring[i], ring[(i + 1) % n] - ring[i], ts);
 }
 
 // Calls piece(t0, t1, middle) for each piece of segment a-b between consecutive parameters of
@@ -90,6 +73,20 @@ bool segmentLeavesArea(const PolygonWithHoles& area, const Point& a, const Point
     return !insideRing(area.outer, m) && distanceToRing(area.outer, m) > tol::kContainment;
   });
 }
+
+namespace detail {
+
+bool segmentLeavesRing(const RingIndex& outer, const Point& a, const Point& b) {
+  // segmentLeavesArea with the outer ring's questions answered by its index.
+  if ((b - a).norm() <= 0.0) return false;
+  std::vector<double> ts{0.0, 1.0};
+  outer.crossingParams(a, b, ts);
+  return forEachPiece(a, b, ts, [&](double, double, const Point& m) {
+    return !outer.inside(m) && !outer.near(m, tol::kContainment);
+  });
+}
+
+}  // namespace detail
 
 ContainmentReport checkContainment(const PolygonWithHoles& area, const CoveragePath& path, bool survey_only,
                                    double tolerance) {

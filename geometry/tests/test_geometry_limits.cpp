@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ring_index.hpp"  // geometry/src: the index is internal, tested against the plain loops here
 #include "wattswath/geometry/check.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 
@@ -101,6 +102,43 @@ TEST(RouteLimits, TheLazyRouterFindsTheShortestRouteOnAWigglyBoundary) {
     EXPECT_NEAR(len, shortestByDefinition(area, nodes), 1e-6) << "route " << k;
   }
   EXPECT_GE(routed_around, 8);  // most pairs need to go around a hole or the star's points
+}
+
+TEST(RouteLimits, TheRingIndexAnswersAsThePlainLoops) {
+  // The R-tree of a large ring's edges (ring_index.hpp) must give the plain loops' answers: inside,
+  // near, and whether a segment leaves the ring. A wiggly 3,000-vertex ring, random points and
+  // segments (fixed seed), many on or near the boundary.
+  geo::PolygonWithHoles area;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(0.0, 1.0);
+  const int N = 3000;
+  for (int i = 0; i < N; ++i) {
+    const double a = 2.0 * M_PI * i / N, r = 300.0 + 20.0 * std::sin(7.0 * a) + 3.0 * std::sin(97.0 * a) + 1.5 * jitter(rng);
+    area.outer.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  const geo::detail::RingIndex index(area.outer);
+  std::uniform_real_distribution<double> coord(-340.0, 340.0), pick(0.0, N - 1.0), off(-2.0, 2.0);
+  auto randomPoint = [&](int k) {
+    if (k % 3) return Point(coord(rng), coord(rng));
+    const Point& v = area.outer[static_cast<size_t>(pick(rng))];  // near a vertex: the hard cases
+    return Point(v.x() + off(rng), v.y() + off(rng));
+  };
+  int inside = 0, near = 0, leaves = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Point p = randomPoint(k), q = randomPoint(k + 1);
+    ASSERT_EQ(index.inside(p), geo::insideRing(area.outer, p)) << p.transpose();
+    ASSERT_EQ(index.near(p, 1.0), geo::distanceToRing(area.outer, p) <= 1.0) << p.transpose();
+    ASSERT_EQ(geo::detail::segmentLeavesRing(index, p, q), geo::segmentLeavesArea(area, p, q))
+        << p.transpose() << " -> " << q.transpose();
+    inside += index.inside(p);
+    near += index.near(p, 1.0);
+    leaves += geo::segmentLeavesArea(area, p, q);
+  }
+  // Every kind of answer occurred.
+  EXPECT_GT(inside, 300);
+  EXPECT_GT(near, 100);
+  EXPECT_GT(leaves, 300);
+  EXPECT_GT(3000 - leaves, 300);
 }
 
 }  // namespace
