@@ -16,6 +16,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kImproveRel = 1e-12;  // [-] relative improvement a local-search move must make
 constexpr int kDpMovesMaxClusters = 16;  // moves scored with re-chosen candidates up to this many clusters
+constexpr double kSkipMargin = 1e-9;     // [-] relative rounding allowance of a move's O(1) estimate
 
 
 std::vector<std::vector<int>> membersOf(const GtspInstance& g) {
@@ -101,6 +102,44 @@ GtspTour bestForOrder(const GtspInstance& g, const std::vector<std::vector<int>>
   }
   return t;
 }
+
+// O(1) estimates of the local-search moves' costs for an order whose candidates are fixed (`sel`):
+// prefix sums of the transits along the order, forwards and backwards, give a reversed run's
+// transits without walking it. The search uses them only to skip moves that cannot pass its
+// acceptance test; a move that might is scored exactly, as before, so the tour found is the same.
+struct FixedOrderEstimate {
+  const GtspInstance& g;
+  const std::vector<int>& sel;  // cluster -> chosen candidate
+  std::vector<double> fwd, bwd;  // [t]: transits node(0)..node(t) forwards / reversed
+  std::vector<int> node;         // candidate at each position of the order
+
+  void update(const std::vector<int>& order) {
+    const size_t k = order.size();
+    node.resize(k);
+    fwd.assign(k, 0.0);
+    bwd.assign(k, 0.0);
+    for (size_t t = 0; t < k; ++t) node[t] = sel[static_cast<size_t>(order[t])];
+    for (size_t t = 1; t < k; ++t) {
+      fwd[t] = fwd[t - 1] + g.transit(node[t - 1], node[t]);
+      bwd[t] = bwd[t - 1] + g.transit(node[t], node[t - 1]);
+    }
+  }
+  int depot() const { return static_cast<int>(g.cluster.size()); }
+  int at(int t) const { return t < 0 || t >= static_cast<int>(node.size()) ? depot() : node[static_cast<size_t>(t)]; }
+  /// Change of the tour's cost when positions i..j are reversed.
+  double reverse(int i, int j) const {
+    const double before = g.transit(at(i - 1), at(i)) + (fwd[j] - fwd[i]) + g.transit(at(j), at(j + 1));
+    const double after = g.transit(at(i - 1), at(j)) + (bwd[j] - bwd[i]) + g.transit(at(i), at(j + 1));
+    return after - before;
+  }
+  /// Change when the run i..i+len-1 moves to index j of the order without it (j != i).
+  double move(int i, int len, int j) const {
+    const int a = at(i), b = at(i + len - 1), p = at(i - 1), q = at(i + len);
+    auto rest = [&](int m) { return m < 0 || m >= static_cast<int>(node.size()) - len ? depot() : at(m < i ? m : m + len); };
+    const int x = rest(j - 1), y = rest(j);
+    return g.transit(p, q) - g.transit(p, a) - g.transit(b, q) + g.transit(x, a) + g.transit(b, y) - g.transit(x, y);
+  }
+};
 
 }  // namespace
 
@@ -241,15 +280,23 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
     return c + g.transit(prev, n);
   };
   // Tries 2-opt and or-opt moves of `order` scored by `score` (first improvement, restart);
-  // `exhaust` repeats until no move improves, otherwise one improvement ends the call.
-  auto search = [&](auto&& score, bool exhaust) {
+  // `exhaust` repeats until no move improves, otherwise one improvement ends the call. With
+  // `estimate` (fixed candidates) a move whose O(1) estimate cannot pass the acceptance test is
+  // skipped unscored: its exact cost would differ from the estimate by rounding only (kSkipMargin).
+  FixedOrderEstimate est{g, sel, {}, {}, {}};
+  auto search = [&](auto&& score, bool exhaust, bool estimate) {
     double best_cost = score(order);
+    if (estimate) est.update(order);
     bool any = false, improved = true;
+    auto hopeless = [&](double delta) {
+      return estimate && best_cost + delta >= best_cost * (1.0 - kImproveRel) + kSkipMargin * (1.0 + std::abs(best_cost));
+    };
     auto accept = [&]() {
       const double c = score(o);
       if (c < best_cost * (1.0 - kImproveRel)) {
         order = o;
         best_cost = c;
+        if (estimate) est.update(order);
         return true;
       }
       return false;
@@ -258,6 +305,7 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
       improved = false;
       for (int i = 0; i < k && !improved; ++i) {
         for (int j = i + 1; j < k && !improved; ++j) {  // 2-opt: reverse order[i..j]
+          if (hopeless(estimate ? est.reverse(i, j) : 0.0)) continue;
           o = order;
           std::reverse(o.begin() + i, o.begin() + j + 1);
           improved = accept();
@@ -267,6 +315,7 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
         for (int i = 0; i + len <= k && !improved; ++i) {
           for (int j = 0; j <= k - len && !improved; ++j) {
             if (j == i) continue;
+            if (hopeless(estimate ? est.move(i, len, j) : 0.0)) continue;
             rest.assign(order.begin(), order.begin() + i);
             rest.insert(rest.end(), order.begin() + i + len, order.end());
             o = rest;
@@ -283,13 +332,13 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
   };
   double cost = reselect();
   for (;;) {
-    search(fixedCost, true);
+    search(fixedCost, true, true);
     const double c = reselect();
     const bool better = c < cost * (1.0 - kImproveRel);
     cost = std::min(cost, c);
     if (better) continue;  // new candidates may open new moves
     if (k > kDpMovesMaxClusters) break;
-    if (!search([&](const std::vector<int>& ord) { return orderCost(g, members, ord, buf_a, buf_b); }, false)) break;
+    if (!search([&](const std::vector<int>& ord) { return orderCost(g, members, ord, buf_a, buf_b); }, false, false)) break;
     cost = reselect();
   }
   return bestForOrder(g, members, order);
