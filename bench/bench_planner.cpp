@@ -12,6 +12,7 @@
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/planner/coverage.hpp"
+#include "random_gtsp.hpp"  // planner/tests
 #include "wattswath/planner/order.hpp"
 
 namespace {
@@ -148,26 +149,7 @@ void BM_Field100ha_10holes_OneAngleSearch(benchmark::State& s) { run(s, field(10
 // random asymmetric GTSP of N clusters of 3 candidates, the local search alone. Scaling in N in
 // one run; the 2,000-vertex field's plan went 244 -> 26 s when moves got O(1) estimates (order.cpp).
 void BM_GtspHeuristic_Clusters(benchmark::State& st) {
-  const int clusters = static_cast<int>(st.range(0));
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(0.0, 1000.0), du(-20.0, 20.0), cu(10.0, 50.0);
-  planner::GtspInstance g;
-  std::vector<Eigen::Vector2d> entry, exit;
-  for (int c = 0; c < clusters; ++c) {
-    const Eigen::Vector2d centre(u(rng), u(rng));
-    for (int k = 0; k < 3; ++k) {
-      g.cluster.push_back(c);
-      g.cost.push_back(cu(rng));
-      entry.push_back(centre + Eigen::Vector2d(du(rng), du(rng)));
-      exit.push_back(centre + Eigen::Vector2d(du(rng), du(rng)));
-    }
-  }
-  entry.push_back({0, 0});
-  exit.push_back({0, 0});
-  const int n = static_cast<int>(entry.size());
-  g.transit.resize(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) g.transit(i, j) = (exit[i] - entry[j]).norm();
+  const planner::GtspInstance g = planner::randomGtspInstance(static_cast<int>(st.range(0)), 3, 5, 1000.0, 1.0);
   for (auto _ : st) benchmark::DoNotOptimize(planner::solveGtspHeuristic(g));
 }
 

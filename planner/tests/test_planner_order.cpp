@@ -5,34 +5,13 @@
 #include <numeric>
 #include <random>
 
+#include "random_gtsp.hpp"
 #include "wattswath/planner/order.hpp"
 
 using namespace wattswath::planner;
 
 namespace {
-// Random Euclidean GTSP: each candidate has an entry and exit point near its cluster centre.
-GtspInstance randomInstance(int clusters, int per, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 100.0), du(-5.0, 5.0), cu(10.0, 50.0);
-  GtspInstance g;
-  std::vector<Eigen::Vector2d> entry, exit;
-  for (int c = 0; c < clusters; ++c) {
-    const Eigen::Vector2d centre(u(rng), u(rng));
-    for (int k = 0; k < per; ++k) {
-      g.cluster.push_back(c);
-      g.cost.push_back(cu(rng));
-      entry.push_back(centre + Eigen::Vector2d(du(rng), du(rng)));
-      exit.push_back(centre + Eigen::Vector2d(du(rng), du(rng)));
-    }
-  }
-  entry.push_back({0, 0});
-  exit.push_back({0, 0});
-  const int n = static_cast<int>(entry.size());
-  g.transit.resize(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) g.transit(i, j) = (exit[i] - entry[j]).norm() * 1.7;
-  return g;
-}
+GtspInstance randomInstance(int clusters, int per, unsigned seed) { return randomGtspInstance(clusters, per, seed); }
 
 double bruteForce(const GtspInstance& g) {
   const int k = g.clusterCount();
