@@ -140,7 +140,8 @@ and the line count one below full coverage. Against the table before (same model
 80.4 kJ, rectangle 59.2 -> 58.7, area01 68.0 -> 55.3, spiral_concave 98.7 -> 87.8, spiral_polygon
 95.0 -> 92.5 (now straight lines), rectangle02 and polygon unchanged (spirals, 57.5 and 84.2);
 lines only: rectangle02 62.4 -> 65.3 kJ (the only row dearer), polygon 96.9 -> 88.7. Wall times
-of this run were taken with the shared machine loaded (load average 8-12), about twice idle.
+are of an otherwise idle machine (2 cores); they halved when the cell-order search began estimating
+its moves in O(1) (docs/performance.md), with every plan the same to the joule.
 
 | area | plan | energy [kJ] | coverage [%%] | time [s] | length [m] | saving vs shortest path [%%] | vs ground-station default [%%] | vs best spiral [%%] | plan / bound | wall [s] |
 |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
