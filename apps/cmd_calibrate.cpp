@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "replay_mission.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
@@ -49,6 +50,7 @@ nlohmann::json comparisonJson(const cal::FlightComparison& c) {
           {"predicted", {{"time_s", c.predicted.total_s}, {"energy_j", c.predicted.energy_j}, {"takeoff_s", num(c.predicted.takeoff_s)},
                          {"mission_s", num(c.predicted.mission_s)}, {"return_s", num(c.predicted.return_s)}}},
           {"log_offset_m", {c.offset.x(), c.offset.y()}},
+          {"launch_from_mission_home_m", {c.launch.x(), c.launch.y()}},
           {"legs", legsJson(c)}};
 }
 
@@ -58,7 +60,8 @@ void printComparisons(const char* title, const std::vector<cal::FlightComparison
     std::cout << "  " << c.name << ": time " << c.predicted.total_s << " s vs " << c.measured.total_s << " s measured ("
               << std::showpos << c.time_error_pct << std::noshowpos << " %), energy " << c.predicted.energy_j / 3600.0 << " Wh vs "
               << c.measured.energy_j / 3600.0 << " Wh (" << std::showpos << c.energy_error_pct << std::noshowpos
-              << " %), leg time MAPE " << c.leg_time_mape_pct << " % over " << c.legs_matched << " legs\n";
+              << " %), leg time MAPE " << c.leg_time_mape_pct << " % over " << c.legs_matched << " legs\n    "
+              << launchSentence(c.launch.x(), c.launch.y()) << "\n";
   }
 }
 

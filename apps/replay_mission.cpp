@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/mission/files.hpp"
@@ -93,6 +95,7 @@ json flightJson(const calibration::FlightComparison& c, const std::string& log, 
           {"leg_time_mape_pct", numOrNull(c.leg_time_mape_pct)},
           {"legs_matched", c.legs_matched},
           {"log_offset_m", {c.offset.x(), c.offset.y()}},
+          {"launch_from_mission_home_m", {c.launch.x(), c.launch.y()}},
           {"legs", legs}};
 }
 
@@ -128,10 +131,25 @@ MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given
     out.json.push_back(
         flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
     // The predicted trajectory for the report's speed figure (compareFlight keeps only its times).
-    const auto pred = mission::predictMission(f.mission, v, model, ap, ps);
+    const auto pred = mission::predictMission(calibration::missionFromLaunch(f), v, model, ap, ps);
     out.report.flights.push_back(reportFlight(f, mission_paths[i], c, pred, replay_j));
   }
   return out;
+}
+
+std::string launchSentence(double east_m, double north_m) {
+  const double d = std::hypot(east_m, north_m);
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(1);
+  if (d < 0.05) {
+    o << "The vehicle took off at the mission's home.";
+    return o.str();
+  }
+  o << "The vehicle took off " << d << " m from the mission's home (" << std::abs(east_m) << " m " << (east_m >= 0 ? "E" : "W")
+    << ", " << std::abs(north_m) << " m " << (north_m >= 0 ? "N" : "S")
+    << "; the log's track laid onto the waypoints): the prediction takes off and returns there, as the autopilot sets home "
+       "where it arms.";
+  return o.str();
 }
 
 void printMissionReplays(const json& missions) {
@@ -142,8 +160,9 @@ void printMissionReplays(const json& missions) {
               << " s measured (" << m["time_error_pct"].get<double>() << " %), energy "
               << m["predicted_energy_j"].get<double>() << " J vs " << m["measured_energy_j"].get<double>() << " J ("
               << m["energy_error_pct"].get<double>() << " %): kinematics " << m["kinematics_error_j"].get<double>()
-              << " J, physics " << m["physics_error_j"].get<double>()
-              << " J\n  leg  measured s  predicted s  measured J  predicted J\n";
+              << " J, physics " << m["physics_error_j"].get<double>() << " J\n"
+              << "  " << launchSentence(m["launch_from_mission_home_m"][0].get<double>(), m["launch_from_mission_home_m"][1].get<double>())
+              << "\n  leg  measured s  predicted s  measured J  predicted J\n";
     for (const auto& l : m["legs"]) {
       auto f = [](const json& x) {
         return x.is_null() ? std::string("-") : std::to_string(static_cast<long>(std::lround(x.get<double>())));

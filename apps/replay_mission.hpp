@@ -28,6 +28,10 @@ MissionReplays missionReplays(const energy::Vehicle& v, const energy::EnergyMode
                               const std::vector<std::string>& log_paths, const std::vector<std::string>& mission_paths,
                               const std::vector<calibration::LogReplay>& reps, const logs::LogReadOptions& read);
 
+/// One sentence on where the log's vehicle took off, `east_m` and `north_m` [m] from the mission's
+/// home (FlightComparison::launch), and that the prediction flies from there.
+std::string launchSentence(double east_m, double north_m);
+
 /// Prints the comparisons (the `json` of missionReplays) as text on stdout.
 void printMissionReplays(const nlohmann::json& missions);
 

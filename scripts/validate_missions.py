@@ -89,6 +89,7 @@ def main():
             cal = run(a.binary, args)
             r = row(a.binary, out, f, measured[f])
             r["fitted"] = cal["fitted"]
+            r["flights_agree"] = cal.get("flights_agree")
             rows.append(("calibrated on the other two flights", r))
     if a.json:
         print(json.dumps([{"model": m, **r} for m, r in rows], indent=1))
@@ -102,7 +103,8 @@ def main():
     print()
     for m, r in rows:
         if "fitted" in r:
-            print(f"- without {r['flight']}: " + "; ".join(r["fitted"]))
+            agree = {True: "the two flights agree", False: "the two flights do not agree", None: "agreement not assessed"}[r.get("flights_agree")]
+            print(f"- without {r['flight']} ({agree}): " + "; ".join(r["fitted"]))
 
 
 if __name__ == "__main__":

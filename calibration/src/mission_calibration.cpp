@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "wattswath/calibration/replay.hpp"
+#include "wattswath/geometry/frame.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 
 namespace wattswath::calibration {
@@ -148,29 +149,31 @@ double gridThenGolden(F cost, int grid, int iters) {
   return std::min(fc, fd) <= fbest ? u : static_cast<double>(best) / grid;
 }
 
-// The measured side of a flight, computed once.
+// The measured side of a flight, computed once, in the log's frame.
 struct Prepared {
   const MissionFlight* flight;
+  mission::Mission mission;  // the mission with its home where the vehicle took off (see prepare)
   std::vector<mission::NavStep> steps;
   std::vector<Eigen::Vector3d> waypoints;
   Eigen::Vector2d offset;
+  Eigen::Vector2d launch = Eigen::Vector2d::Zero();  // [m] take-off point, east/north of the mission's home
   FlightTimes measured;
 };
 
 Prepared prepare(const MissionFlight& f) {
   Prepared p;
   p.flight = &f;
-  p.steps = mission::sequenceMission(f.mission);
-  p.waypoints = flownWaypoints(p.steps);
+  p.mission = missionFromLaunch(f, &p.offset, &p.launch);
   std::vector<Eigen::Vector3d> track;
   std::vector<double> t, power;
   for (const auto& s : f.log.samples) {
-    track.push_back(s.position);
+    // The log's frame, moved so that its first sample (the take-off point) is the origin.
+    track.push_back(s.position - Eigen::Vector3d(f.log.samples.front().position.x(), f.log.samples.front().position.y(), 0.0));
     t.push_back(s.t - f.log.samples.front().t);
     power.push_back(samplePower(s));
   }
-  p.offset = alignTrack(track, p.waypoints);
-  for (auto& q : track) q.head<2>() -= p.offset;
+  p.steps = mission::sequenceMission(p.mission);
+  p.waypoints = flownWaypoints(p.steps);
   p.measured = flightTimes(t, track, power, p.waypoints);
   if (!(p.measured.energy_j > 0.0)) {
     throw std::invalid_argument(f.name + ": the log has no usable power (voltage x current): it cannot be compared");
@@ -200,6 +203,7 @@ FlightComparison compare(const Prepared& p, const FlightTimes& pred) {
   c.measured = p.measured;
   c.predicted = pred;
   c.offset = p.offset;
+  c.launch = p.launch;
   c.time_error_pct = 100.0 * relErr(pred.total_s, p.measured.total_s);
   c.energy_error_pct = 100.0 * relErr(pred.energy_j, p.measured.energy_j);
   double sum = 0.0;
@@ -320,10 +324,24 @@ std::vector<Eigen::Vector3d> flownWaypoints(const std::vector<mission::NavStep>&
   return out;
 }
 
+mission::Mission missionFromLaunch(const MissionFlight& f, Eigen::Vector2d* offset, Eigen::Vector2d* launch) {
+  std::vector<Eigen::Vector3d> track;
+  for (const auto& s : f.log.samples) track.push_back(s.position);
+  const Eigen::Vector2d d = alignTrack(track, flownWaypoints(mission::sequenceMission(f.mission)));
+  const Eigen::Vector2d at = track.empty() ? Eigen::Vector2d::Zero() : Eigen::Vector2d(track.front().head<2>() - d);
+  if (offset) *offset = d;
+  if (launch) *launch = at;
+  mission::Mission m = f.mission;
+  const geometry::GeoPoint g = geometry::LocalFrame(f.mission.home).toGeodetic(geometry::Point(at.x(), at.y()));
+  m.home.lat_deg = g.lat_deg;
+  m.home.lon_deg = g.lon_deg;
+  return m;
+}
+
 FlightComparison compareFlight(const MissionFlight& f, const energy::Vehicle& v, const energy::EnergyModel& model,
                                const mission::AutopilotConfig& autopilot, const mission::PredictSettings& settings) {
   const Prepared p = prepare(f);
-  const mission::MissionPrediction pred = mission::predictMission(f.mission, v, model, autopilot, settings);
+  const mission::MissionPrediction pred = mission::predictMission(p.mission, v, model, autopilot, settings);
   return compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints));
 }
 
@@ -382,7 +400,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   r.model = model;
   mission::PredictSettings ps;
   for (const auto& p : prepared) {
-    const auto pred = mission::predictMission(p.flight->mission, v, model, autopilot, ps);
+    const auto pred = mission::predictMission(p.mission, v, model, autopilot, ps);
     r.before.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
   }
   // Flight behaviour: the free parameters and the take-off delay, normalised to [0, 1].
@@ -478,7 +496,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   after.flight.stop_at_waypoints = r.stop_at_waypoints;
   after.flight.speed_change_late = r.speed_change_late;
   for (const auto& p : prepared) {
-    const auto pred = mission::predictMission(p.flight->mission, v, r.model, r.autopilot, after);
+    const auto pred = mission::predictMission(p.mission, v, r.model, r.autopilot, after);
     r.after.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
   }
   return r;

@@ -21,7 +21,9 @@
 namespace wattswath::calibration {
 
 /// A logged flight of a known mission. The log's frame is metres from where the vehicle armed;
-/// the mission's home may differ by metres (alignTrack() finds the offset).
+/// the mission's home may differ by metres (alignTrack() finds the offset). The comparisons fly
+/// the mission from the log's take-off point: the autopilot sets home where it arms and returns
+/// there, whatever the file's home row says.
 struct MissionFlight {
   std::string name;                ///< label (the log's file name)
   mission::Mission mission;        ///< what the autopilot was told
@@ -48,6 +50,9 @@ struct FlightComparison {
   FlightTimes measured;              ///< from the log
   FlightTimes predicted;             ///< from the predicted trajectory
   Eigen::Vector2d offset = Eigen::Vector2d::Zero();  ///< [m] log frame minus mission frame (east, north)
+  /// [m] where the vehicle took off, east and north of the mission's home row: the prediction
+  /// takes off and returns there (the autopilot sets home where it arms).
+  Eigen::Vector2d launch = Eigen::Vector2d::Zero();
   double time_error_pct = 0.0;       ///< [%] total time, (predicted - measured) / measured
   double energy_error_pct = 0.0;     ///< [%] total energy
   double leg_time_mape_pct = 0.0;    ///< [%] mean absolute percentage error of the matched leg times
@@ -58,6 +63,14 @@ struct FlightComparison {
 /// distance of each waypoint to the track, coarse grid then refinement within +-`search_m`).
 Eigen::Vector2d alignTrack(const std::vector<Eigen::Vector3d>& track, const std::vector<Eigen::Vector3d>& waypoints,
                            double search_m = 30.0);
+
+/// `f`'s mission flown from where its log took off: the home moved to the log's first sample (the
+/// track laid onto the waypoints by alignTrack), the items unchanged. ArduPilot and PX4 set home
+/// where the vehicle arms and return there, whatever the file's home row says. `offset` [m]
+/// receives the log frame minus the mission frame, `launch` [m] the take-off point east and north
+/// of the file's home.
+mission::Mission missionFromLaunch(const MissionFlight& f, Eigen::Vector2d* offset = nullptr,
+                                   Eigen::Vector2d* launch = nullptr);
 
 /// Times of a trajectory (`t` [s], `pos` [m], `power` [W], NaN allowed when unknown) against
 /// `waypoints` [m], passages matched within `match_m` [m].
