@@ -47,6 +47,12 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   // The ground-station default flown too (in the same batch of flights), as a baseline: never written.
   cands.push_back({"ground-station default", &r.ground_station_default});
   auto scores = planner::scoreByFlight(cands, scoring);
+  // The baseline is what a ground station writes: not rewritten with our speed commands.
+  scores.erase(std::remove_if(scores.begin(), scores.end(),
+                              [&](const planner::FlightScore& s) {
+                                return s.candidate == &r.ground_station_default && s.speeds_a_waypoint_early;
+                              }),
+               scores.end());
   const auto baseline = std::stable_partition(scores.begin(), scores.end(), [&](const planner::FlightScore& s) {
     return s.candidate != &r.ground_station_default;
   });
@@ -69,6 +75,11 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
                     " flies them); it is the plan written");
     const planner::PlanCandidate chosen = *best.candidate;
     r.plan = chosen;
+  }
+  if (best.speeds_a_waypoint_early) {
+    notes.push_back("flight model: each speed command is written a waypoint early (the faster of its leg's planned speed and "
+                    "the next leg's): " + f.autopilot + " flies a speed increase only from the next waypoint on, and this "
+                    "mission flies cheaper so");
   }
   f.arc_waypoints = best.arc_waypoints;
   for (const auto& l : best.candidate->flown.path.legs)

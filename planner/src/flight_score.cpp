@@ -59,26 +59,36 @@ std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, 
   std::vector<FlightScore> all;
   std::vector<std::string> all_sources;  // names of the .plan texts in errors
   std::vector<char> has_arcs;
+  const bool leash = s.autopilot.family == mission::AutopilotFamily::ArduCopterLeash;
   for (const auto& [label, c] : candidates) {
     if (!c || !c->valid) continue;
     const bool arcs = std::any_of(c->flown.path.legs.begin(), c->flown.path.legs.end(),
                                   [](const geometry::PathLeg& l) { return l.kind == geometry::PrimitiveKind::Arc; });
-    for (const bool arc_waypoints : {false, true}) {
-      if (arc_waypoints && !arcs) continue;  // the same mission
-      FlightScore f;
-      f.label = arcs ? label + (arc_waypoints ? " (arcs as waypoints)" : " (arcs as chords)") : label;
-      f.candidate = c;
-      f.arc_waypoints = arc_waypoints;
-      f.closed_form_energy_j = c->flown.energy;
-      all.push_back(std::move(f));
-      all_sources.push_back(label + " mission.plan");
-      has_arcs.push_back(arcs);
+    for (const bool early : {false, true}) {
+      if (early && !leash) continue;  // only ArduCopter before 4.1 applies speed increases late
+      for (const bool arc_waypoints : {false, true}) {
+        if (arc_waypoints && !arcs) continue;  // the same mission
+        std::vector<std::string> how;
+        if (arcs) how.push_back(arc_waypoints ? "arcs as waypoints" : "arcs as chords");
+        if (early) how.push_back("speeds a waypoint early");
+        FlightScore f;
+        f.label = label;
+        for (std::size_t k = 0; k < how.size(); ++k) f.label += (k ? ", " : " (") + how[k] + (k + 1 == how.size() ? ")" : "");
+        f.candidate = c;
+        f.arc_waypoints = arc_waypoints;
+        f.speeds_a_waypoint_early = early;
+        f.closed_form_energy_j = c->flown.energy;
+        all.push_back(std::move(f));
+        all_sources.push_back(label + " mission.plan");
+        has_arcs.push_back(arcs);
+      }
     }
   }
   std::vector<std::string> all_texts(all.size());
   onThreads(all.size(), s.threads, [&](std::size_t i) {
     MissionOptions mo = s.mission;
     mo.arc_waypoints = all[i].arc_waypoints;
+    mo.speeds_a_waypoint_early = all[i].speeds_a_waypoint_early;
     all[i].mission = missionFromPlan(all[i].candidate->flown, *s.problem, *s.frame, s.home_altitude_amsl_m, mo);
     all_texts[i] = mission::toQgcPlan(all[i].mission.mission);  // the very text `wattswath predict` reads
   });
@@ -87,6 +97,11 @@ std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, 
   for (std::size_t i = 0; i < all.size(); ++i) {
     // A chord that comes within the no-fly margin is not offered (the waypoints along the arc are).
     if (!all[i].arc_waypoints && has_arcs[i] && all[i].mission.legs_within_margin > 0) continue;
+    // Speeds a waypoint early that change nothing (one speed throughout) are not a variant of their own.
+    bool same_variant = false;
+    for (std::size_t j = 0; j < i && all[i].speeds_a_waypoint_early; ++j)
+      same_variant = same_variant || (all[j].candidate == all[i].candidate && all_texts[j] == all_texts[i]);
+    if (same_variant) continue;
     out.push_back(std::move(all[i]));
     sources.push_back(std::move(all_sources[i]));
     texts.push_back(std::move(all_texts[i]));

@@ -187,6 +187,10 @@ MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& 
     if (stops && options.stop_hold_s > 0.0 && !b.out.waypoints.empty()) b.out.waypoints.back().hold_s = options.stop_hold_s;
   }
   auto& out = b.out;
+  if (options.speeds_a_waypoint_early) {  // in order: waypoint i + 1 still holds its own planned command
+    for (size_t i = 0; i + 1 < out.waypoints.size(); ++i)
+      out.waypoints[i].speed_mps = std::max(out.waypoints[i].speed_mps, out.waypoints[i + 1].speed_mps);
+  }
   if (camera_on) out.waypoints.back().camera_trigger_m = 0.0;
   if (!out.waypoints.empty()) out.waypoints.back().hold_s = 0.0;  // the return to launch stops there anyway
   for (const auto& w : out.waypoints) out.holds += w.hold_s > 0.0;

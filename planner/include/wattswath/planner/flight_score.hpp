@@ -36,6 +36,7 @@ struct FlightScore {
   std::string label;                      ///< "plan", "per-cell", "shortest path", "best spiral", ...
   const PlanCandidate* candidate = nullptr;  ///< the candidate scored (not owned)
   bool arc_waypoints = false;             ///< how its arcs are written (MissionOptions::arc_waypoints)
+  bool speeds_a_waypoint_early = false;   ///< its speed commands (MissionOptions::speeds_a_waypoint_early)
   double closed_form_energy_j = 0.0;      ///< [J] the search's closed-form energy of the coverage route
   PlanMission mission;                    ///< the mission written for it
   mission::MissionPrediction prediction;  ///< its flight, take-off to landing
@@ -47,7 +48,9 @@ mission::MissionPrediction flyWrittenMission(const PlanMission& written, const F
 
 /// Flies each labelled candidate's mission (in order); a candidate with arcs twice: its arcs as
 /// chords flown by the autopilot's own cornering (unless a chord comes within the no-fly margin)
-/// and as waypoints along them (MissionOptions::arc_waypoints). Missions with the same .plan text
+/// and as waypoints along them (MissionOptions::arc_waypoints). For ArduCopter before 4.1 (the
+/// leash family) each of those also with its speed commands a waypoint early
+/// (MissionOptions::speeds_a_waypoint_early). Missions with the same .plan text
 /// are flown once; the flights run on FlightScoring::threads threads. Throws what missionFromPlan,
 /// parseQgcPlan and predictMission throw (for the first such mission in order).
 std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,

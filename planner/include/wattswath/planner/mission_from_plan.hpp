@@ -58,6 +58,10 @@ struct MissionOptions {
                                           ///< own cornering along the chord
   double no_fly_margin_m = 0.0;           ///< [m] margin the straight legs between waypoints are checked
                                           ///< against (0: not checked), >= 0
+  /// true: each leg's speed command is the faster of its own planned speed and the next leg's, for
+  /// ArduCopter before 4.1, which flies a speed increase only from the next waypoint on (the leg's
+  /// leash is computed before the new speed reaches the position controller; docs/autopilots.md)
+  bool speeds_a_waypoint_early = false;
 };
 
 /// One waypoint of the mission in the local ENU frame, before conversion to WGS84.
