@@ -3,6 +3,9 @@
 // run on changes no number.
 #include <gtest/gtest.h>
 
+#include <memory>
+#include <stdexcept>
+
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -15,21 +18,42 @@
 using namespace wattswath;
 using namespace wattswath::planner;
 
+namespace {
+
+// An area planned for a vehicle, with the flight scoring `plan` would use (addresses stable).
+struct Planned {
+  geometry::SurveyArea area;
+  SurveyProblem pr;
+  energy::Vehicle v;
+  energy::EnergyModel model;
+  PlanResult r;
+  FlightScoring s;
+};
+
+std::unique_ptr<Planned> planned(const std::string& area_file, double spacing, const std::string& vehicle_file) {
+  auto p = std::make_unique<Planned>();
+  p->area = geometry::readSurveyArea(test::sourcePath(area_file));
+  if (!p->area.frame) throw std::runtime_error(area_file + ": no frame");
+  p->pr = test::problemOf(p->area, spacing);
+  p->v = energy::loadVehicle(test::sourcePath(vehicle_file));
+  p->model = energy::marinsModel(p->v);
+  p->r = planCoverage(p->pr, p->v, p->model);
+  p->s.problem = &p->pr;
+  p->s.frame = &*p->area.frame;
+  p->s.vehicle = &p->v;
+  p->s.model = &p->model;
+  return p;
+}
+
+}  // namespace
+
 TEST(FlightScore, TheSameMissionTwiceIsOneFlightAndThreadsChangeNoNumber) {
-  const auto area = geometry::readSurveyArea(test::sourcePath("data/areas/espiral_rectangle.geojson"));
-  ASSERT_TRUE(area.frame);
-  const auto pr = test::problemOf(area, 21.45);
-  const auto v = energy::loadVehicle(test::sourcePath("data/vehicles/iris.json"));
-  const auto model = energy::marinsModel(v);
-  const auto r = planCoverage(pr, v, model);
+  const auto p = planned("data/areas/espiral_rectangle.geojson", 21.45, "data/vehicles/iris.json");
+  const PlanResult& r = p->r;
+  FlightScoring s = p->s;
   ASSERT_TRUE(r.plan.valid);
   ASSERT_TRUE(r.ground_station_default.valid);
   const PlanCandidate copy = r.plan;  // another finalist flying the very same route
-  FlightScoring s;
-  s.problem = &pr;
-  s.frame = &*area.frame;
-  s.vehicle = &v;
-  s.model = &model;
   const std::vector<std::pair<std::string, const PlanCandidate*>> cands = {
       {"plan", &r.plan}, {"ground-station default", &r.ground_station_default}, {"copy", &copy}};
   s.threads = 1;
@@ -66,19 +90,11 @@ TEST(FlightScore, ForArduCopterBefore41SpeedCommandsAWaypointEarlyAreOfferedAndF
   // finalist is also written with each speed command the faster of its leg's and the next leg's;
   // on the IRIS+ area at 15 m spacing that flight is over a quarter shorter (142 -> 96 kJ when
   // written). Autopilots that apply speeds at once (S-curves, PX4) get no such variant.
-  const auto area = geometry::readSurveyArea(test::sourcePath("data/areas/iris_area.geojson"));
-  ASSERT_TRUE(area.frame);
-  const auto pr = test::problemOf(area, 15.0);
-  const auto v = energy::loadVehicle(test::sourcePath("data/vehicles/iris-plus-arducopter3.json"));
-  const auto model = energy::marinsModel(v);
-  const auto r = planCoverage(pr, v, model);
+  const auto p = planned("data/areas/iris_area.geojson", 15.0, "data/vehicles/iris-plus-arducopter3.json");
+  const PlanResult& r = p->r;
   ASSERT_TRUE(r.plan.valid);
-  FlightScoring s;
-  s.problem = &pr;
-  s.frame = &*area.frame;
-  s.vehicle = &v;
-  s.model = &model;
-  s.autopilot = mission::parseAutopilot(v.autopilot_json, v.name);
+  FlightScoring s = p->s;
+  s.autopilot = mission::parseAutopilot(p->v.autopilot_json, p->v.name);
   ASSERT_EQ(s.autopilot.family, mission::AutopilotFamily::ArduCopterLeash);
   const auto scores = scoreByFlight({{"plan", &r.plan}}, s);
   const FlightScore* late = nullptr;
