@@ -1,9 +1,11 @@
 // wattswath predict MISSION --vehicle V: energy, time and battery of a mission file flown by the
 // vehicle's autopilot (mission/predict.hpp).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli.hpp"
@@ -44,7 +46,7 @@ std::string modelText(const en::EnergyModel& model, bool calibrated) {
 
 // The mission report: the prediction's figures and tables with the inputs as facts.
 report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap, const en::Vehicle& v,
-                                 const std::string& model, const PredictOptions& o) {
+                                 const std::string& model, const std::vector<std::string>& notes, const PredictOptions& o) {
   auto d = missionReportData(p, o.reserve_pct);
   d.title = "wattswath predict: " + std::filesystem::path(o.mission).filename().string();
   d.facts = {{"mission", o.mission},
@@ -64,6 +66,7 @@ report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::Autop
                              " % usable left (the prediction's error margin, --energy-margin)"});
     }
   }
+  for (const auto& n : notes) d.facts.push_back({"calibration", n});
   for (const auto& w : p.warnings) d.facts.push_back({"note", w});
   return report::missionReport(d);
 }
@@ -121,6 +124,42 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap) {
   for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
 }
 
+// The mission flown with each extreme of a parameter the calibration's flights disagreed on
+// (PredictionSetup::disputed_parameter): how far apart the predictions the flights stand for are.
+struct Dispute {
+  std::string parameter;
+  double lo = 0.0, hi = 0.0;  // the flights' own values [the parameter's unit]
+  double energy_lo_j = 0.0, energy_hi_j = 0.0, time_lo_s = 0.0, time_hi_s = 0.0;  // over the two flights
+};
+
+std::optional<Dispute> disputeOf(const ms::Mission& m, const en::Vehicle& v, const PredictionSetup& setup) {
+  if (setup.disputed_parameter.empty() || setup.disputed_values.size() < 2) return std::nullopt;
+  const auto [a, b] = std::minmax_element(setup.disputed_values.begin(), setup.disputed_values.end());
+  Dispute d{setup.disputed_parameter, *a, *b, 1e300, -1e300, 1e300, -1e300};
+  ms::PredictSettings ps = setup.settings;
+  ps.energy_margin = 0.0;
+  for (const double x : {d.lo, d.hi}) {
+    ms::AutopilotConfig ap = setup.autopilot;
+    ap.parameters[d.parameter] = x;
+    const ms::MissionPrediction p = ms::predictMission(m, v, setup.model, ap, ps);
+    d.energy_lo_j = std::min(d.energy_lo_j, p.total.energy_j), d.energy_hi_j = std::max(d.energy_hi_j, p.total.energy_j);
+    d.time_lo_s = std::min(d.time_lo_s, p.total.time_s), d.time_hi_s = std::max(d.time_hi_s, p.total.time_s);
+  }
+  return d;
+}
+
+// One sentence on the dispute, relative to prediction `p`.
+std::string disputeText(const Dispute& d, const ms::MissionPrediction& p) {
+  std::ostringstream os;
+  os << std::setprecision(3) << "the calibration's flights disagree on " << d.parameter << " (each wants " << d.lo << " to " << d.hi
+     << "): flown with each, " << std::fixed << std::setprecision(1) << d.energy_lo_j / 3600.0 << " to " << d.energy_hi_j / 3600.0
+     << " Wh (" << std::showpos << 100.0 * (d.energy_lo_j / p.total.energy_j - 1.0) << " to "
+     << 100.0 * (d.energy_hi_j / p.total.energy_j - 1.0) << std::noshowpos << " %), " << minutesSeconds(d.time_lo_s) << " to "
+     << minutesSeconds(d.time_hi_s) << " min:s; the prediction is the joint value's, and the reserve is checked with "
+     << std::setprecision(0) << 100.0 * p.battery.energy_margin << " % more energy";
+  return os.str();
+}
+
 std::string samplesCsv(const ms::MissionPrediction& p) {
   std::ostringstream os;
   os.precision(10);
@@ -168,16 +207,31 @@ void registerPredictCommand(CLI::App& app) {
     ms::ReadOptions ro;
     ro.lenient = o->lenient;
     const ms::Mission m = ms::readMission(o->mission, ro);
+    const std::optional<Dispute> dispute = disputeOf(m, v, setup);
+    if (dispute) {  // the reserve is also checked for the dearer of the flights the calibration stands for
+      const double base = ms::predictMission(m, v, model, ap, setup.settings).total.energy_j;
+      setup.settings.energy_margin = std::clamp(std::max(setup.settings.energy_margin, dispute->energy_hi_j / base - 1.0), 0.0, 1.0);
+    }
     const ms::PredictSettings& ps = setup.settings;
     const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, ps);
+    std::vector<std::string> notes;
+    if (dispute) notes.push_back(disputeText(*dispute, p));
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
     if (!o->report.empty() || !o->report_svg.empty()) {
-      writeReport(missionReport(p, ap, v, modelText(model, use_calibration), *o), o->report, o->report_svg, o->force);
+      writeReport(missionReport(p, ap, v, modelText(model, use_calibration), notes, *o), o->report, o->report_svg, o->force);
     }
     if (o->json) {
-      printJson(toJson(p, ap, *o));
+      nlohmann::json j = toJson(p, ap, *o);
+      j["calibration_dispute"] = nullptr;
+      if (dispute) {
+        j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},
+                                    {"energy_j", {dispute->energy_lo_j, dispute->energy_hi_j}},
+                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}}, {"text", notes.front()}};
+      }
+      printJson(j);
     } else {
       printText(p, ap);
+      for (const auto& n : notes) std::cout << "calibration: " << n << "\n";
     }
   });
 }

@@ -3,6 +3,7 @@
 // calibration when it has one and no --effects is given, else the listed effects), its autopilot
 // and the calibrated flight behaviour. One place, so plan and predict agree.
 #include <string>
+#include <vector>
 
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
@@ -16,6 +17,8 @@ struct PredictionSetup {
   mission::AutopilotConfig autopilot;   ///< the vehicle file's `autopilot` (or firmware defaults)
   mission::PredictSettings settings;    ///< take-off delay and behaviour from the calibration
   bool calibrated = false;              ///< true when the file's calibration is used
+  std::string disputed_parameter;       ///< the calibration's flights disagreed on it (empty: no dispute)
+  std::vector<double> disputed_values;  ///< each calibration flight's own value of it
 };
 
 /// The prediction setup of vehicle `v` read from `vehicle_path`; `effects` (comma list, empty: the

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -113,3 +114,41 @@ TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
   std::remove(out.c_str());
 }
 #endif
+
+TEST(CliPredict, ACalibrationWhoseFlightsDisagreeGivesTheSpreadAndWidensTheMargin) {
+  // A calibration from flights that wanted WPNAV_ACCEL 60 and 250 cm/s/s (flights_agree false):
+  // predict flies the mission with each too, gives the range in words and JSON, and checks the
+  // reserve for the dearer one when that is more than --energy-margin.
+  json v = json::parse(readAll(sourcePath("data/vehicles/iris-plus-arducopter3.json")));
+  v["extensions"]["calibration"] = {{"effects", {"hover", "kinetic", "parasitic_drag"}},
+                                    {"flights_agree", false},
+                                    {"per_flight", {{"parameter", "WPNAV_ACCEL"}, {"values", {250.0, 60.0}}}}};
+  const std::string path = tempPath("dispute_vehicle.json");
+  std::ofstream(path) << v.dump();
+  const std::string mission = sourcePath("tests/data/good/mission_survey.plan");
+  const json j = runJson("predict " + mission + " --vehicle " + path + " --json --energy-margin 1");
+  ASSERT_TRUE(j["calibration_dispute"].is_object()) << j.dump();
+  const auto& d = j["calibration_dispute"];
+  EXPECT_EQ(d["parameter"], "WPNAV_ACCEL");
+  EXPECT_EQ(d["values"][0].get<double>(), 60.0);
+  EXPECT_EQ(d["values"][1].get<double>(), 250.0);
+  const double e = j["energy_j"].get<double>(), lo = d["energy_j"][0].get<double>(), hi = d["energy_j"][1].get<double>();
+  EXPECT_LT(lo, e);  // the joint value (the default 100) lies between the flights' values
+  EXPECT_GT(hi, e);
+  EXPECT_NEAR(j["battery"]["energy_margin"].get<double>(), hi / e - 1.0, 1e-9);  // wider than the 1 % asked for
+  EXPECT_NE(d["text"].get<std::string>().find("disagree on WPNAV_ACCEL"), std::string::npos);
+  // The same vehicle whose flights agreed: no dispute, the margin as asked.
+  v["extensions"]["calibration"]["flights_agree"] = true;
+  std::ofstream(path) << v.dump();
+  const json agreed = runJson("predict " + mission + " --vehicle " + path + " --json --energy-margin 1");
+  EXPECT_TRUE(agreed["calibration_dispute"].is_null());
+  EXPECT_NEAR(agreed["battery"]["energy_margin"].get<double>(), 0.01, 1e-12);
+  // A malformed record is an error naming the field.
+  v["extensions"]["calibration"]["flights_agree"] = false;
+  v["extensions"]["calibration"]["per_flight"]["values"] = {90.0};
+  std::ofstream(path) << v.dump();
+  const RunResult bad = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("extensions.calibration.per_flight"), std::string::npos) << bad.output;
+  std::remove(path.c_str());
+}

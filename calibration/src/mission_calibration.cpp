@@ -513,6 +513,10 @@ std::string calibrationToJson(const CalibrationResult& r) {
   j["fitted"] = r.fitted;
   j["notes"] = r.notes;
   j["flights_agree"] = r.flights_agree;
+  if (!r.per_flight.empty()) {
+    j["per_flight"]["parameter"] = r.acceleration_parameter;
+    for (const auto& f : r.per_flight) j["per_flight"]["values"].push_back(f.value);
+  }
   for (const auto& f : r.after) j["flights"].push_back(f.name);
   return j.dump();
 }
@@ -546,6 +550,21 @@ std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v) {
   cm.takeoff_delay_s = j.value("takeoff_delay_s", -1.0);
   cm.stop_at_waypoints = j.value("stop_at_waypoints", false);
   cm.speed_change_late = j.value("speed_change_late", false);
+  if (!j.value("flights_agree", true) && j.contains("per_flight")) {
+    const auto& pf = j["per_flight"];
+    if (!pf.is_object() || !pf.contains("parameter") || !pf["parameter"].is_string() || !pf.contains("values") ||
+        !pf["values"].is_array() || pf["values"].size() < 2) {
+      throw std::invalid_argument(where + ".per_flight = " + pf.dump() +
+                                  ", expected {\"parameter\": NAME, \"values\": [two numbers or more]}");
+    }
+    cm.disputed_parameter = pf["parameter"].get<std::string>();
+    for (const auto& x : pf["values"]) {
+      if (!x.is_number() || !std::isfinite(x.get<double>())) {
+        throw std::invalid_argument(where + ".per_flight.values holds " + x.dump() + ", expected numbers");
+      }
+      cm.disputed_values.push_back(x.get<double>());
+    }
+  }
   return cm;
 }
 

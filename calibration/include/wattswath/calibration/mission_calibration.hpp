@@ -135,6 +135,10 @@ struct CalibratedModel {
   double takeoff_delay_s = -1.0; ///< [s] fitted take-off delay (< 0: none)
   bool stop_at_waypoints = false; ///< the calibrated corner behaviour (FlightSettings::stop_at_waypoints)
   bool speed_change_late = false; ///< the calibrated speed-change timing (FlightSettings::speed_change_late)
+  /// The acceleration parameter the calibration's flights disagreed on (CalibrationResult::
+  /// flights_agree false), empty when they agreed or there was one flight.
+  std::string disputed_parameter;
+  std::vector<double> disputed_values;  ///< each flight's own value of it [the parameter's unit]
 };
 
 /// The calibration stored in `v` (extensions.calibration), or nothing when it has none. Throws
