@@ -198,10 +198,12 @@ struct Flyer {
   // leash, and the square-root controller turns that distance into the old speed); a decrease at
   // once (AC_PosControl caps the velocity at the new speed).
   double leash_speed;
+  int late_increases = 0;  // legs commanded faster than the leash they start with (flown at the old speed)
 
   // Flies one leg to `to`; returns when the autopilot declares it reached.
   void leg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool fast, FlightPhase phase, int step) {
     Leg g = startLeg(from, to, speed, leash_speed, fast, veh, P);
+    if (speed > leash_speed + 0.05 && g.length > 1e-9 && std::abs(g.u.z()) < 0.5) ++late_increases;
     leash_speed = speed;  // recalculated at the position controller's first update on this leg
     while (true) {
       advanceCarrot(g, veh, P, rec.dt());
@@ -278,6 +280,11 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
     }
     if (st.kind == NavStep::Kind::Takeoff) rec.reached(ki);
     rec.completed(ki);
+  }
+  if (f.late_increases > 0) {
+    rec.note(std::to_string(f.late_increases) + " leg(s) are commanded faster than the leg before: ArduCopter " + ap.version +
+             " applies a speed increase only from the next waypoint on (the leg's leash is computed before the new speed "
+             "takes effect), and the prediction flies them so: near the previous leg's speed");
   }
   rec.note("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + detail::num(P.accel) + " m/s/s, lean-limited acceleration " +
            detail::num(P.accel_max) + " m/s/s, attitude lag " + detail::num(kAttitudeLag) +

@@ -238,6 +238,10 @@ TEST(ArduCopterLeash, SpeedIncreaseTakesEffectOneWaypointLateADecreaseAtOnce) {
   EXPECT_LT(maxSpeedBetween(f, e[1].reached_s, e[2].reached_s), 3.3);
   EXPECT_GT(maxSpeedBetween(f, e[2].reached_s, e[3].reached_s), 7.5);
   EXPECT_LT(maxSpeedBetween(f, e[3].reached_s + 20.0, e[4].reached_s), 2.1);
+  // The prediction says so: one leg (the second) commanded faster than the one before.
+  bool said = false;
+  for (const auto& n : f.notes) said = said || n.rfind("1 leg(s) are commanded faster than the leg before", 0) == 0;
+  EXPECT_TRUE(said);
 }
 
 TEST(ArduCopterLeash, ReturnFromAboveRtlAltFliesHomeAndLands) {
