@@ -20,6 +20,10 @@ void addSortieOptions(CLI::App* cmd, SortieRequest& req) {
                   "with the least total energy among those) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
   cmd->add_option("--reserve", req.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
       ->check(CLI::Range(0.0, 90.0));
+  cmd->add_option("--energy-margin", req.energy_margin_pct,
+                  "each sortie keeps the reserve with this much more energy too, for the prediction's own error [%] "
+                  "(default 10, as predict's; 0: the reserve as predicted)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--vehicles", req.vehicles,
                   "a fleet of N vehicles flies the sorties at once (implies --sorties auto): contiguous runs of sorties per vehicle "
                   "that minimise the makespan; writes vehicle_K_sortie_NN.plan/.waypoints")

@@ -27,14 +27,15 @@ struct FlownSortie {
   mission::MissionPrediction prediction;
 };
 
-// Every sortie of `split` written and flown; `fits` false when one does not keep the reserve.
+// Every sortie of `split` written and flown; `fits` false when one does not keep the reserve with
+// the energy margin (FlightScoring::settings.energy_margin; predict's "Fits", not "too close to call").
 std::vector<FlownSortie> flySorties(const pl::SortieSplit& split, const pl::FlightScoring& s, bool& fits) {
   std::vector<FlownSortie> out;
   fits = true;
   for (const auto& so : split.sorties) {
     FlownSortie f{so, pl::missionFromPlan(so.flown, *s.problem, *s.frame, s.home_altitude_amsl_m, s.mission), {}};
     f.prediction = pl::flyWrittenMission(f.mission, s, "sortie mission.plan");
-    fits = fits && f.prediction.battery.fits;
+    fits = fits && f.prediction.battery.fits_with_margin;
     out.push_back(std::move(f));
   }
   return out;
@@ -96,7 +97,7 @@ std::vector<FlownSortie> splitThatFits(const pl::PlanCandidate& plan, const pl::
         if (f.prediction.battery.usable_left_end < 0.95) usable_j.push_back(f.prediction.total.energy_j / (1.0 - f.prediction.battery.usable_left_end));
       if (!usable_j.empty()) {
         std::nth_element(usable_j.begin(), usable_j.begin() + usable_j.size() / 2, usable_j.end());
-        ss.budget_j = usable_j[usable_j.size() / 2] * (1.0 - reserve_pct / 100.0);
+        ss.budget_j = usable_j[usable_j.size() / 2] * (1.0 - reserve_pct / 100.0) / (1.0 + scoring.settings.energy_margin);
         continue;
       }
     }
@@ -105,8 +106,8 @@ std::vector<FlownSortie> splitThatFits(const pl::PlanCandidate& plan, const pl::
     // energy says), its pieces weigh more in the next split.
     if (ss.piece_weight.empty()) ss.piece_weight.assign(static_cast<std::size_t>(flown.back().sortie.last_sweep + 1), 1.0);
     for (const auto& f : flown) {
-      const double left = f.prediction.battery.usable_left_end, reserve = reserve_pct / 100.0;
-      if (f.prediction.battery.fits) continue;
+      const double left = f.prediction.battery.usable_left_end_with_margin, reserve = reserve_pct / 100.0;
+      if (f.prediction.battery.fits_with_margin) continue;
       const double factor = 1.02 + std::max(0.0, reserve - left) / std::max(1.0 - reserve, 0.1);
       for (int p = f.sortie.first_sweep; p <= f.sortie.last_sweep; ++p) ss.piece_weight[static_cast<std::size_t>(p)] *= factor;
     }
@@ -157,6 +158,8 @@ void writeSorties(const std::vector<FlownSortie>& flown, const std::vector<pl::T
     const double e = f.prediction.total.energy_j;
     nlohmann::json row = {{"file", plan}, {"energy_j", e}, {"energy_wh", e / 3600.0}, {"time_s", f.prediction.total.time_s},
                           {"usable_left_pct", 100.0 * f.prediction.battery.usable_left_end}, {"fits", f.prediction.battery.fits},
+                          {"usable_left_with_margin_pct", 100.0 * f.prediction.battery.usable_left_end_with_margin},
+                          {"fits_with_margin", f.prediction.battery.fits_with_margin},
                           {"photos", camera ? nlohmann::json(f.mission.photos) : nlohmann::json(nullptr)},
                           {"first_sweep", f.sortie.first_sweep + 1}, {"last_sweep", f.sortie.last_sweep + 1}};
     std::string label = "sortie " + std::to_string(k + 1);
@@ -190,14 +193,17 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   const auto& ph = flight.prediction.phases;
   const double overhead_j = ph[static_cast<int>(mission::FlightPhase::Takeoff)].energy_j + ph[static_cast<int>(mission::FlightPhase::Landing)].energy_j;
   const double single_flight_j = flight.prediction.total.energy_j;
-  const PredictionSetup setup = predictionSetup(v, vehicle_path, "", req.reserve_pct);
+  if (!(req.energy_margin_pct >= 0.0 && req.energy_margin_pct <= 100.0))
+    throw std::invalid_argument("--energy-margin " + std::to_string(req.energy_margin_pct) + ": expected 0..100 %");
+  PredictionSetup setup = predictionSetup(v, vehicle_path, "", req.reserve_pct);
+  setup.settings.energy_margin = req.energy_margin_pct / 100.0;
   scoring = withSetup(scoring, setup);
   pl::RouteScorer scorer(setup.model, pl::SpeedSettings::fromVehicle(v));
   const double usable = pl::predictBatteryUse(plan.flown, *v.battery).usable_energy_j;
   pl::SortieSettings ss;
   ss.count = count;
   ss.overhead_j = overhead_j;
-  ss.budget_j = usable * (1.0 - req.reserve_pct / 100.0);
+  ss.budget_j = usable * (1.0 - req.reserve_pct / 100.0) / (1.0 + setup.settings.energy_margin);
   // The closed form against the flight model on the whole plan (take-off and landing apart).
   if (plan.flown.energy > 0.0) ss.scale = std::clamp((single_flight_j - overhead_j) / plan.flown.energy, 0.5, 2.0);
   const double budget0 = ss.budget_j;
@@ -205,7 +211,8 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   const std::vector<FlownSortie> flown = splitThatFits(plan, scoring, scorer, ss, req.reserve_pct, fits);
   if (!fits)
     throw std::runtime_error("no split into " + (count ? std::to_string(count) : std::string("sorties")) + " lands every sortie with the " +
-                             std::to_string(req.reserve_pct).substr(0, 4) + " % reserve (the battery is too small for a single sweep, or --sorties too few)");
+                             std::to_string(req.reserve_pct).substr(0, 4) + " % reserve with " + std::to_string(req.energy_margin_pct).substr(0, 4) +
+                             " % more energy (--energy-margin; the battery is too small for a single sweep, or --sorties too few)");
   pl::SortieSettings naive = ss;
   naive.naive = true;
   naive.count = 0;
@@ -220,7 +227,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   nlohmann::json list = nlohmann::json::array();
   writeSorties(flown, tracks, fleet ? &*fleet : nullptr, scoring.mission.trigger_distance_m > 0.0, dir, list, out.view);
   const double e = total(flown), e_naive = total(naive_flown);
-  out.json = {{"count", flown.size()}, {"reserve_pct", req.reserve_pct}, {"total_energy_j", e},
+  out.json = {{"count", flown.size()}, {"reserve_pct", req.reserve_pct}, {"energy_margin_pct", req.energy_margin_pct}, {"total_energy_j", e},
               {"total_time_s", totalTime(flown)}, {"single_flight_energy_j", single_flight_j},
               {"single_flight_time_s", flight.prediction.total.time_s},
               {"single_flight", "mission.plan flown in one flight by " + flight.autopilot + " with an unlimited battery"},

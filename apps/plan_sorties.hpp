@@ -18,6 +18,7 @@ namespace wattswath::apps {
 struct SortieRequest {
   std::string sorties;       ///< "auto" or a count (empty: no split)
   double reserve_pct = 25.0; ///< [%] usable charge to keep on landing
+  double energy_margin_pct = 10.0;  ///< [%] extra energy each sortie must keep the reserve with too (predict's --energy-margin)
   int vehicles = 0;          ///< [-] fleet flying the sorties at once (0: no fleet)
   double swap_time_s = 120.0;       ///< [s] battery swap on the ground between two sorties of a vehicle
   double launch_interval_s = 30.0;  ///< [s] between the vehicles' first take-offs

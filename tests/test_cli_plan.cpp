@@ -354,7 +354,8 @@ TEST(CliPlan, PredictOnTheWrittenMissionGivesThePlansFlight) {
 }
 
 // Surveys larger than one battery (issue 23): with a 1.3 Ah pack the IRIS+ area needs several
-// sorties; `predict` on each written sortie_NN.plan lands with the 25 % reserve, the sorties
+// sorties; `predict` on each written sortie_NN.plan lands with the 25 % reserve (also with its 10 %
+// energy margin), the sorties
 // together fly every metre of sweep of the single plan (so its coverage), and the energy-aware split
 // needs no more sorties and no more energy than the naive split measured in the same run.
 TEST(CliPlan, SortiesEachLandWithTheReserveAndTogetherFlyTheWholePlan) {
@@ -376,6 +377,9 @@ TEST(CliPlan, SortiesEachLandWithTheReserveAndTogetherFlyTheWholePlan) {
     ASSERT_EQ(p.status, 0) << p.output;
     const auto pj = nlohmann::json::parse(p.output);
     EXPECT_TRUE(pj.at("battery").at("fits").get<bool>()) << so.at("file");
+    // ... and with predict's 10 % energy margin: "Fits", not "too close to call".
+    EXPECT_TRUE(pj.at("battery").at("fits_with_margin").get<bool>()) << so.at("file");
+    EXPECT_TRUE(so.at("fits_with_margin").get<bool>()) << so.at("file");
     EXPECT_NEAR(pj.at("energy_j").get<double>(), so.at("energy_j").get<double>(), 1e-6 * so.at("energy_j").get<double>());
     energy += pj.at("energy_j").get<double>();
   }
