@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <utility>
 #include <sstream>
 
 #include "cli.hpp"
@@ -13,6 +14,7 @@
 #include "report_data.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/geometry/frame.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/predict.hpp"
 #include "wattswath/report/reports.hpp"
@@ -25,7 +27,7 @@ namespace en = wattswath::energy;
 namespace ms = wattswath::mission;
 
 struct PredictOptions {
-  std::string mission, vehicle, effects, samples_out, report, report_svg;
+  std::string mission, vehicle, effects, samples_out, report, report_svg, launch;
   double reserve_pct = 25.0;
   double energy_margin_pct = 10.0;
   bool json = false, lenient = false, force = false;
@@ -46,7 +48,8 @@ std::string modelText(const en::EnergyModel& model, bool calibrated) {
 
 // The mission report: the prediction's figures and tables with the inputs as facts.
 report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap, const en::Vehicle& v,
-                                 const std::string& model, const std::vector<std::string>& notes, const PredictOptions& o) {
+                                 const std::string& model, const std::vector<std::pair<std::string, std::string>>& extra,
+                                 const PredictOptions& o) {
   auto d = missionReportData(p, o.reserve_pct);
   d.title = "wattswath predict: " + std::filesystem::path(o.mission).filename().string();
   d.facts = {{"mission", o.mission},
@@ -66,7 +69,7 @@ report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::Autop
                              " % usable left (the prediction's error margin, --energy-margin)"});
     }
   }
-  for (const auto& n : notes) d.facts.push_back({"calibration", n});
+  for (const auto& [label, text] : extra) d.facts.push_back({label, text});
   for (const auto& w : p.warnings) d.facts.push_back({"note", w});
   return report::missionReport(d);
 }
@@ -122,6 +125,40 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap) {
   }
   std::cout << "battery: " << (p.battery.known ? p.battery.verdict : "unknown (no battery in the vehicle file)") << "\n";
   for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
+}
+
+// Moves `m`'s home to `launch` ("LAT,LON" [deg]): the autopilot sets home where the vehicle arms
+// and returns there. Returns the distance [m] from the file's home; throws std::invalid_argument
+// naming --launch for a malformed or implausible value.
+double moveHomeTo(ms::Mission& m, const std::string& launch) {
+  const auto comma = launch.find(',');
+  auto number = [&](const std::string& text) {
+    std::size_t used = 0;
+    double x = std::nan("");
+    try {
+      x = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(x)) {
+      throw std::invalid_argument("--launch '" + launch + "': '" + text + "' is not a number; expected LAT,LON in degrees");
+    }
+    return x;
+  };
+  if (comma == std::string::npos) throw std::invalid_argument("--launch '" + launch + "': expected LAT,LON in degrees, e.g. 43.7157,10.4612");
+  geometry::GeoPoint at = m.home;
+  at.lat_deg = number(launch.substr(0, comma));
+  at.lon_deg = number(launch.substr(comma + 1));
+  geometry::validateGeoPoint(at, "--launch");
+  const double d = geometry::geodesicDistance(m.home, at);
+  if (d > 50000.0) {
+    throw std::invalid_argument("--launch '" + launch + "' is " + std::to_string(static_cast<long>(d / 1000.0)) +
+                                " km from the mission's home; expected within 50 km of it");
+  }
+  m.home.lat_deg = at.lat_deg;
+  m.home.lon_deg = at.lon_deg;
+  m.home_known = true;
+  return d;
 }
 
 // The mission flown with each extreme of a parameter the calibration's flights disagreed on
@@ -191,6 +228,9 @@ void registerPredictCommand(CLI::App& app) {
                   "predictions of real flights were off by up to 9 %: docs/validation.md; 0: none)")
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
+  cmd->add_option("--launch", o->launch,
+                  "Where the vehicle will arm and take off, LAT,LON [deg], when not at the mission file's home: the autopilot "
+                  "sets home there and returns to it (its height is taken as the file's home's)");
   cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
   cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
   addReportOptions(cmd, o->report, o->report_svg, o->force);
@@ -206,7 +246,9 @@ void registerPredictCommand(CLI::App& app) {
     const ms::AutopilotConfig& ap = setup.autopilot;
     ms::ReadOptions ro;
     ro.lenient = o->lenient;
-    const ms::Mission m = ms::readMission(o->mission, ro);
+    ms::Mission m = ms::readMission(o->mission, ro);
+    std::optional<double> launch_m;  // [m] from the file's home
+    if (!o->launch.empty()) launch_m = moveHomeTo(m, o->launch);
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
     if (dispute) {  // the reserve is also checked for the dearer of the flights the calibration stands for
       const double base = ms::predictMission(m, v, model, ap, setup.settings).total.energy_j;
@@ -214,24 +256,32 @@ void registerPredictCommand(CLI::App& app) {
     }
     const ms::PredictSettings& ps = setup.settings;
     const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, ps);
-    std::vector<std::string> notes;
-    if (dispute) notes.push_back(disputeText(*dispute, p));
+    std::vector<std::pair<std::string, std::string>> extra;  // facts for the text, the report and the JSON
+    if (launch_m) {
+      std::ostringstream os;
+      os << std::fixed << std::setprecision(1) << *launch_m
+         << " m from the mission's home; the autopilot's home is set there and the return flies to it";
+      extra.push_back({"launch", os.str()});
+    }
+    if (dispute) extra.push_back({"calibration", disputeText(*dispute, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
     if (!o->report.empty() || !o->report_svg.empty()) {
-      writeReport(missionReport(p, ap, v, modelText(model, use_calibration), notes, *o), o->report, o->report_svg, o->force);
+      writeReport(missionReport(p, ap, v, modelText(model, use_calibration), extra, *o), o->report, o->report_svg, o->force);
     }
     if (o->json) {
       nlohmann::json j = toJson(p, ap, *o);
+      j["launch"] = nullptr;
+      if (launch_m) j["launch"] = {{"lat_deg", m.home.lat_deg}, {"lon_deg", m.home.lon_deg}, {"from_mission_home_m", *launch_m}};
       j["calibration_dispute"] = nullptr;
       if (dispute) {
         j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},
                                     {"energy_j", {dispute->energy_lo_j, dispute->energy_hi_j}},
-                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}}, {"text", notes.front()}};
+                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}}, {"text", extra.back().second}};
       }
       printJson(j);
     } else {
       printText(p, ap);
-      for (const auto& n : notes) std::cout << "calibration: " << n << "\n";
+      for (const auto& [label, text] : extra) std::cout << label << ": " << text << "\n";
     }
   });
 }

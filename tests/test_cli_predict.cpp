@@ -152,3 +152,34 @@ TEST(CliPredict, ACalibrationWhoseFlightsDisagreeGivesTheSpreadAndWidensTheMargi
   EXPECT_NE(bad.output.find("extensions.calibration.per_flight"), std::string::npos) << bad.output;
   std::remove(path.c_str());
 }
+
+TEST(CliPredict, ALaunchAwayFromTheFilesHomeIsWhereTheFlightStartsAndReturns) {
+  // Pilots arm where they stand (the shared 1449 flight armed 27 m from its file's home row):
+  // --launch moves the autopilot's home, so the take-off and the return start and end there, and
+  // the waypoints keep their latitude and longitude.
+  const std::string mission = sourcePath("tests/data/good/mission_survey.plan");
+  const std::string base = "predict " + mission + " --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --json";
+  const json at_home = runJson(base);
+  EXPECT_TRUE(at_home["launch"].is_null());
+  const json mj = json::parse(readAll(mission));
+  const double lat = mj["mission"]["plannedHomePosition"][0].get<double>(), lon = mj["mission"]["plannedHomePosition"][1].get<double>();
+  // The same point given as the launch changes nothing.
+  char same[96];
+  std::snprintf(same, sizeof same, " --launch %.8f,%.8f", lat, lon);
+  const json again = runJson(base + same);
+  EXPECT_NEAR(again["launch"]["from_mission_home_m"].get<double>(), 0.0, 1e-6);
+  EXPECT_NEAR(again["energy_j"].get<double>(), at_home["energy_j"].get<double>(), 1e-6 * at_home["energy_j"].get<double>());
+  // 300 m north of it: a longer way out and back.
+  char away[96];
+  std::snprintf(away, sizeof away, " --launch %.8f,%.8f", lat + 300.0 / 111195.0, lon);
+  const json far = runJson(base + away);
+  EXPECT_NEAR(far["launch"]["from_mission_home_m"].get<double>(), 300.0, 2.0);
+  EXPECT_GT(far["distance_m"].get<double>(), at_home["distance_m"].get<double>() + 200.0);
+  EXPECT_GT(far["phases"]["return"]["distance_m"].get<double>(), at_home["phases"]["return"]["distance_m"].get<double>());
+  // Bad values: clear errors naming --launch.
+  for (const std::string bad : {"43.7", "north,10.46", "91,10", "43.7,10.4x", "44.8,10.46"}) {
+    const RunResult r = run(cli(base + " --launch " + bad) + " 2>&1");
+    EXPECT_NE(r.status, 0) << bad;
+    EXPECT_NE(r.output.find("--launch"), std::string::npos) << bad << ": " << r.output;
+  }
+}
