@@ -250,12 +250,14 @@ void registerPredictCommand(CLI::App& app) {
     std::optional<double> launch_m;  // [m] from the file's home
     if (!o->launch.empty()) launch_m = moveHomeTo(m, o->launch);
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
+    ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
     if (dispute) {  // the reserve is also checked for the dearer of the flights the calibration stands for
-      const double base = ms::predictMission(m, v, model, ap, setup.settings).total.energy_j;
-      setup.settings.energy_margin = std::clamp(std::max(setup.settings.energy_margin, dispute->energy_hi_j / base - 1.0), 0.0, 1.0);
+      const double wider = std::clamp(dispute->energy_hi_j / p.total.energy_j - 1.0, 0.0, 1.0);
+      if (wider > setup.settings.energy_margin) {
+        setup.settings.energy_margin = wider;
+        p = ms::predictMission(m, v, model, ap, setup.settings);
+      }
     }
-    const ms::PredictSettings& ps = setup.settings;
-    const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, ps);
     std::vector<std::pair<std::string, std::string>> extra;  // facts for the text, the report and the JSON
     if (launch_m) {
       std::ostringstream os;

@@ -46,13 +46,8 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   cands.push_back({"shortest path", &r.shortest_path});
   // The ground-station default flown too (in the same batch of flights), as a baseline: never written.
   cands.push_back({"ground-station default", &r.ground_station_default});
+  scoring.as_written = {&r.ground_station_default};  // what a ground station writes: not rewritten with our speed commands
   auto scores = planner::scoreByFlight(cands, scoring);
-  // The baseline is what a ground station writes: not rewritten with our speed commands.
-  scores.erase(std::remove_if(scores.begin(), scores.end(),
-                              [&](const planner::FlightScore& s) {
-                                return s.candidate == &r.ground_station_default && s.speeds_a_waypoint_early;
-                              }),
-               scores.end());
   const auto baseline = std::stable_partition(scores.begin(), scores.end(), [&](const planner::FlightScore& s) {
     return s.candidate != &r.ground_station_default;
   });

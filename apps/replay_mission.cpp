@@ -131,7 +131,7 @@ MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given
     out.json.push_back(
         flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
     // The predicted trajectory for the report's speed figure (compareFlight keeps only its times).
-    const auto pred = mission::predictMission(calibration::missionFromLaunch(f), v, model, ap, ps);
+    const auto pred = mission::predictMission(calibration::missionLaunchedAt(f.mission, c.launch), v, model, ap, ps);
     out.report.flights.push_back(reportFlight(f, mission_paths[i], c, pred, replay_j));
   }
   return out;

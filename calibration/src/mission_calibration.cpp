@@ -331,11 +331,15 @@ mission::Mission missionFromLaunch(const MissionFlight& f, Eigen::Vector2d* offs
   const Eigen::Vector2d at = track.empty() ? Eigen::Vector2d::Zero() : Eigen::Vector2d(track.front().head<2>() - d);
   if (offset) *offset = d;
   if (launch) *launch = at;
-  mission::Mission m = f.mission;
-  const geometry::GeoPoint g = geometry::LocalFrame(f.mission.home).toGeodetic(geometry::Point(at.x(), at.y()));
-  m.home.lat_deg = g.lat_deg;
-  m.home.lon_deg = g.lon_deg;
-  return m;
+  return missionLaunchedAt(f.mission, at);
+}
+
+mission::Mission missionLaunchedAt(const mission::Mission& m, const Eigen::Vector2d& launch) {
+  mission::Mission out = m;
+  const geometry::GeoPoint g = geometry::LocalFrame(m.home).toGeodetic(geometry::Point(launch.x(), launch.y()));
+  out.home.lat_deg = g.lat_deg;
+  out.home.lon_deg = g.lon_deg;
+  return out;
 }
 
 FlightComparison compareFlight(const MissionFlight& f, const energy::Vehicle& v, const energy::EnergyModel& model,

@@ -10,7 +10,6 @@
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/mission/flight.hpp"
 #include "wattswath/energy/vehicle.hpp"
-#include "wattswath/geometry/frame.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/predict.hpp"
 
@@ -100,10 +99,7 @@ MissionFlight flownSquare(const std::string& name, double accel, const wattswath
   ms::FlightSettings fs;
   fs.dt = 0.02;
   fs.airframe = ms::airframeOfVehicle(v, v.name);
-  ms::Mission armed = f.mission;  // the autopilot's home is where it armed
-  const auto at = wattswath::geometry::LocalFrame(f.mission.home).toGeodetic(wattswath::geometry::Point(launch.x(), launch.y()));
-  armed.home.lat_deg = at.lat_deg;
-  armed.home.lon_deg = at.lon_deg;
+  const ms::Mission armed = missionLaunchedAt(f.mission, launch);  // the autopilot's home is where it armed
   const auto flown = ms::flyMission(ms::sequenceMission(armed), ap, fs);
   for (const auto& s : flown.samples) {
     wattswath::logs::LogSample l;

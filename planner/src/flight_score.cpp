@@ -64,8 +64,9 @@ std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, 
     if (!c || !c->valid) continue;
     const bool arcs = std::any_of(c->flown.path.legs.begin(), c->flown.path.legs.end(),
                                   [](const geometry::PathLeg& l) { return l.kind == geometry::PrimitiveKind::Arc; });
+    const bool baseline = std::find(s.as_written.begin(), s.as_written.end(), c) != s.as_written.end();
     for (const bool early : {false, true}) {
-      if (early && !leash) continue;  // only ArduCopter before 4.1 applies speed increases late
+      if (early && (!leash || baseline)) continue;  // only ArduCopter before 4.1 applies speed increases late
       for (const bool arc_waypoints : {false, true}) {
         if (arc_waypoints && !arcs) continue;  // the same mission
         std::vector<std::string> how;

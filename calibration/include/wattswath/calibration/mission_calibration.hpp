@@ -72,6 +72,10 @@ Eigen::Vector2d alignTrack(const std::vector<Eigen::Vector3d>& track, const std:
 mission::Mission missionFromLaunch(const MissionFlight& f, Eigen::Vector2d* offset = nullptr,
                                    Eigen::Vector2d* launch = nullptr);
 
+/// `m` with its home moved to `launch` [m] east and north of it (FlightComparison::launch), the
+/// items unchanged: the mission as the autopilot flies it after arming there.
+mission::Mission missionLaunchedAt(const mission::Mission& m, const Eigen::Vector2d& launch);
+
 /// Times of a trajectory (`t` [s], `pos` [m], `power` [W], NaN allowed when unknown) against
 /// `waypoints` [m], passages matched within `match_m` [m].
 FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos,

@@ -29,6 +29,9 @@ struct FlightScoring {
   mission::AutopilotConfig autopilot;                ///< the vehicle's autopilot
   mission::PredictSettings settings;                 ///< as predict sets them (calibrated behaviour)
   int threads = 2;                                   ///< flights simulated at once (>= 1; the results do not depend on it)
+  /// Candidates flown only as a ground station writes them (baselines): never with their speed
+  /// commands a waypoint early.
+  std::vector<const PlanCandidate*> as_written;
 };
 
 /// One candidate flown by the autopilot model.
@@ -50,7 +53,7 @@ mission::MissionPrediction flyWrittenMission(const PlanMission& written, const F
 /// chords flown by the autopilot's own cornering (unless a chord comes within the no-fly margin)
 /// and as waypoints along them (MissionOptions::arc_waypoints). For ArduCopter before 4.1 (the
 /// leash family) each of those also with its speed commands a waypoint early
-/// (MissionOptions::speeds_a_waypoint_early). Missions with the same .plan text
+/// (MissionOptions::speeds_a_waypoint_early), unless it is in FlightScoring::as_written. Missions with the same .plan text
 /// are flown once; the flights run on FlightScoring::threads threads. Throws what missionFromPlan,
 /// parseQgcPlan and predictMission throw (for the first such mission in order).
 std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, const PlanCandidate*>>& candidates,
