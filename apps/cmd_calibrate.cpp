@@ -117,6 +117,11 @@ void registerCalibrateCommand(CLI::App& app) {
       j["out"] = o->out;
       j["autopilot"] = nlohmann::json::parse(v.autopilot_json);
       j["takeoff_delay_s"] = r.takeoff_delay_s;
+      // Measured on the logs' cruise, not fitted; null when too few samples measure it.
+      j["tracking_error_m"] = r.tracking.measured ? nlohmann::json{{"horizontal", r.tracking.error.horizontal_m},
+                                                                   {"vertical", r.tracking.error.vertical_m},
+                                                                   {"samples", r.tracking.samples}}
+                                                  : nlohmann::json(nullptr);
       j["fitted"] = r.fitted;
       j["notes"] = r.notes;
       j["flights_agree"] = r.flights_agree;

@@ -17,6 +17,7 @@ PredictionSetup predictionSetup(const energy::Vehicle& v, const std::string& veh
     if (calibrated->takeoff_delay_s >= 0.0) s.settings.flight.takeoff_delay_s = calibrated->takeoff_delay_s;
     s.settings.flight.stop_at_waypoints = calibrated->stop_at_waypoints;
     s.settings.flight.speed_change_late = calibrated->speed_change_late;
+    s.settings.flight.tracking_error = calibrated->tracking_error;
     s.disputed_parameter = calibrated->disputed_parameter;
     s.disputed_values = calibrated->disputed_values;
   }

@@ -113,6 +113,7 @@ MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given
     if (cal->takeoff_delay_s >= 0.0) ps.flight.takeoff_delay_s = cal->takeoff_delay_s;
     ps.flight.stop_at_waypoints = cal->stop_at_waypoints;
     ps.flight.speed_change_late = cal->speed_change_late;
+    ps.flight.tracking_error = cal->tracking_error;
   }
   const std::string model_text = use_cal ? "the vehicle file's calibration" : "--effects";
   MissionReplays out;

@@ -99,6 +99,14 @@ TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
   // Fitting on the flight itself cannot make its time misfit worse than the starting point by much.
   EXPECT_LE(std::abs(c["after"][0]["time_error_pct"].get<double>()), std::abs(c["before"][0]["time_error_pct"].get<double>()) + 1.0);
   ASSERT_TRUE(std::filesystem::exists(out));
+  // How far the IRIS+ sat off its line in cruise is measured (not fitted), stored and flown with:
+  // 0.56 m and 0.14 m on this flight (docs/validation.md 5.2).
+  ASSERT_TRUE(c["tracking_error_m"].is_object()) << c.dump();
+  EXPECT_NEAR(c["tracking_error_m"]["horizontal"].get<double>(), 0.56, 0.05);
+  EXPECT_NEAR(c["tracking_error_m"]["vertical"].get<double>(), 0.14, 0.05);
+  EXPECT_GE(c["tracking_error_m"]["samples"].get<int>(), 20);
+  EXPECT_NEAR(json::parse(std::ifstream(out))["extensions"]["calibration"]["tracking_error_m"]["horizontal"].get<double>(),
+              c["tracking_error_m"]["horizontal"].get<double>(), 1e-12);
   // Refuses to overwrite without --force.
   EXPECT_NE(run(cli("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
                           " --mission " + mission + " --out " + out + " 2>&1")).status, 0);

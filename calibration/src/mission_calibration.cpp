@@ -10,12 +10,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "number_text.hpp"
 #include "wattswath/calibration/replay.hpp"
 #include "wattswath/geometry/frame.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 
 namespace wattswath::calibration {
 namespace {
+
+using detail::num;
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -158,23 +161,25 @@ struct Prepared {
   Eigen::Vector2d offset;
   Eigen::Vector2d launch = Eigen::Vector2d::Zero();  // [m] take-off point, east/north of the mission's home
   FlightTimes measured;
+  std::vector<double> t;                                // [s] the log's times from its first sample
+  std::vector<Eigen::Vector3d> track, velocity;         // [m], [m/s] in the mission's frame from the take-off point
 };
 
 Prepared prepare(const MissionFlight& f) {
   Prepared p;
   p.flight = &f;
   p.mission = missionFromLaunch(f, &p.offset, &p.launch);
-  std::vector<Eigen::Vector3d> track;
-  std::vector<double> t, power;
+  std::vector<double> power;
   for (const auto& s : f.log.samples) {
     // The log's frame, moved so that its first sample (the take-off point) is the origin.
-    track.push_back(s.position - Eigen::Vector3d(f.log.samples.front().position.x(), f.log.samples.front().position.y(), 0.0));
-    t.push_back(s.t - f.log.samples.front().t);
+    p.track.push_back(s.position - Eigen::Vector3d(f.log.samples.front().position.x(), f.log.samples.front().position.y(), 0.0));
+    p.velocity.push_back(s.velocity);
+    p.t.push_back(s.t - f.log.samples.front().t);
     power.push_back(samplePower(s));
   }
   p.steps = mission::sequenceMission(p.mission);
   p.waypoints = flownWaypoints(p.steps);
-  p.measured = flightTimes(t, track, power, p.waypoints);
+  p.measured = flightTimes(p.t, p.track, power, p.waypoints);
   if (!(p.measured.energy_j > 0.0)) {
     throw std::invalid_argument(f.name + ": the log has no usable power (voltage x current): it cannot be compared");
   }
@@ -359,11 +364,6 @@ template <class Cost>
 void checkAgreement(const std::vector<Prepared>& prepared, const FreeParameter& acc, const std::vector<double>& x,
                     Cost flightCost, CalibrationResult& r) {
   r.acceleration_parameter = acc.name;
-  auto num = [](double v) {
-    std::ostringstream os;
-    os << std::setprecision(3) << v;
-    return os.str();
-  };
   double lo = 1e300, hi = -1e300;
   std::ostringstream each;
   for (const auto& p : prepared) {
@@ -390,6 +390,35 @@ void checkAgreement(const std::vector<Prepared>& prepared, const FreeParameter& 
   }
 }
 
+// The flights' tracking error, pooled over their cruise samples (measured, not fitted), into `r`.
+void measureTracking(const std::vector<Prepared>& prepared, CalibrationResult& r) {
+  std::vector<double> h, v;
+  std::ostringstream each;
+  for (const auto& p : prepared) {
+    const auto& passage = p.measured.passage_s;
+    double from = kNaN, to = kNaN;
+    for (double x : passage)
+      if (std::isfinite(x)) to = x, from = std::isfinite(from) ? from : x;
+    std::vector<double> hf, vf;
+    if (std::isfinite(from)) addCruiseTrackingErrors(p.t, p.track, p.velocity, p.waypoints, from, to, hf, vf);
+    const TrackingMeasurement m = trackingFromErrors(hf, vf);
+    each << (each.tellp() > 0 ? ", " : "") << std::filesystem::path(p.flight->name).filename().string() << " "
+         << (m.measured ? num(m.error.horizontal_m) + " / " + num(m.error.vertical_m) + " m" : "too few samples");
+    h.insert(h.end(), hf.begin(), hf.end());
+    v.insert(v.end(), vf.begin(), vf.end());
+  }
+  r.tracking = trackingFromErrors(h, v);
+  if (r.tracking.measured) {
+    r.fitted.push_back("tracking error (measured, not fitted): " + num(r.tracking.error.horizontal_m) + " m horizontal, " +
+                       num(r.tracking.error.vertical_m) + " m vertical, the median of " + std::to_string(r.tracking.samples) +
+                       " cruise samples (each flight: " + each.str() + ")");
+  } else {
+    r.notes.push_back("the logs have " + std::to_string(r.tracking.samples) + " cruise samples (at least " +
+                      std::to_string(TrackingMeasurement::kMinSamples) + " needed): how far the vehicle sits off its line "
+                      "is not measured and taken as 0");
+  }
+}
+
 }  // namespace
 
 CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, const energy::Vehicle& v,
@@ -407,6 +436,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     const auto pred = mission::predictMission(p.mission, v, model, autopilot, ps);
     r.before.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
   }
+  measureTracking(prepared, r);
   // Flight behaviour: the free parameters and the take-off delay, normalised to [0, 1].
   const std::vector<FreeParameter> free = freeParameters(autopilot.family);
   const double kMaxDelay = 10.0;
@@ -426,6 +456,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     fs.airframe = airframe;
     fs.stop_at_waypoints = variant & 1;
     fs.speed_change_late = variant & 2;
+    fs.tracking_error = r.tracking.error;
     apply(x, ap, fs.takeoff_delay_s);
     try {
       return timeCost(p.measured, predictedTimes(mission::flyMission(p.steps, ap, fs), {}, p.waypoints));
@@ -499,6 +530,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   after.flight.takeoff_delay_s = r.takeoff_delay_s;
   after.flight.stop_at_waypoints = r.stop_at_waypoints;
   after.flight.speed_change_late = r.speed_change_late;
+  after.flight.tracking_error = r.tracking.error;
   for (const auto& p : prepared) {
     const auto pred = mission::predictMission(p.mission, v, r.model, r.autopilot, after);
     r.after.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
@@ -511,6 +543,11 @@ std::string calibrationToJson(const CalibrationResult& r) {
   j["takeoff_delay_s"] = r.takeoff_delay_s;
   j["stop_at_waypoints"] = r.stop_at_waypoints;
   j["speed_change_late"] = r.speed_change_late;
+  if (r.tracking.measured) {
+    j["tracking_error_m"] = {{"horizontal", r.tracking.error.horizontal_m},
+                             {"vertical", r.tracking.error.vertical_m},
+                             {"samples", r.tracking.samples}};
+  }
   j["effects"] = r.model.effectNames();
   for (const auto& e : r.model.effects())
     for (const auto& c : e->coefficients()) j["coefficients"][e->name()][c.name] = c.value;
@@ -554,6 +591,18 @@ std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v) {
   cm.takeoff_delay_s = j.value("takeoff_delay_s", -1.0);
   cm.stop_at_waypoints = j.value("stop_at_waypoints", false);
   cm.speed_change_late = j.value("speed_change_late", false);
+  if (j.contains("tracking_error_m")) {
+    const auto& te = j["tracking_error_m"];
+    auto metres = [&](const char* key) {
+      if (!te.is_object() || !te.contains(key) || !te[key].is_number() || !(te[key].get<double>() >= 0.0) ||
+          !(te[key].get<double>() <= 20.0)) {
+        throw std::invalid_argument(where + ".tracking_error_m." + key + " = " + (te.is_object() && te.contains(key) ? te[key].dump() : "missing") +
+                                    ", expected a distance of 0..20 m");
+      }
+      return te[key].get<double>();
+    };
+    cm.tracking_error = {metres("horizontal"), metres("vertical")};
+  }
   if (!j.value("flights_agree", true) && j.contains("per_flight")) {
     const auto& pf = j["per_flight"];
     if (!pf.is_object() || !pf.contains("parameter") || !pf["parameter"].is_string() || !pf.contains("values") ||

@@ -161,3 +161,50 @@ TEST(MissionCalibration, TheFlightIsPredictedFromWhereTheLogTookOffNotFromTheFil
   const auto from_file = wattswath::mission::predictMission(f.mission, v, model, ap);
   EXPECT_GT(std::abs(from_file.total.time_s - c.measured.total_s), 3.0);  // what the comparison used to predict
 }
+
+TEST(MissionCalibration, TrackingErrorIsTheMedianCruiseDistanceFromTheLegsCornersAndHoversLeftOut) {
+  // A square flown at 5 m/s, swinging 0.8 m either side of its line and 0.3 m above and below it;
+  // within 10 m of a corner it is 3 m off (the model flies corners itself), and a stretch flown
+  // at 1 m/s is 4 m off (hovering is not cruise). The medians are the swing.
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> pos, vel;
+  const std::vector<Eigen::Vector3d> wps = {{0, 0, 10}, {100, 0, 10}, {100, 100, 10}, {0, 100, 10}, {0, 0, 10}};
+  int k = 0;
+  for (std::size_t c = 1; c < wps.size(); ++c) {
+    const Eigen::Vector3d u = (wps[c] - wps[c - 1]) / 100.0, n(-u.y(), u.x(), 0.0);
+    for (double s = 0.0; s < 100.0; s += 0.5, ++k) {
+      const bool corner = s < 10.0 || s > 90.0, slow = c == 3 && s > 40.0 && s < 60.0;
+      const double side = (k % 2 ? 1.0 : -1.0) * (corner ? 3.0 : slow ? 4.0 : 0.8);
+      pos.push_back(wps[c - 1] + u * s + n * side + Eigen::Vector3d(0, 0, k % 3 ? 0.3 : -0.3));
+      vel.push_back(u * (slow ? 1.0 : 5.0));
+      t.push_back(0.1 * k);
+    }
+  }
+  const TrackingMeasurement m = measureTrackingError(t, pos, vel, wps, 0.0, 1e9);
+  ASSERT_TRUE(m.measured);
+  EXPECT_NEAR(m.error.horizontal_m, 0.8, 1e-9);
+  EXPECT_NEAR(m.error.vertical_m, 0.3, 1e-9);
+  EXPECT_EQ(m.samples, 4 * 161 - 39);  // 10 to 90 m along each side, less the slow stretch
+  // Outside the passages' time window nothing is cruise; too few samples measure nothing.
+  const TrackingMeasurement none = measureTrackingError(t, pos, vel, wps, 0.0, 1.5);
+  EXPECT_FALSE(none.measured);
+  EXPECT_EQ(none.error.horizontal_m, 0.0);
+}
+
+TEST(MissionCalibration, TheStoredTrackingErrorIsReadBackAndAMalformedOneNamesItsField) {
+  auto v = wattswath::energy::loadVehicle(wattswath::test::sourcePath("data/vehicles/iris-plus-arducopter3.json"));
+  v.extensions["calibration"] = R"({"effects":["hover"],"tracking_error_m":{"horizontal":0.6,"vertical":0.15,"samples":200}})";
+  const auto cm = calibratedModel(v);
+  ASSERT_TRUE(cm.has_value());
+  EXPECT_DOUBLE_EQ(cm->tracking_error.horizontal_m, 0.6);
+  EXPECT_DOUBLE_EQ(cm->tracking_error.vertical_m, 0.15);
+  v.extensions["calibration"] = R"({"effects":["hover"],"tracking_error_m":{"horizontal":-1,"vertical":0.15}})";
+  try {
+    calibratedModel(v);
+    FAIL() << "a negative tracking error was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("tracking_error_m.horizontal = -1"), std::string::npos) << e.what();
+  }
+  v.extensions["calibration"] = R"({"effects":["hover"]})";
+  EXPECT_EQ(calibratedModel(v)->tracking_error.horizontal_m, 0.0);  // older files: on the line
+}

@@ -28,6 +28,11 @@ void validate(const FlightSettings& s) {
                                 std::to_string(a.drag_quadratic_per_m) + " 1/m, response " + std::to_string(a.response_s) +
                                 " s; expected 0..10 1/s, 0..1 1/m, 0..2 s");
   }
+  const TrackingError& e = s.tracking_error;
+  if (!(e.horizontal_m >= 0.0 && e.horizontal_m <= 20.0) || !(e.vertical_m >= 0.0 && e.vertical_m <= 20.0)) {
+    throw std::invalid_argument("FlightSettings.tracking_error: " + std::to_string(e.horizontal_m) + " m horizontal, " +
+                                std::to_string(e.vertical_m) + " m vertical; expected 0..20 m each");
+  }
   if (!(s.takeoff_delay_s <= 60.0)) {
     throw std::invalid_argument("FlightSettings.takeoff_delay_s = " + std::to_string(s.takeoff_delay_s) + " s, expected <= 60");
   }

@@ -27,6 +27,7 @@ struct Params {
   double rtl_alt, rtl_alt_final, rtl_climb_min, rtl_loiter_s, land_speed, land_alt_low, spool_s;
   bool linear_slack;  // before 3.4: the leash slack shrinks linearly with the cross-track error
   double leash_up, leash_dn;  // [m] the position controller's vertical leashes (climbing, descending)
+  TrackingError tracking;     // [m] the vehicle's typical distance off its line (FlightSettings)
 };
 
 // True for ArduCopter versions before 3.4 ("3.2", "3.3.3"), whose advance_wp_target_along_track
@@ -119,9 +120,15 @@ void advanceCarrot(Leg& g, const Vehicle& veh, const Params& P, double dt) {
   // as a fraction of the position controller's own leashes (horizontal, and up or down) scales
   // the track leash; before 3.4 the slack is the track leash minus that scaled error, from 3.4 on
   // the other side of the right triangle whose hypotenuse is the track leash. 0 beyond the leash.
+  // The vehicle's typical distance off its line (FlightSettings::tracking_error, noise the
+  // simulation does not fly) is added in quadrature to the simulated error; a vertical error is
+  // above the line (the climb leash) as often as below it (the descent leash).
   const Eigen::Vector3d err = rel - g.u * covered;
   const double leash_z = err.z() >= 0.0 ? P.leash_up : P.leash_dn;
-  const double scaled_err = std::max(g.leash * err.head<2>().norm() / g.pos_leash, g.leash * std::abs(err.z()) / leash_z);
+  const double noise_z = P.tracking.vertical_m * 0.5 * (1.0 / P.leash_up + 1.0 / P.leash_dn);
+  const double err_xy = std::hypot(err.head<2>().norm(), P.tracking.horizontal_m);
+  const double scaled_err =
+      g.leash * std::max(err_xy / g.pos_leash, std::hypot(std::abs(err.z()) / leash_z, noise_z));
   const double slack = scaled_err >= g.leash ? 0.0
                        : P.linear_slack ? g.leash - scaled_err
                                         : std::sqrt(g.leash * g.leash - scaled_err * scaled_err);
@@ -232,7 +239,8 @@ void land(Recorder& rec, const Params& P, int step, const FlightSettings& s) {
 }  // namespace
 
 FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
-  const Params P = readParams(ap);
+  Params P = readParams(ap);
+  P.tracking = s.tracking_error;
   Recorder rec(s, steps.size());
   rec.startOnGround(P.spool_s);
   Flyer f{rec, P, s.airframe, {}, P.speed};  // wp_and_spline_init sets the leash from WPNAV_SPEED
@@ -285,6 +293,11 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
     rec.note(std::to_string(f.late_increases) + " leg(s) are commanded faster than the leg before: ArduCopter " + ap.version +
              " applies a speed increase only from the next waypoint on (the leg's leash is computed before the new speed "
              "takes effect), and the prediction flies them so: near the previous leg's speed");
+  }
+  if (P.tracking.horizontal_m > 0.0 || P.tracking.vertical_m > 0.0) {
+    rec.note("the vehicle is taken to sit " + detail::num(P.tracking.horizontal_m) + " m off its line horizontally and " +
+             detail::num(P.tracking.vertical_m) + " m vertically (measured on logs): ArduCopter " + ap.version + " shortens " +
+             "the carrot's lead by it" + (P.linear_slack ? ", which slows the cruise" : ", a small effect from 3.4 on"));
   }
   rec.note("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + detail::num(P.accel) + " m/s/s, lean-limited acceleration " +
            detail::num(P.accel_max) + " m/s/s, attitude lag " + detail::num(kAttitudeLag) +

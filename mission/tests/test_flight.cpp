@@ -244,6 +244,48 @@ TEST(ArduCopterLeash, SpeedIncreaseTakesEffectOneWaypointLateADecreaseAtOnce) {
   EXPECT_TRUE(said);
 }
 
+// Mean horizontal speed [m/s] of the samples between x0 and x1 [m] east.
+double cruiseSpeedBetween(const FlownMission& f, double x0, double x1) {
+  double sum = 0.0;
+  int n = 0;
+  for (const auto& s : f.samples)
+    if (s.position.x() >= x0 && s.position.x() <= x1 && s.position.z() > 9.0) sum += s.velocity.head<2>().norm(), ++n;
+  return n > 0 ? sum / n : 0.0;
+}
+
+TEST(ArduCopterLeash, ATrackingErrorSlowsTheCruiseBefore34AsTheLeashSlackSays) {
+  // Hand-worked (WPNAV_SPEED 5 m/s, WPNAV_ACCEL 1 m/s^2, POS_XY_P 1/s): the leash is
+  // A / (2 kP^2) + V^2 / (2 A) = 13 m, and in cruise the carrot runs a leash ahead, where the
+  // square-root controller asks sqrt(2 A (13 - 0.5)) = 5 m/s. Before 3.4 the slack is the leash
+  // minus the cross-track error: 1 m off the line leaves 12 m, sqrt(2 (12 - 0.5)) = 4.80 m/s. A
+  // vertical 0.3 m, above the line as often as below, counts against the 3.625 m climb and the
+  // 1.625 m descent leash: 13 x 0.3 x (1 / 3.625 + 1 / 1.625) / 2 = 1.74 m, sqrt(2 (11.26 - 0.5)) = 4.64 m/s.
+  // From 3.4 the slack is sqrt(13^2 - 1^2) = 12.96 m: 4.99 m/s.
+  const auto steps = sequenceMission(localMission({{400, 0, 10}}));
+  const AutopilotConfig v32 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.2"})", "test");
+  const AutopilotConfig v34 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.4"})", "test");
+  FlightSettings off;
+  off.tracking_error.horizontal_m = 1.0;
+  EXPECT_NEAR(cruiseSpeedBetween(flyMission(steps, v32), 150, 300), 5.0, 0.03);
+  EXPECT_NEAR(cruiseSpeedBetween(flyMission(steps, v32, off), 150, 300), 4.80, 0.03);
+  EXPECT_NEAR(cruiseSpeedBetween(flyMission(steps, v34, off), 150, 300), 4.99, 0.03);
+  FlightSettings high;
+  high.tracking_error.vertical_m = 0.3;
+  EXPECT_NEAR(cruiseSpeedBetween(flyMission(steps, v32, high), 150, 300), 4.64, 0.03);
+  // The prediction says what it assumed.
+  bool said = false;
+  for (const auto& n : flyMission(steps, v32, off).notes) said = said || n.find("1 m off its line horizontally") != std::string::npos;
+  EXPECT_TRUE(said);
+  // Out of range is an error naming the field.
+  off.tracking_error.horizontal_m = -0.1;
+  try {
+    flyMission(steps, v32, off);
+    FAIL() << "a negative tracking error was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("tracking_error"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ArduCopterLeash, ReturnFromAboveRtlAltFliesHomeAndLands) {
   // Above RTL_ALT (15 m) the RTL climb leg is (nearly) zero long; it used to wait for a carrot
   // that never moves until the 6 h limit.

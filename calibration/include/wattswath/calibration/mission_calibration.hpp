@@ -85,6 +85,30 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
 /// The waypoints of a sequenced mission that the vehicle flies to (ENU [m]), in order.
 std::vector<Eigen::Vector3d> flownWaypoints(const std::vector<mission::NavStep>& steps);
 
+/// How far a logged vehicle sat off the legs it flew (mission::FlightSettings::tracking_error).
+struct TrackingMeasurement {
+  static constexpr int kMinSamples = 20;  ///< fewer cruise samples measure nothing
+  mission::TrackingError error;           ///< [m] medians; 0 when not measured
+  int samples = 0;                        ///< cruise samples used
+  bool measured = false;                  ///< true with at least kMinSamples samples
+};
+
+/// Appends, for each cruise sample of a track (time `t` [s], `pos` [m], `vel` [m/s]) between
+/// `from_s` and `to_s` [s] (the first and last waypoint passage), its horizontal and vertical
+/// distance [m] from the nearest leg between consecutive `waypoints`. Cruise: at least 1.5 m/s
+/// horizontally and 10 m or more from every waypoint (the model flies the corners itself).
+void addCruiseTrackingErrors(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos,
+                             const std::vector<Eigen::Vector3d>& vel, const std::vector<Eigen::Vector3d>& waypoints,
+                             double from_s, double to_s, std::vector<double>& horizontal, std::vector<double>& vertical);
+
+/// The medians of distances addCruiseTrackingErrors collected (over one flight or several).
+TrackingMeasurement trackingFromErrors(const std::vector<double>& horizontal, const std::vector<double>& vertical);
+
+/// One track's tracking error: addCruiseTrackingErrors, then trackingFromErrors.
+TrackingMeasurement measureTrackingError(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos,
+                                         const std::vector<Eigen::Vector3d>& vel,
+                                         const std::vector<Eigen::Vector3d>& waypoints, double from_s, double to_s);
+
 /// Compares `f` with its prediction by `model` flown by `autopilot` (with `settings`).
 FlightComparison compareFlight(const MissionFlight& f, const energy::Vehicle& v, const energy::EnergyModel& model,
                                const mission::AutopilotConfig& autopilot, const mission::PredictSettings& settings = {});
@@ -113,6 +137,7 @@ struct CalibrationResult {
   double takeoff_delay_s = 0.0;           ///< [s] fitted delay from the take-off command to lift-off
   bool stop_at_waypoints = false;         ///< true when stopping at every waypoint fits the logs better
   bool speed_change_late = false;         ///< true when speed changes a waypoint late fit the logs better
+  TrackingMeasurement tracking;           ///< measured on the flights' cruise (not fitted), all flights pooled
   energy::EnergyModel model;              ///< with fitted coefficients
   std::vector<std::string> fitted;        ///< "NAME: before -> after unit" per parameter
   std::vector<FlightComparison> before;   ///< per flight, uncalibrated
@@ -139,6 +164,7 @@ struct CalibratedModel {
   double takeoff_delay_s = -1.0; ///< [s] fitted take-off delay (< 0: none)
   bool stop_at_waypoints = false; ///< the calibrated corner behaviour (FlightSettings::stop_at_waypoints)
   bool speed_change_late = false; ///< the calibrated speed-change timing (FlightSettings::speed_change_late)
+  mission::TrackingError tracking_error;  ///< [m] measured (FlightSettings::tracking_error); 0 when absent
   /// The acceleration parameter the calibration's flights disagreed on (CalibrationResult::
   /// flights_agree false), empty when they agreed or there was one flight.
   std::string disputed_parameter;

@@ -94,6 +94,12 @@ struct Airframe {
 /// no rotor drag term (the energy model has none), the default response time.
 Airframe airframeOf(double drag_area_m2, double mass_kg, double air_density_kgpm3);
 
+/// Typical distance [m] of a vehicle from the line it follows, horizontally and vertically.
+struct TrackingError {
+  double horizontal_m = 0.0;  ///< [m] median cross-track distance in cruise; 0..20
+  double vertical_m = 0.0;    ///< [m] median height error in cruise; 0..20
+};
+
 /// Settings of the simulation.
 struct FlightSettings {
   double dt = 0.01;         ///< [s] simulation step (the autopilots run at 100-400 Hz); 0.001..0.05
@@ -109,6 +115,10 @@ struct FlightSettings {
   /// Apply each DO_CHANGE_SPEED one waypoint later than AP_Mission's order says (to the leg after
   /// the one it precedes): what the IRIS+ ArduCopter 3.x logs show (calibration decides)
   bool speed_change_late = false;
+  /// How far the vehicle typically sits off the line it is told to fly (GPS and EKF noise, gusts),
+  /// measured on logs by calibration; 0: on the line. ArduCopter before 3.4 shortens the carrot's
+  /// lead by it, which slows the cruise (the leash model); the other models do not use it.
+  TrackingError tracking_error;
   Airframe airframe;  ///< how the vehicle follows its autopilot (S-curve model)
 };
 
