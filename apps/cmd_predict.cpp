@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cli.hpp"
+#include "predict_spread.hpp"
 #include "prediction_setup.hpp"
 #include "report_data.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
@@ -161,42 +162,6 @@ double moveHomeTo(ms::Mission& m, const std::string& launch) {
   return d;
 }
 
-// The mission flown with each extreme of a parameter the calibration's flights disagreed on
-// (PredictionSetup::disputed_parameter): how far apart the predictions the flights stand for are.
-struct Dispute {
-  std::string parameter;
-  double lo = 0.0, hi = 0.0;  // the flights' own values [the parameter's unit]
-  double energy_lo_j = 0.0, energy_hi_j = 0.0, time_lo_s = 0.0, time_hi_s = 0.0;  // over the two flights
-};
-
-std::optional<Dispute> disputeOf(const ms::Mission& m, const en::Vehicle& v, const PredictionSetup& setup) {
-  if (setup.disputed_parameter.empty() || setup.disputed_values.size() < 2) return std::nullopt;
-  const auto [a, b] = std::minmax_element(setup.disputed_values.begin(), setup.disputed_values.end());
-  Dispute d{setup.disputed_parameter, *a, *b, 1e300, -1e300, 1e300, -1e300};
-  ms::PredictSettings ps = setup.settings;
-  ps.energy_margin = 0.0;
-  for (const double x : {d.lo, d.hi}) {
-    ms::AutopilotConfig ap = setup.autopilot;
-    ap.parameters[d.parameter] = x;
-    const ms::MissionPrediction p = ms::predictMission(m, v, setup.model, ap, ps);
-    d.energy_lo_j = std::min(d.energy_lo_j, p.total.energy_j), d.energy_hi_j = std::max(d.energy_hi_j, p.total.energy_j);
-    d.time_lo_s = std::min(d.time_lo_s, p.total.time_s), d.time_hi_s = std::max(d.time_hi_s, p.total.time_s);
-  }
-  return d;
-}
-
-// One sentence on the dispute, relative to prediction `p`.
-std::string disputeText(const Dispute& d, const ms::MissionPrediction& p) {
-  std::ostringstream os;
-  os << std::setprecision(3) << "the calibration's flights disagree on " << d.parameter << " (each wants " << d.lo << " to " << d.hi
-     << "): flown with each, " << std::fixed << std::setprecision(1) << d.energy_lo_j / 3600.0 << " to " << d.energy_hi_j / 3600.0
-     << " Wh (" << std::showpos << 100.0 * (d.energy_lo_j / p.total.energy_j - 1.0) << " to "
-     << 100.0 * (d.energy_hi_j / p.total.energy_j - 1.0) << std::noshowpos << " %), " << minutesSeconds(d.time_lo_s) << " to "
-     << minutesSeconds(d.time_hi_s) << " min:s; the prediction is the joint value's, and the reserve is checked with "
-     << std::setprecision(0) << 100.0 * p.battery.energy_margin << " % more energy";
-  return os.str();
-}
-
 std::string samplesCsv(const ms::MissionPrediction& p) {
   std::ostringstream os;
   os.precision(10);
@@ -250,13 +215,16 @@ void registerPredictCommand(CLI::App& app) {
     std::optional<double> launch_m;  // [m] from the file's home
     if (!o->launch.empty()) launch_m = moveHomeTo(m, o->launch);
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
+    const std::optional<Coverage> coverage = coverageOf(m, v, setup);
     ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
-    if (dispute) {  // the reserve is also checked for the dearer of the flights the calibration stands for
-      const double wider = std::clamp(dispute->energy_hi_j / p.total.energy_j - 1.0, 0.0, 1.0);
-      if (wider > setup.settings.energy_margin) {
-        setup.settings.energy_margin = wider;
-        p = ms::predictMission(m, v, model, ap, setup.settings);
-      }
+    // The reserve is also checked for the dearer of the flights the calibration stands for, and for
+    // the behaviour before the calibration when the mission is outside what it flew.
+    double dearest = dispute ? dispute->energy_hi_j : 0.0;
+    if (coverage) dearest = std::max(dearest, coverage->energy_j);
+    const double wider = std::clamp(dearest / p.total.energy_j - 1.0, 0.0, 1.0);
+    if (wider > setup.settings.energy_margin) {
+      setup.settings.energy_margin = wider;
+      p = ms::predictMission(m, v, model, ap, setup.settings);
     }
     std::vector<std::pair<std::string, std::string>> extra;  // facts for the text, the report and the JSON
     if (launch_m) {
@@ -266,6 +234,7 @@ void registerPredictCommand(CLI::App& app) {
       extra.push_back({"launch", os.str()});
     }
     if (dispute) extra.push_back({"calibration", disputeText(*dispute, p)});
+    if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
     if (!o->report.empty() || !o->report_svg.empty()) {
       writeReport(missionReport(p, ap, v, modelText(model, use_calibration), extra, *o), o->report, o->report_svg, o->force);
@@ -278,7 +247,14 @@ void registerPredictCommand(CLI::App& app) {
       if (dispute) {
         j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},
                                     {"energy_j", {dispute->energy_lo_j, dispute->energy_hi_j}},
-                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}}, {"text", extra.back().second}};
+                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}}, {"text", disputeText(*dispute, p)}};
+      }
+      // null: uncalibrated, or the mission is of the kind the calibration flew (or the file predates the check).
+      j["calibration_coverage"] = nullptr;
+      if (coverage) {
+        j["calibration_coverage"] = {{"outside", coverage->reasons},
+                                     {"behaviour_before", {{"energy_j", coverage->energy_j}, {"time_s", coverage->time_s}}},
+                                     {"text", coverageText(*coverage, p)}};
       }
       printJson(j);
     } else {

@@ -2,9 +2,12 @@
 // How `predict` and `plan` fly a mission for a vehicle file: the energy model (the file's
 // calibration when it has one and no --effects is given, else the listed effects), its autopilot
 // and the calibrated flight behaviour. One place, so plan and predict agree.
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "wattswath/calibration/coverage.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/mission/predict.hpp"
@@ -19,6 +22,9 @@ struct PredictionSetup {
   bool calibrated = false;              ///< true when the file's calibration is used
   std::string disputed_parameter;       ///< the calibration's flights disagreed on it (empty: no dispute)
   std::vector<double> disputed_values;  ///< each calibration flight's own value of it
+  /// What the calibration flights flew (nothing without a calibration, or from files before 2026-11-25).
+  std::optional<calibration::MissionKind> coverage;
+  std::map<std::string, double> behaviour_before;  ///< the calibrated behaviour parameters' values before it
 };
 
 /// The prediction setup of vehicle `v` read from `vehicle_path`; `effects` (comma list, empty: the

@@ -68,6 +68,8 @@ def row(binary, vehicle, f, measured, effects=None):
         "legs": m["legs_matched"],
         "kinematics_error_j": m["kinematics_error_j"],
         "physics_error_j": m["physics_error_j"],
+        "coverage": p.get("calibration_coverage"),
+        "dispute": p.get("calibration_dispute"),
     }
 
 
@@ -100,6 +102,11 @@ def main():
         print(f"| {r['flight']} | {m} | {r['energy_j'] / 1000:.1f} | {r['energy_error_pct']:+.1f} | {r['time_s']:.0f} | "
               f"{r['time_error_pct']:+.1f} | {r['time_from_spin_up_error_pct']:+.1f} ({r['pilot_wait_s']:.1f}) | {r['leg_time_mape_pct']:.1f} ({r['legs']}) | "
               f"{r['kinematics_error_j'] / 1000:+.1f} / {r['physics_error_j'] / 1000:+.1f} |")
+    print()
+    for m, r in rows:
+        for key, what in (("dispute", "calibration dispute"), ("coverage", "calibration coverage")):
+            if r.get(key):
+                print(f"- {r['flight']}, {m}, {what}: {r[key]['text']}")
     print()
     for m, r in rows:
         if "fitted" in r:

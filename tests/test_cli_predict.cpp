@@ -161,6 +161,60 @@ TEST(CliPredict, ACalibrationWhoseFlightsDisagreeGivesTheSpreadAndWidensTheMargi
   std::remove(path.c_str());
 }
 
+TEST(CliPredict, AMissionOfAnotherKindThanTheCalibrationsIsSaidToBeOutsideItAndFlownWithTheBehaviourBefore) {
+  // The calibration flew only fast waypoints at 4-6 m/s (as the IRIS+ October flights) and moved
+  // WPNAV_ACCEL from 60 to 250 cm/s/s; the mission stops 2 s at each waypoint. predict says the
+  // mission is outside the calibration, flies it with the behaviour before (WPNAV_ACCEL 60: slower,
+  // dearer) and checks the reserve for that.
+  json v = json::parse(readAll(sourcePath("data/vehicles/iris-plus-arducopter3.json")));
+  v["autopilot"]["parameters"]["WPNAV_ACCEL"] = 250;
+  v["extensions"]["calibration"] = {{"effects", {"hover", "kinetic", "parasitic_drag"}},
+                                    {"coverage", {{"stop_waypoints", 0}, {"fast_waypoints", 40}, {"speed_mps", {4.0, 6.0}}}},
+                                    {"behaviour_before", {{"WPNAV_ACCEL", 60}}}};
+  const std::string path = tempPath("coverage_vehicle.json"), mission = tempPath("coverage_stops.waypoints");
+  std::ofstream(path) << v.dump();
+  {
+    std::ofstream w(mission);
+    w << "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t43.7\t10.4\t0\t1\n1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n"
+      << "2\t0\t2\t178\t1\t5\t-1\t0\t0\t0\t0\t1\n";
+    for (int i = 0; i < 4; ++i)
+      w << 3 + i << "\t0\t3\t16\t2\t0\t0\t0\t" << 43.7 + 0.0009 * (i % 2 ? 1 : 0) << "\t" << 10.4 + 0.0012 * (i / 2 + 1)
+        << "\t10\t1\n";
+    w << "7\t0\t0\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  }
+  const json j = runJson("predict " + mission + " --vehicle " + path + " --json --energy-margin 1");
+  ASSERT_TRUE(j["calibration_coverage"].is_object()) << j.dump();
+  const auto& c = j["calibration_coverage"];
+  ASSERT_EQ(c["outside"].size(), 1u);
+  EXPECT_NE(c["outside"][0].get<std::string>().find("stops at 4 waypoint(s) with a hold time"), std::string::npos) << c.dump();
+  const double e = j["energy_j"].get<double>(), before = c["behaviour_before"]["energy_j"].get<double>();
+  EXPECT_GT(before, e);  // WPNAV_ACCEL 60 flies the stops slower
+  EXPECT_GT(c["behaviour_before"]["time_s"].get<double>(), j["time_s"].get<double>());
+  EXPECT_NEAR(j["battery"]["energy_margin"].get<double>(), before / e - 1.0, 1e-9);
+  EXPECT_NE(c["text"].get<std::string>().find("outside what the calibration flew"), std::string::npos);
+  // A calibration that flew stops covers it: no note, the margin as asked.
+  v["extensions"]["calibration"]["coverage"]["stop_waypoints"] = 12;
+  std::ofstream(path) << v.dump();
+  const json inside = runJson("predict " + mission + " --vehicle " + path + " --json --energy-margin 1");
+  EXPECT_TRUE(inside["calibration_coverage"].is_null());
+  EXPECT_NEAR(inside["battery"]["energy_margin"].get<double>(), 0.01, 1e-12);
+  // ... but not 10 m/s, beyond its 4-6 m/s by more than 10 %.
+  v["extensions"]["calibration"]["coverage"]["speed_mps"] = {4.0, 4.4};
+  std::ofstream(path) << v.dump();
+  const json faster = runJson("predict " + mission + " --vehicle " + path + " --json");
+  ASSERT_TRUE(faster["calibration_coverage"].is_object());
+  EXPECT_NE(faster["calibration_coverage"]["outside"][0].get<std::string>().find("commands 5 to 5 m/s"), std::string::npos)
+      << faster["calibration_coverage"].dump();
+  // A malformed record is an error naming the field.
+  v["extensions"]["calibration"]["coverage"]["speed_mps"] = {6.0, 4.0};
+  std::ofstream(path) << v.dump();
+  const RunResult bad = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("extensions.calibration.coverage"), std::string::npos) << bad.output;
+  std::remove(path.c_str());
+  std::remove(mission.c_str());
+}
+
 TEST(CliPredict, ALaunchAwayFromTheFilesHomeIsWhereTheFlightStartsAndReturns) {
   // Pilots arm where they stand (the shared 1449 flight armed 27 m from its file's home row):
   // --launch moves the autopilot's home, so the take-off and the return start and end there, and

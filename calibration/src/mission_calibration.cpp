@@ -419,6 +419,35 @@ void measureTracking(const std::vector<Prepared>& prepared, CalibrationResult& r
   }
 }
 
+// extensions.calibration's `coverage` and `behaviour_before` (absent in files before 2026-11-25).
+void readCoverage(const nlohmann::json& j, const std::string& where, CalibratedModel& cm) {
+  if (j.contains("coverage")) {
+    const auto& c = j["coverage"];
+    const bool ok = c.is_object() && c.contains("stop_waypoints") && c["stop_waypoints"].is_number_integer() &&
+                    c["stop_waypoints"].get<long>() >= 0 && c.contains("fast_waypoints") &&
+                    c["fast_waypoints"].is_number_integer() && c["fast_waypoints"].get<long>() >= 0 && c.contains("speed_mps") &&
+                    c["speed_mps"].is_array() && c["speed_mps"].size() == 2 && c["speed_mps"][0].is_number() &&
+                    c["speed_mps"][1].is_number() && c["speed_mps"][0].get<double>() >= 0.0 &&
+                    c["speed_mps"][1].get<double>() >= c["speed_mps"][0].get<double>();
+    if (!ok) {
+      throw std::invalid_argument(where + ".coverage = " + c.dump() +
+                                  ", expected {\"stop_waypoints\": N, \"fast_waypoints\": N, \"speed_mps\": [low, high]}");
+    }
+    cm.coverage = MissionKind{c["stop_waypoints"].get<int>(), c["fast_waypoints"].get<int>(), c["speed_mps"][0].get<double>(),
+                              c["speed_mps"][1].get<double>()};
+  }
+  if (j.contains("behaviour_before")) {
+    const auto& b = j["behaviour_before"];
+    if (!b.is_object()) throw std::invalid_argument(where + ".behaviour_before = " + b.dump() + ", expected {NAME: value}");
+    for (const auto& [name, value] : b.items()) {
+      if (!value.is_number() || !std::isfinite(value.get<double>())) {
+        throw std::invalid_argument(where + ".behaviour_before." + name + " = " + value.dump() + ", expected a number");
+      }
+      cm.behaviour_before[name] = value.get<double>();
+    }
+  }
+}
+
 }  // namespace
 
 CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, const energy::Vehicle& v,
@@ -437,6 +466,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     r.before.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
   }
   measureTracking(prepared, r);
+  for (const auto& p : prepared) r.coverage = combine(r.coverage, missionKind(p.steps, autopilot));
   // Flight behaviour: the free parameters and the take-off delay, normalised to [0, 1].
   const std::vector<FreeParameter> free = freeParameters(autopilot.family);
   const double kMaxDelay = 10.0;
@@ -445,6 +475,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     delay = x.back() * kMaxDelay;
   };
   std::vector<double> x0;
+  for (const auto& fp : free) r.behaviour_before[fp.name] = autopilot.get(fp.name);
   for (const auto& fp : free) x0.push_back(std::clamp((autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo), 0.0, 1.0));
   x0.push_back(0.05);
   const mission::Airframe airframe = mission::airframeOfVehicle(v, v.name);  // once, not per evaluation
@@ -548,6 +579,10 @@ std::string calibrationToJson(const CalibrationResult& r) {
                              {"vertical", r.tracking.error.vertical_m},
                              {"samples", r.tracking.samples}};
   }
+  j["coverage"] = {{"stop_waypoints", r.coverage.stop_waypoints},
+                   {"fast_waypoints", r.coverage.fast_waypoints},
+                   {"speed_mps", {r.coverage.speed_lo_mps, r.coverage.speed_hi_mps}}};
+  j["behaviour_before"] = r.behaviour_before;
   j["effects"] = r.model.effectNames();
   for (const auto& e : r.model.effects())
     for (const auto& c : e->coefficients()) j["coefficients"][e->name()][c.name] = c.value;
@@ -603,6 +638,7 @@ std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v) {
     };
     cm.tracking_error = {metres("horizontal"), metres("vertical")};
   }
+  readCoverage(j, where, cm);
   if (!j.value("flights_agree", true) && j.contains("per_flight")) {
     const auto& pf = j["per_flight"];
     if (!pf.is_object() || !pf.contains("parameter") || !pf["parameter"].is_string() || !pf.contains("values") ||

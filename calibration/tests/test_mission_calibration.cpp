@@ -208,3 +208,42 @@ TEST(MissionCalibration, TheStoredTrackingErrorIsReadBackAndAMalformedOneNamesIt
   v.extensions["calibration"] = R"({"effects":["hover"]})";
   EXPECT_EQ(calibratedModel(v)->tracking_error.horizontal_m, 0.0);  // older files: on the line
 }
+
+TEST(CalibrationCoverage, WaypointKindsAndSpeedsAreCountedAndTheOutsideIsSaidWhy) {
+  using wattswath::mission::NavStep;
+  const auto ap = wattswath::mission::parseAutopilot(R"({"firmware":"ArduCopter","version":"3.2"})", "test");
+  auto step = [](NavStep::Kind k, Eigen::Vector3d at, double hold, double speed) {
+    NavStep s;
+    s.kind = k;
+    s.target = at;
+    s.hold_s = hold;
+    s.speed_xy = speed;
+    return s;
+  };
+  // Take-off, two fast legs (the second at the default WPNAV_SPEED, 5 m/s), a 2 s stop at 8 m/s,
+  // a climb on the spot (no horizontal leg), RTL.
+  const std::vector<NavStep> steps = {step(NavStep::Kind::Takeoff, {0, 0, 10}, 0, 0),
+                                      step(NavStep::Kind::Waypoint, {100, 0, 10}, 0, 4),
+                                      step(NavStep::Kind::Waypoint, {100, 100, 10}, 0, 0),
+                                      step(NavStep::Kind::Waypoint, {0, 100, 10}, 2, 8),
+                                      step(NavStep::Kind::Waypoint, {0, 100, 30}, 0, 12),
+                                      step(NavStep::Kind::ReturnToLaunch, {0, 0, 0}, 0, 0)};
+  const MissionKind k = missionKind(steps, ap);
+  EXPECT_EQ(k.fast_waypoints, 3);
+  EXPECT_EQ(k.stop_waypoints, 1);
+  EXPECT_DOUBLE_EQ(k.speed_lo_mps, 4.0);
+  EXPECT_DOUBLE_EQ(k.speed_hi_mps, 8.0);  // the 12 m/s climb has no horizontal leg
+  EXPECT_TRUE(outsideCalibration(k, k).empty());
+  const MissionKind fast_only{0, 30, 3.8, 7.5};
+  const auto why = outsideCalibration(k, fast_only);
+  ASSERT_EQ(why.size(), 1u);  // 8 m/s is within 10 % of 7.5
+  EXPECT_NE(why[0].find("stops at 1 waypoint(s)"), std::string::npos) << why[0];
+  const MissionKind both = combine(fast_only, MissionKind{5, 0, 2.0, 6.0});
+  EXPECT_EQ(both.stop_waypoints, 5);
+  EXPECT_DOUBLE_EQ(both.speed_lo_mps, 2.0);
+  EXPECT_DOUBLE_EQ(both.speed_hi_mps, 7.5);
+  EXPECT_TRUE(outsideCalibration(k, both).empty());
+  const auto slow = outsideCalibration(k, MissionKind{5, 30, 5.0, 6.0});  // 4 m/s is below 5 / 1.1
+  ASSERT_EQ(slow.size(), 1u);
+  EXPECT_NE(slow[0].find("commands 4 to 8 m/s; the calibration flights 5 to 6 m/s"), std::string::npos) << slow[0];
+}

@@ -8,12 +8,14 @@
 /// model's coefficients to the logged power on the logged kinematics (fitModel), and reports the
 /// errors before and after.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "wattswath/calibration/coverage.hpp"
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/logs/flight_log.hpp"
 #include "wattswath/mission/predict.hpp"
@@ -138,6 +140,9 @@ struct CalibrationResult {
   bool stop_at_waypoints = false;         ///< true when stopping at every waypoint fits the logs better
   bool speed_change_late = false;         ///< true when speed changes a waypoint late fit the logs better
   TrackingMeasurement tracking;           ///< measured on the flights' cruise (not fitted), all flights pooled
+  MissionKind coverage;                   ///< what the flights' missions asked for (waypoint kinds, speeds)
+  /// The fitted behaviour parameters' starting values (autopilot units): the behaviour before.
+  std::map<std::string, double> behaviour_before;
   energy::EnergyModel model;              ///< with fitted coefficients
   std::vector<std::string> fitted;        ///< "NAME: before -> after unit" per parameter
   std::vector<FlightComparison> before;   ///< per flight, uncalibrated
@@ -165,6 +170,8 @@ struct CalibratedModel {
   bool stop_at_waypoints = false; ///< the calibrated corner behaviour (FlightSettings::stop_at_waypoints)
   bool speed_change_late = false; ///< the calibrated speed-change timing (FlightSettings::speed_change_late)
   mission::TrackingError tracking_error;  ///< [m] measured (FlightSettings::tracking_error); 0 when absent
+  std::optional<MissionKind> coverage;    ///< what the calibration flights flew (none in older files)
+  std::map<std::string, double> behaviour_before;  ///< the fitted parameters' values before the calibration
   /// The acceleration parameter the calibration's flights disagreed on (CalibrationResult::
   /// flights_agree false), empty when they agreed or there was one flight.
   std::string disputed_parameter;
