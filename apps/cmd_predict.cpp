@@ -8,6 +8,7 @@
 #include <optional>
 #include <utility>
 #include <sstream>
+#include <vector>
 
 #include "cli.hpp"
 #include "predict_spread.hpp"
@@ -128,11 +129,29 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap) {
   for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
 }
 
-// Moves `m`'s home to `launch` ("LAT,LON" [deg]): the autopilot sets home where the vehicle arms
-// and returns there. Returns the distance [m] from the file's home; throws std::invalid_argument
-// naming --launch for a malformed or implausible value.
-double moveHomeTo(ms::Mission& m, const std::string& launch) {
-  const auto comma = launch.find(',');
+// Where the vehicle will arm (--launch LAT,LON[,ALT]): the autopilot sets home there.
+struct Launch {
+  double from_home_m = 0.0;         // [m] horizontal distance from the file's home
+  std::optional<double> alt_m;      // [m] the launch point's altitude, as the file's home's (AMSL)
+  double alt_change_m = 0.0;        // [m] the launch altitude minus the file's home altitude
+  int absolute_items = 0;           // items whose heights are absolute (they move with the home's)
+};
+
+// Moves `m`'s home to `launch` ("LAT,LON" [deg], optionally ",ALT" [m, the file's home's reference]):
+// the autopilot sets home where the vehicle arms and returns there; heights given relative to
+// home stay above the new home, absolute ones are measured from its altitude. Throws
+// std::invalid_argument naming --launch for a malformed or implausible value.
+Launch moveHomeTo(ms::Mission& m, const std::string& launch) {
+  const std::string expected = "expected LAT,LON in degrees or LAT,LON,ALT with ALT in metres as the mission's home "
+                               "altitude, e.g. 43.7157,10.4612 or 43.7157,10.4612,35.5";
+  std::vector<std::string> parts;
+  for (std::size_t from = 0;;) {
+    const auto comma = launch.find(',', from);
+    parts.push_back(launch.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  if (parts.size() < 2 || parts.size() > 3) throw std::invalid_argument("--launch '" + launch + "': " + expected);
   auto number = [&](const std::string& text) {
     std::size_t used = 0;
     double x = std::nan("");
@@ -142,24 +161,57 @@ double moveHomeTo(ms::Mission& m, const std::string& launch) {
       used = 0;
     }
     if (used == 0 || used != text.size() || !std::isfinite(x)) {
-      throw std::invalid_argument("--launch '" + launch + "': '" + text + "' is not a number; expected LAT,LON in degrees");
+      throw std::invalid_argument("--launch '" + launch + "': '" + text + "' is not a number; " + expected);
     }
     return x;
   };
-  if (comma == std::string::npos) throw std::invalid_argument("--launch '" + launch + "': expected LAT,LON in degrees, e.g. 43.7157,10.4612");
   geometry::GeoPoint at = m.home;
-  at.lat_deg = number(launch.substr(0, comma));
-  at.lon_deg = number(launch.substr(comma + 1));
+  at.lat_deg = number(parts[0]);
+  at.lon_deg = number(parts[1]);
   geometry::validateGeoPoint(at, "--launch");
-  const double d = geometry::geodesicDistance(m.home, at);
-  if (d > 50000.0) {
-    throw std::invalid_argument("--launch '" + launch + "' is " + std::to_string(static_cast<long>(d / 1000.0)) +
+  Launch l;
+  l.from_home_m = geometry::geodesicDistance(m.home, at);
+  if (l.from_home_m > 50000.0) {
+    throw std::invalid_argument("--launch '" + launch + "' is " + std::to_string(static_cast<long>(l.from_home_m / 1000.0)) +
                                 " km from the mission's home; expected within 50 km of it");
+  }
+  if (parts.size() == 3) {
+    l.alt_m = number(parts[2]);
+    if (!(*l.alt_m >= -500.0 && *l.alt_m <= 9000.0)) {
+      throw std::invalid_argument("--launch '" + launch + "': altitude " + parts[2] + " m is outside -500..9000 m");
+    }
+    l.alt_change_m = *l.alt_m - m.home.alt_m;
+    m.home.alt_m = *l.alt_m;
+  }
+  // Items whose height is flown (waypoint, loiters, take-off, spline waypoint) in MAV_FRAME_GLOBAL(_INT).
+  for (const auto& it : m.items) {
+    const bool has_height = it.command == 16 || it.command == 17 || it.command == 18 || it.command == 19 ||
+                            it.command == 22 || it.command == 31 || it.command == 82;
+    l.absolute_items += has_height && (it.frame == 0 || it.frame == 5);
   }
   m.home.lat_deg = at.lat_deg;
   m.home.lon_deg = at.lon_deg;
   m.home_known = true;
-  return d;
+  return l;
+}
+
+// The launch in words.
+std::string launchText(const Launch& l) {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(1) << l.from_home_m
+     << " m from the mission's home; the autopilot's home is set there and the return flies to it";
+  if (l.alt_m) {
+    os << "; " << std::showpos << l.alt_change_m << std::noshowpos << " m from the home's altitude: ";
+    if (l.absolute_items > 0) {
+      os << l.absolute_items << " item(s) with absolute heights are flown that much lower above the vehicle's home";
+    } else {
+      os << "every height in the mission is relative to home, so none changes";
+    }
+  } else if (l.absolute_items > 0) {
+    os << "; its altitude is taken as the home's (" << l.absolute_items
+       << " item(s) have absolute heights: give --launch LAT,LON,ALT when the ground there is higher or lower)";
+  }
+  return os.str();
 }
 
 std::string samplesCsv(const ms::MissionPrediction& p) {
@@ -194,8 +246,9 @@ void registerPredictCommand(CLI::App& app) {
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
   cmd->add_option("--launch", o->launch,
-                  "Where the vehicle will arm and take off, LAT,LON [deg], when not at the mission file's home: the autopilot "
-                  "sets home there and returns to it (its height is taken as the file's home's)");
+                  "Where the vehicle will arm and take off, LAT,LON [deg] or LAT,LON,ALT (ALT [m] in the home row's "
+                  "reference, usually above sea level), when not at the mission file's home: the autopilot sets home there "
+                  "and returns to it; without ALT its altitude is taken as the file's home's");
   cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
   cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
   addReportOptions(cmd, o->report, o->report_svg, o->force);
@@ -212,8 +265,8 @@ void registerPredictCommand(CLI::App& app) {
     ms::ReadOptions ro;
     ro.lenient = o->lenient;
     ms::Mission m = ms::readMission(o->mission, ro);
-    std::optional<double> launch_m;  // [m] from the file's home
-    if (!o->launch.empty()) launch_m = moveHomeTo(m, o->launch);
+    std::optional<Launch> launch;
+    if (!o->launch.empty()) launch = moveHomeTo(m, o->launch);
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
     const std::optional<Coverage> coverage = coverageOf(m, v, setup);
     ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
@@ -227,12 +280,7 @@ void registerPredictCommand(CLI::App& app) {
       p = ms::predictMission(m, v, model, ap, setup.settings);
     }
     std::vector<std::pair<std::string, std::string>> extra;  // facts for the text, the report and the JSON
-    if (launch_m) {
-      std::ostringstream os;
-      os << std::fixed << std::setprecision(1) << *launch_m
-         << " m from the mission's home; the autopilot's home is set there and the return flies to it";
-      extra.push_back({"launch", os.str()});
-    }
+    if (launch) extra.push_back({"launch", launchText(*launch)});
     if (dispute) extra.push_back({"calibration", disputeText(*dispute, p)});
     if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
@@ -242,7 +290,14 @@ void registerPredictCommand(CLI::App& app) {
     if (o->json) {
       nlohmann::json j = toJson(p, ap, *o);
       j["launch"] = nullptr;
-      if (launch_m) j["launch"] = {{"lat_deg", m.home.lat_deg}, {"lon_deg", m.home.lon_deg}, {"from_mission_home_m", *launch_m}};
+      if (launch) {
+        j["launch"] = {{"lat_deg", m.home.lat_deg},
+                       {"lon_deg", m.home.lon_deg},
+                       {"from_mission_home_m", launch->from_home_m},
+                       {"alt_m", launch->alt_m ? nlohmann::json(*launch->alt_m) : nlohmann::json(nullptr)},
+                       {"absolute_items", launch->absolute_items},
+                       {"text", launchText(*launch)}};
+      }
       j["calibration_dispute"] = nullptr;
       if (dispute) {
         j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},

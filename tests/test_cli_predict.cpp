@@ -239,9 +239,46 @@ TEST(CliPredict, ALaunchAwayFromTheFilesHomeIsWhereTheFlightStartsAndReturns) {
   EXPECT_GT(far["distance_m"].get<double>(), at_home["distance_m"].get<double>() + 200.0);
   EXPECT_GT(far["phases"]["return"]["distance_m"].get<double>(), at_home["phases"]["return"]["distance_m"].get<double>());
   // Bad values: clear errors naming --launch.
-  for (const std::string bad : {"43.7", "north,10.46", "91,10", "43.7,10.4x", "44.8,10.46"}) {
+  for (const std::string bad : {"43.7", "north,10.46", "91,10", "43.7,10.4x", "44.8,10.46", "43.7,10.4,high", "43.7,10.4,1,2",
+                                "43.7,10.4,12000"}) {
     const RunResult r = run(cli(base + " --launch " + bad) + " 2>&1");
     EXPECT_NE(r.status, 0) << bad;
     EXPECT_NE(r.output.find("--launch"), std::string::npos) << bad << ": " << r.output;
   }
+}
+
+TEST(CliPredict, ALaunchAltitudeMovesAbsoluteHeightsAndNotRelativeOnes) {
+  // The home row is at 100 m above sea level and the waypoints at 130 m absolute (frame 0): 30 m
+  // above home. Armed on ground 10 m higher (--launch LAT,LON,110), the autopilot measures heights
+  // from there and the waypoints are 20 m up: a shorter climb and descent. The same waypoints given
+  // relative to home (frame 3) stay 30 m above wherever home is.
+  auto write = [](const std::string& path, int frame, double alt) {
+    std::ofstream w(path);
+    w << "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t43.7\t10.4\t100\t1\n1\t0\t" << frame << "\t22\t0\t0\t0\t0\t0\t0\t" << alt
+      << "\t1\n2\t0\t" << frame << "\t16\t0\t0\t0\t0\t43.701\t10.4\t" << alt << "\t1\n3\t0\t" << frame
+      << "\t16\t0\t0\t0\t0\t43.701\t10.401\t" << alt << "\t1\n4\t0\t0\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  };
+  const std::string absolute = tempPath("launch_absolute.waypoints"), relative = tempPath("launch_relative.waypoints");
+  write(absolute, 0, 130.0);
+  write(relative, 3, 30.0);
+  const std::string vehicle = " --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --json";
+  const json abs_home = runJson("predict " + absolute + vehicle);
+  const json abs_high = runJson("predict " + absolute + vehicle + " --launch 43.7,10.4,110");
+  EXPECT_NEAR(abs_high["launch"]["alt_m"].get<double>(), 110.0, 1e-9);
+  EXPECT_EQ(abs_high["launch"]["absolute_items"].get<int>(), 3);
+  EXPECT_LT(abs_high["energy_j"].get<double>(), abs_home["energy_j"].get<double>());
+  EXPECT_LT(abs_high["phases"]["takeoff"]["time_s"].get<double>(), abs_home["phases"]["takeoff"]["time_s"].get<double>() - 3.0);
+  EXPECT_NE(abs_high["launch"]["text"].get<std::string>().find("+10.0 m from the home's altitude"), std::string::npos)
+      << abs_high["launch"].dump();
+  // Without ALT it says the altitude was assumed.
+  const json abs_flat = runJson("predict " + absolute + vehicle + " --launch 43.7,10.4");
+  EXPECT_TRUE(abs_flat["launch"]["alt_m"].is_null());
+  EXPECT_NE(abs_flat["launch"]["text"].get<std::string>().find("give --launch LAT,LON,ALT"), std::string::npos);
+  EXPECT_NEAR(abs_flat["energy_j"].get<double>(), abs_home["energy_j"].get<double>(), 1e-6 * abs_home["energy_j"].get<double>());
+  const json rel_home = runJson("predict " + relative + vehicle);
+  const json rel_high = runJson("predict " + relative + vehicle + " --launch 43.7,10.4,110");
+  EXPECT_EQ(rel_high["launch"]["absolute_items"].get<int>(), 0);
+  EXPECT_NEAR(rel_high["energy_j"].get<double>(), rel_home["energy_j"].get<double>(), 1e-6 * rel_home["energy_j"].get<double>());
+  std::remove(absolute.c_str());
+  std::remove(relative.c_str());
 }
