@@ -2,7 +2,8 @@
 // angle, all cells, and spiral) for the real IRIS survey area with its no-fly zone and for a
 // synthetic 100 ha field with 10 holes. Baseline in the same run: the same 100 ha field without
 // holes; and reading the bundled area files. Route checks on a 1,200-vertex star: the plain loops
-// (Baseline) against the ring's R-tree. Run: build/bin/bench_geometry (docs/performance.md, section "Geometry").
+// (Baseline) against the ring's R-tree; segments against 400 holes: every hole, a box check
+// first, the holes' R-tree. Run: build/bin/bench_geometry (docs/performance.md, section "Geometry").
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -120,6 +121,61 @@ void BM_SegmentLeavesArea_Star1200_Indexed(benchmark::State& st) {
 }
 BENCHMARK(BM_SegmentLeavesArea_Star1200_Baseline)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SegmentLeavesArea_Star1200_Indexed)->Unit(benchmark::kMicrosecond);
+
+// Whether segments enter one of 400 holes (a 20 x 20 grid of 12 m squares in a 1 km field; 256
+// segments of up to 85 m): every hole tested exactly, as segmentEntersHole did before the boxes
+// (Baseline); segmentEntersHole now (a box check first); the holes' R-tree that safeRoute uses.
+g::PolygonWithHoles holeGrid() {
+  g::PolygonWithHoles a;
+  a.outer = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) {
+      const g::Point c(50.0 + 47.0 * i, 50.0 + 47.0 * j);
+      a.holes.push_back({c + g::Point(6, 6), c + g::Point(6, -6), c + g::Point(-6, -6), c + g::Point(-6, 6)});
+    }
+  return a;
+}
+std::vector<std::pair<g::Point, g::Point>> shortSegments() {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coord(0.0, 1000.0), len(-60.0, 60.0);
+  std::vector<std::pair<g::Point, g::Point>> c;
+  for (int k = 0; k < 256; ++k) {
+    const g::Point a(coord(rng), coord(rng));
+    c.push_back({a, a + g::Point(len(rng), len(rng))});
+  }
+  return c;
+}
+void BM_SegmentEntersHole_400Holes_Baseline(benchmark::State& st) {
+  const auto a = holeGrid();
+  const auto c = shortSegments();
+  for (auto _ : st)
+    for (const auto& [p, q] : c) {
+      bool in = false;
+      for (const auto& h : a.holes) in = in || g::detail::segmentEntersRing(h, p, q);
+      benchmark::DoNotOptimize(in);
+    }
+}
+void BM_SegmentEntersHole_400Holes_BoxCheck(benchmark::State& st) {
+  const auto a = holeGrid();
+  const auto c = shortSegments();
+  for (auto _ : st)
+    for (const auto& [p, q] : c) benchmark::DoNotOptimize(g::segmentEntersHole(a, p, q));
+}
+void BM_SegmentEntersHole_400Holes_Indexed(benchmark::State& st) {
+  const auto a = holeGrid();
+  const auto c = shortSegments();
+  const g::detail::HoleIndex index(a.holes);
+  for (auto _ : st)
+    for (const auto& [p, q] : c) benchmark::DoNotOptimize(index.segmentEnters(p, q));
+}
+void BM_SafeRoute_400Holes(benchmark::State& st) {
+  const auto a = holeGrid();
+  for (auto _ : st) benchmark::DoNotOptimize(g::safeRoute(a, g::Point(3, 3), g::Point(997, 997)));
+}
+BENCHMARK(BM_SegmentEntersHole_400Holes_Baseline)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SegmentEntersHole_400Holes_BoxCheck)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SegmentEntersHole_400Holes_Indexed)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SafeRoute_400Holes)->Unit(benchmark::kMillisecond);
 
 void BM_Decompose_IrisArea_NoFly(benchmark::State& st) { decompose(st, irisArea()); }
 void BM_Candidates_IrisArea_NoFly(benchmark::State& st) { candidates(st, irisArea()); }

@@ -77,33 +77,51 @@ double distanceToRing(const Ring& ring, const Point& p) {
   return best;
 }
 
-bool segmentEntersHole(const PolygonWithHoles& area, const Point& a, const Point& b) {
+namespace detail {
+
+bool segmentEntersRing(const Ring& hole, const Point& a, const Point& b) {
   const Point ab = b - a;
   const double len2 = ab.squaredNorm();
-  for (const auto& hole : area.holes) {
-    std::vector<double> ts{0.0, 1.0};
-    const size_t n = hole.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Point& c = hole[i];
-      const Point& d = hole[(i + 1) % n];
-      const Point cd = d - c;
-      const double den = cross(ab, cd);
-      if (std::abs(den) > 1e-12 * std::sqrt(len2 * cd.squaredNorm())) {
-        const double t = cross(c - a, cd) / den, u = cross(c - a, ab) / den;
-        if (t > 0.0 && t < 1.0 && u >= -1e-12 && u <= 1.0 + 1e-12) ts.push_back(t);
-      } else if (len2 > 0.0) {  // parallel: split at the projections of the edge ends
-        for (const Point& q : {c, d}) {
-          const double t = (q - a).dot(ab) / len2;
-          if (t > 0.0 && t < 1.0) ts.push_back(t);
-        }
+  std::vector<double> ts{0.0, 1.0};
+  const size_t n = hole.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Point& c = hole[i];
+    const Point& d = hole[(i + 1) % n];
+    const Point cd = d - c;
+    const double den = cross(ab, cd);
+    if (std::abs(den) > 1e-12 * std::sqrt(len2 * cd.squaredNorm())) {
+      const double t = cross(c - a, cd) / den, u = cross(c - a, ab) / den;
+      if (t > 0.0 && t < 1.0 && u >= -1e-12 && u <= 1.0 + 1e-12) ts.push_back(t);
+    } else if (len2 > 0.0) {  // parallel: split at the projections of the edge ends
+      for (const Point& q : {c, d}) {
+        const double t = (q - a).dot(ab) / len2;
+        if (t > 0.0 && t < 1.0) ts.push_back(t);
       }
     }
-    std::sort(ts.begin(), ts.end());
-    for (size_t k = 0; k + 1 < ts.size(); ++k) {
-      if (ts[k + 1] - ts[k] <= 0.0 && len2 > 0.0) continue;
-      const Point m = a + 0.5 * (ts[k] + ts[k + 1]) * ab;
-      if (insideRing(hole, m, tol::kHoleDepth)) return true;
+  }
+  std::sort(ts.begin(), ts.end());
+  for (size_t k = 0; k + 1 < ts.size(); ++k) {
+    if (ts[k + 1] - ts[k] <= 0.0 && len2 > 0.0) continue;
+    const Point m = a + 0.5 * (ts[k] + ts[k + 1]) * ab;
+    if (insideRing(hole, m, tol::kHoleDepth)) return true;
+  }
+  return false;
+}
+
+}  // namespace detail
+
+bool segmentEntersHole(const PolygonWithHoles& area, const Point& a, const Point& b) {
+  // A hole whose bounding box the segment's misses cannot be entered (its inside lies in the box);
+  // the box costs comparisons where the exact test costs an allocation and cross products.
+  const Point lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+  for (const auto& hole : area.holes) {
+    bool apart = !hole.empty();
+    for (int axis = 0; axis < 2 && apart; ++axis) {
+      double h_lo = hole.front()[axis], h_hi = h_lo;
+      for (const auto& v : hole) h_lo = std::min(h_lo, v[axis]), h_hi = std::max(h_hi, v[axis]);
+      apart = h_hi < lo[axis] || h_lo > hi[axis];
     }
+    if (!apart && detail::segmentEntersRing(hole, a, b)) return true;
   }
   return false;
 }
@@ -117,8 +135,12 @@ std::vector<Point> safeRoute(const PolygonWithHoles& area, const Point& a, const
   auto leaves = [&](const Point& p, const Point& q) {
     return outer ? detail::segmentLeavesRing(*outer, p, q) : segmentLeavesArea(area, p, q);
   };
+  // Many holes are indexed by box likewise.
+  std::optional<detail::HoleIndex> holes;
+  if (area.holes.size() >= detail::kMinIndexedHoles) holes.emplace(area.holes);
   auto blocked = [&](const Point& p, const Point& q) {
-    return segmentEntersHole(area, p, q) || (stay_inside && b_inside && leaves(p, q));
+    const bool enters = holes ? holes->segmentEnters(p, q) : segmentEntersHole(area, p, q);
+    return enters || (stay_inside && b_inside && leaves(p, q));
   };
   if (!blocked(a, b)) return {a, b};
   std::vector<Point> nodes{a, b};

@@ -90,4 +90,26 @@ void RingIndex::crossingParams(const Point& a, const Point& b, std::vector<doubl
   });
 }
 
+HoleIndex::HoleIndex(const std::vector<Ring>& holes) : holes_(holes) {
+  std::vector<Value> values;
+  values.reserve(holes.size());
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    if (holes[i].empty()) continue;
+    Point lo = holes[i].front(), hi = lo;
+    for (const auto& v : holes[i]) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    values.emplace_back(Box(BgPoint(lo.x(), lo.y()), BgPoint(hi.x(), hi.y())), i);
+  }
+  tree_ = decltype(tree_)(values.begin(), values.end());  // bulk loading (packing)
+}
+
+bool HoleIndex::segmentEnters(const Point& a, const Point& b) const {
+  namespace bgi = boost::geometry::index;
+  const double e = slack(0.0, a.cwiseAbs().cwiseMax(b.cwiseAbs()));
+  const Box query(BgPoint(std::min(a.x(), b.x()) - e, std::min(a.y(), b.y()) - e),
+                  BgPoint(std::max(a.x(), b.x()) + e, std::max(a.y(), b.y()) + e));
+  for (auto it = tree_.qbegin(bgi::intersects(query)); it != tree_.qend(); ++it)
+    if (segmentEntersRing(holes_[it->second], a, b)) return true;
+  return false;
+}
+
 }  // namespace wattswath::geometry::detail

@@ -1,7 +1,7 @@
 #pragma once
 // The edges of a large ring in an R-tree (Boost.Geometry), for the questions a route search asks
 // thousands of times: where a segment crosses the ring, whether a point is inside, whether an edge
-// is within a distance. Each answer applies the same test as the plain loops of check.cpp and
+// is within a distance; and an area's many holes by bounding box, for whether a segment enters one. Each answer applies the same test as the plain loops of check.cpp and
 // containment.cpp, to the edges whose bounding boxes can matter instead of to every edge.
 #include <vector>
 
@@ -52,5 +52,28 @@ void edgeCrossing(const Point& a, const Point& b, const Point& p, const Point& e
 
 /// segmentLeavesArea on the outer ring `outer` indexed.
 bool segmentLeavesRing(const RingIndex& outer, const Point& a, const Point& b);
+
+/// Areas with fewer holes than this are answered by the plain loop over the holes.
+inline constexpr std::size_t kMinIndexedHoles = 16;
+
+/// Whether segment a-b enters hole `hole` (the test segmentEntersHole applies to each hole).
+bool segmentEntersRing(const Ring& hole, const Point& a, const Point& b);
+
+/// An area's holes by bounding box: segmentEntersHole tests only the holes whose boxes meet the
+/// segment's.
+class HoleIndex {
+ public:
+  /// Indexes `holes` (kept by reference: they must outlive the index).
+  explicit HoleIndex(const std::vector<Ring>& holes);
+  /// segmentEntersHole(area with these holes, a, b).
+  bool segmentEnters(const Point& a, const Point& b) const;
+
+ private:
+  using BgPoint = boost::geometry::model::point<double, 2, boost::geometry::cs::cartesian>;
+  using Box = boost::geometry::model::box<BgPoint>;
+  using Value = std::pair<Box, std::size_t>;
+  const std::vector<Ring>& holes_;
+  boost::geometry::index::rtree<Value, boost::geometry::index::rstar<16>> tree_;
+};
 
 }  // namespace wattswath::geometry::detail

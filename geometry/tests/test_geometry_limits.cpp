@@ -142,3 +142,45 @@ TEST(RouteLimits, TheRingIndexAnswersAsThePlainLoops) {
 }
 
 }  // namespace
+
+TEST(RouteLimits, TheHoleIndexAnswersAsThePlainLoopAndRoutesAroundHundredsOfHoles) {
+  // 400 holes (a jittered 20 x 20 grid of rotated 12 m squares, fixed seed) in a 1 km field: the
+  // holes' R-tree (ring_index.hpp) must say whether a segment enters a hole exactly as the plain
+  // loop over every hole does (segments at random and grazing hole corners), and a route across
+  // the field must go around every hole.
+  geo::PolygonWithHoles area;
+  area.outer = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> jitter(-8.0, 8.0), rot(0.0, M_PI / 2);
+  for (int i = 0; i < 20; ++i) {
+    for (int j = 0; j < 20; ++j) {
+      const Point c(50.0 + 47.0 * i + jitter(rng), 50.0 + 47.0 * j + jitter(rng));
+      const double r = rot(rng);
+      geo::Ring h;
+      for (int k = 0; k < 4; ++k) {
+        const double t = r - 0.5 * M_PI * k;  // clockwise, as holes are stored
+        h.push_back(c + 8.5 * Point(std::cos(t), std::sin(t)));
+      }
+      area.holes.push_back(h);
+    }
+  }
+  const geo::detail::HoleIndex index(area.holes);
+  std::uniform_real_distribution<double> coord(0.0, 1000.0), off(-0.5, 0.5), len(-60.0, 60.0);
+  int entered = 0;
+  for (int k = 0; k < 4000; ++k) {
+    Point a(coord(rng), coord(rng));
+    if (k % 2) {  // from near a hole corner: the hard cases
+      const auto& h = area.holes[static_cast<size_t>(k) % area.holes.size()];
+      a = h[static_cast<size_t>(k / 2) % 4] + Point(off(rng), off(rng));
+    }
+    const Point b = a + Point(len(rng), len(rng));
+    const bool plain = geo::segmentEntersHole(area, a, b);
+    ASSERT_EQ(index.segmentEnters(a, b), plain) << "segment " << k << ": (" << a.transpose() << ") -> (" << b.transpose() << ")";
+    entered += plain;
+  }
+  EXPECT_GT(entered, 400);  // the test exercises both answers
+  EXPECT_LT(entered, 3600);
+  const auto route = geo::safeRoute(area, Point(5, 5), Point(995, 995));
+  ASSERT_GE(route.size(), 3u);
+  for (size_t i = 1; i < route.size(); ++i) EXPECT_FALSE(geo::segmentEntersHole(area, route[i - 1], route[i]));
+}
