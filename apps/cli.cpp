@@ -277,27 +277,21 @@ void OutputSet::stage(const std::string& tmp, const std::string& target, int slo
 void OutputSet::commit() {
   namespace fs = std::filesystem;
   std::error_code ec;
-  // The files inside the folder are listed in its journal (flushed) before they are renamed, so a
-  // crash midway is completed by the next run; files elsewhere (a --report path) go first.
+  // Every staged file is listed in the folder's journal (flushed) before any is renamed, so a crash
+  // midway is completed by the next run into the folder: files inside it by name, files elsewhere
+  // (a --report path) by absolute path.
   const fs::path dir = fs::absolute(dir_, ec);
   std::vector<std::pair<std::string, std::string>> journaled;
-  std::vector<Staged> order;
   for (const auto& f : staged_) {
-    const fs::path t = fs::absolute(f.target, ec), tmp = fs::absolute(f.tmp, ec);
-    if (t.parent_path() == dir && tmp.parent_path() == dir) {
+    const fs::path t = fs::absolute(f.target, ec).lexically_normal(), tmp = fs::absolute(f.tmp, ec).lexically_normal();
+    if (t.parent_path() == dir.lexically_normal() && tmp.parent_path() == dir.lexically_normal()) {
       journaled.emplace_back(tmp.filename().string(), t.filename().string());
     } else {
-      order.push_back(f);
+      journaled.emplace_back(tmp.string(), t.string());
     }
   }
-  for (const auto& f : staged_) {
-    const fs::path t = fs::absolute(f.target, ec), tmp = fs::absolute(f.tmp, ec);
-    if (t.parent_path() == dir && tmp.parent_path() == dir) order.push_back(f);
-  }
-  staged_ = order;
-  const std::size_t first_journaled = staged_.size() - journaled.size();
+  if (!journaled.empty()) writeCommitJournal(dir_, journaled);
   for (std::size_t k = 0; k < staged_.size(); ++k) {
-    if (k == first_journaled && !journaled.empty()) writeCommitJournal(dir_, journaled);
     std::filesystem::rename(staged_[k].tmp, staged_[k].target, ec);
     if (ec) {
       const std::string msg = staged_[k].target + ": write failed (cannot rename " + staged_[k].tmp + " into place: " +
@@ -308,6 +302,8 @@ void OutputSet::commit() {
       throw std::runtime_error(msg);
     }
     untrackTemporary(staged_[k].slot);
+    const fs::path parent = fs::absolute(staged_[k].target, ec).parent_path();
+    if (parent.lexically_normal() != dir.lexically_normal()) syncFolder(parent.string());
   }
   syncFolder(dir_);
   removeCommitJournal(dir_);

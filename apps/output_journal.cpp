@@ -21,6 +21,12 @@ bool plainName(const std::string& n) {
   return !n.empty() && n != "." && n != ".." && n.find_first_of("/\t\n\r") == std::string::npos;
 }
 
+// An absolute path of a file elsewhere (a --report outside the folder): no line break or tab.
+bool absolutePath(const std::string& n) {
+  return n.size() > 1 && n[0] == '/' && n.find_first_of("\t\n\r") == std::string::npos &&
+         fs::path(n).filename() != ".." && fs::path(n).filename() != ".";
+}
+
 // Whether `tmp` is `target` + ".tmp." + 16 hex digits: a temporary this program made for it.
 bool temporaryOf(const std::string& tmp, const std::string& target) {
   const std::string prefix = target + ".tmp.";
@@ -57,7 +63,12 @@ void syncFolder(const std::string& dir) {
 void writeCommitJournal(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& renames) {
   std::string text = "# wattswath: files of an interrupted run, renamed into place by the next run into this folder\n";
   for (const auto& [tmp, target] : renames) {
-    if (!plainName(tmp) || !plainName(target)) throw std::invalid_argument("commit journal: '" + tmp + "' -> '" + target + "' is not a plain file name");
+    const bool inside = plainName(tmp) && plainName(target);
+    const bool elsewhere = absolutePath(tmp) && absolutePath(target) && fs::path(tmp).parent_path() == fs::path(target).parent_path();
+    if (!inside && !elsewhere) {
+      throw std::invalid_argument("commit journal: '" + tmp + "' -> '" + target +
+                                  "' is neither a plain file name nor an absolute path in one folder");
+    }
     text += tmp + "\t" + target + "\n";
   }
   const fs::path journal = fs::path(dir) / kCommitJournal;
@@ -86,11 +97,18 @@ int completeInterruptedCommit(const std::string& dir) {
     const auto tab = line.find('\t');
     if (tab == std::string::npos) continue;
     const std::string tmp = line.substr(0, tab), target = line.substr(tab + 1);
-    if (!plainName(tmp) || !plainName(target) || !temporaryOf(tmp, target)) continue;
-    const fs::path from = fs::path(dir) / tmp;
+    // A file of the folder by name, or one elsewhere (a --report path) by absolute path in one
+    // folder; either way only this program's temporary of that very target is renamed.
+    const bool inside = plainName(tmp) && plainName(target) && temporaryOf(tmp, target);
+    const bool elsewhere = absolutePath(tmp) && absolutePath(target) &&
+                           fs::path(tmp).parent_path() == fs::path(target).parent_path() &&
+                           temporaryOf(fs::path(tmp).filename().string(), fs::path(target).filename().string());
+    if (!inside && !elsewhere) continue;
+    const fs::path from = inside ? fs::path(dir) / tmp : fs::path(tmp), to = inside ? fs::path(dir) / target : fs::path(target);
     if (!fs::is_regular_file(fs::symlink_status(from, ec))) continue;  // renamed before the crash
-    fs::rename(from, fs::path(dir) / target, ec);
-    if (ec) throw std::runtime_error((fs::path(dir) / target).string() + ": cannot complete the interrupted commit of an earlier run (" + ec.message() + ")");
+    fs::rename(from, to, ec);
+    if (ec) throw std::runtime_error(to.string() + ": cannot complete the interrupted commit of an earlier run (" + ec.message() + ")");
+    if (elsewhere) syncFolder(to.parent_path().string());
     ++renamed;
   }
   in.close();

@@ -13,8 +13,9 @@ namespace wattswath::apps {
 /// The journal's file name inside the output folder.
 inline constexpr const char* kCommitJournal = ".wattswath-commit";
 
-/// Writes (atomically, flushed to the disk) the journal of `dir` listing `renames`: file names
-/// inside `dir`, temporary first. Throws std::runtime_error naming the journal when it cannot.
+/// Writes (atomically, flushed to the disk) the journal of `dir` listing `renames`, temporary
+/// first: file names inside `dir`, or absolute paths of a file elsewhere (a --report outside the
+/// folder; temporary and target in one folder). Throws std::runtime_error naming the journal when it cannot.
 void writeCommitJournal(const std::string& dir, const std::vector<std::pair<std::string, std::string>>& renames);
 
 /// Removes the journal of `dir` (and flushes the folder); no error when there is none.
@@ -22,7 +23,8 @@ void removeCommitJournal(const std::string& dir);
 
 /// Completes the commit the journal of `dir` records, if any: renames each temporary still present
 /// onto its target and removes the journal. Returns the number of files renamed. Entries that are
-/// not a `<target>.tmp.<16 hex digits>` pair of plain names are skipped.
+/// not a `<target>.tmp.<16 hex digits>` pair of plain names, or of absolute paths in one folder,
+/// are skipped.
 int completeInterruptedCommit(const std::string& dir);
 
 /// Flushes the folder `dir` itself (its renames) to the disk; errors are ignored (best effort).

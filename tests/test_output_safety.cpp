@@ -347,4 +347,33 @@ TEST_F(OutputSafety, PlanCompletesTheCommitAnEarlierRunLeftHalfDone) {
   EXPECT_FALSE(temporaryLeft());
 }
 
+// A --report outside the plan folder is part of the same commit: the folder's journal lists it by
+// absolute path before any rename, so a crash midway is completed for it too; entries elsewhere
+// that are not this program's temporary of their target, or not absolute, are left alone.
+TEST_F(OutputSafety, PlanJournalsAReportOutsideItsFolderAndCompletesItAfterACrash) {
+  const std::string area = wattswath::test::sourcePath("data/areas/espiral_rectangle.geojson");
+  const fs::path out = dir_ / "plan", elsewhere = dir_ / "reports";
+  fs::create_directories(elsewhere);
+  const std::string report = (elsewhere / "survey.html").string();
+  Outcome r = runCli({"plan", area, "--vehicle", kVehicle, "--spacing", "20", "--out", out.string(), "--report", report});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(report));
+  EXPECT_FALSE(fs::exists(out / ".wattswath-commit"));
+  // As a crash right after the journal would leave it: the report's temporary still to rename.
+  std::ofstream(report + ".tmp.00000000000000ab") << "new report\n";
+  std::ofstream((elsewhere / "keep.txt").string()) << "untouched\n";
+  std::ofstream((elsewhere / "keep.txt.tmp.zzzzzzzzzzzzzzzz").string()) << "not ours\n";
+  std::ofstream((out / ".wattswath-commit").string())
+      << "# wattswath: files of an interrupted run\n"
+      << report << ".tmp.00000000000000ab\t" << report << "\n"
+      << (elsewhere / "keep.txt.tmp.zzzzzzzzzzzzzzzz").string() << "\t" << (elsewhere / "keep.txt").string() << "\n"
+      << "reports/keep.txt.tmp.00000000000000ab\treports/keep.txt\n";
+  r = runCli({"plan", area, "--vehicle", kVehicle, "--spacing", "20", "--out", out.string(), "--force", "--no-report"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("completed the interrupted commit of an earlier run (1 file(s)"), std::string::npos) << r.err;
+  EXPECT_EQ(readAll(report), "new report\n");
+  EXPECT_EQ(readAll((elsewhere / "keep.txt").string()), "untouched\n");
+  EXPECT_FALSE(fs::exists(out / ".wattswath-commit"));
+}
+
 }  // namespace
