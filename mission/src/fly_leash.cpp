@@ -26,6 +26,11 @@ struct Params {
   double speed, speed_up, speed_dn, accel, accel_z, radius, pos_xy_p, pos_z_p, vel_xy_p, vel_xy_i, vel_xy_imax, accel_max;
   double rtl_alt, rtl_alt_final, rtl_climb_min, rtl_loiter_s, land_speed, land_alt_low, spool_s;
   bool linear_slack;  // before 3.4: the leash slack shrinks linearly with the cross-track error
+  // [s] Before 3.4 AC_WPNav::update_wpnav advances the carrot and triggers the horizontal position
+  // controller every 0.1 s (WPNAV_WP_UPDATE_TIME), which then runs its four steps (position to
+  // velocity to acceleration to lean angles) once on the following loops with dt 0.1 s: lean
+  // targets change ten times a second. 0: every simulation step (3.4 and later, full rate).
+  double nav_period;
   double leash_up, leash_dn;  // [m] the position controller's vertical leashes (climbing, descending)
   TrackingError tracking;     // [m] the vehicle's typical distance off its line (FlightSettings)
 };
@@ -68,6 +73,7 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
   p.linear_slack = linearSlackVersion(ap.version);
+  p.nav_period = p.linear_slack ? 0.1 : 0.0;
   p.leash_up = leashLength(p.speed_up, p.accel_z, p.pos_z_p);
   p.leash_dn = leashLength(p.speed_dn, p.accel_z, p.pos_z_p);
   return p;
@@ -79,6 +85,8 @@ struct Vehicle {
   Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
   Eigen::Vector2d v_cmd_prev = Eigen::Vector2d::Zero();  // the previous step's velocity command (feed-forward)
   Eigen::Vector2d integ = Eigen::Vector2d::Zero();       // [m/s^2] the velocity loop's integrator (VEL_XY_I)
+  Eigen::Vector2d a_cmd = Eigen::Vector2d::Zero();       // [m/s^2] the acceleration (lean) target in force
+  double since_xy = 1e9;                                 // [s] since the horizontal controller last ran
 };
 
 struct Leg {
@@ -156,10 +164,31 @@ void advanceCarrot(Leg& g, const Vehicle& veh, const Params& P, double dt) {
   g.desired = std::clamp(g.desired, 0.0, g.length + (g.fast ? 2.0 : 0.0));
 }
 
+void xyController(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, double dt);
+
 // The vehicle chases `carrot` one step: square-root position controller, PI velocity loop
 // (AC_PosControl::rate_to_accel_xy of 3.x: the integrator holds at the lean limit), lean limit,
 // attitude lag, the airframe's drag; vertical: square-root controller to a climb or descent speed.
 void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, const Airframe& af, double dt) {
+  veh.since_xy += dt;
+  if (P.nav_period <= 0.0 || veh.since_xy >= P.nav_period - 1e-9) {
+    xyController(veh, carrot, speed, P, P.nav_period > 0.0 ? std::min(veh.since_xy, P.nav_period) : dt);
+    veh.since_xy = 0.0;
+  }
+  veh.a.head<2>() += (veh.a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
+  const double vz_cmd = std::clamp(sqrtController(carrot.z() - veh.p.z(), P.pos_z_p, P.accel_z), -P.speed_dn, P.speed_up);
+  veh.a.z() = std::clamp((vz_cmd - veh.v.z()) / std::max(dt, 0.2), -P.accel_z, P.accel_z);
+  const Eigen::Vector2d vh = veh.v.head<2>();
+  const double v = vh.norm();
+  Eigen::Vector2d drag = Eigen::Vector2d::Zero();
+  if (v > 1e-9) drag = -vh / v * (af.drag_linear_per_s * v + af.drag_quadratic_per_m * v * v);
+  veh.v.head<2>() += (veh.a.head<2>() + drag) * dt;
+  veh.v.z() += veh.a.z() * dt;
+  veh.p += veh.v * dt;
+}
+
+// One run of the horizontal position controller over `dt` [s]: the acceleration target it sets.
+void xyController(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, double dt) {
   Eigen::Vector2d err = (carrot - veh.p).head<2>();
   const double leash = leashLength(speed, P.accel, P.pos_xy_p);
   if (err.norm() > leash) err *= leash / err.norm();
@@ -179,16 +208,7 @@ void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Para
     veh.integ += P.vel_xy_i * verr * dt;
     if (veh.integ.norm() > P.vel_xy_imax) veh.integ *= P.vel_xy_imax / veh.integ.norm();
   }
-  veh.a.head<2>() += (a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
-  const double vz_cmd = std::clamp(sqrtController(carrot.z() - veh.p.z(), P.pos_z_p, P.accel_z), -P.speed_dn, P.speed_up);
-  veh.a.z() = std::clamp((vz_cmd - veh.v.z()) / std::max(dt, 0.2), -P.accel_z, P.accel_z);
-  const Eigen::Vector2d vh = veh.v.head<2>();
-  const double v = vh.norm();
-  Eigen::Vector2d drag = Eigen::Vector2d::Zero();
-  if (v > 1e-9) drag = -vh / v * (af.drag_linear_per_s * v + af.drag_quadratic_per_m * v * v);
-  veh.v.head<2>() += (veh.a.head<2>() + drag) * dt;
-  veh.v.z() += veh.a.z() * dt;
-  veh.p += veh.v * dt;
+  veh.a_cmd = a_cmd;
 }
 
 struct Flyer {
@@ -212,8 +232,13 @@ struct Flyer {
     Leg g = startLeg(from, to, speed, leash_speed, fast, veh, P);
     if (speed > leash_speed + 0.05 && g.length > 1e-9 && std::abs(g.u.z()) < 0.5) ++late_increases;
     leash_speed = speed;  // recalculated at the position controller's first update on this leg
+    double since_nav = 1e9;  // [s] since the carrot last moved
     while (true) {
-      advanceCarrot(g, veh, P, rec.dt());
+      since_nav += rec.dt();
+      if (P.nav_period <= 0.0 || since_nav >= P.nav_period - 1e-9) {
+        advanceCarrot(g, veh, P, P.nav_period > 0.0 ? std::min(since_nav, P.nav_period) : rec.dt());
+        since_nav = 0.0;
+      }
       chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, af, rec.dt());
       rec.tick(veh.p, veh.v, phase, step);
       const bool carrot_there = g.length <= 1e-9 || g.desired >= g.length;  // a degenerate leg has no carrot to move
@@ -300,8 +325,9 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
              "the carrot's lead by it" + (P.linear_slack ? ", which slows the cruise" : ", a small effect from 3.4 on"));
   }
   rec.note("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + detail::num(P.accel) + " m/s/s, lean-limited acceleration " +
-           detail::num(P.accel_max) + " m/s/s, attitude lag " + detail::num(kAttitudeLag) +
-           " s; RTL flies at the last DO_CHANGE_SPEED (3.x overwrites WPNAV_SPEED in memory)");
+           detail::num(P.accel_max) + " m/s/s, attitude lag " + detail::num(kAttitudeLag) + " s" +
+           (P.nav_period > 0.0 ? ", navigation and position control every " + detail::num(P.nav_period) + " s" : std::string()) +
+           "; RTL flies at the last DO_CHANGE_SPEED (3.x overwrites WPNAV_SPEED in memory)");
   return rec.take(steps);
 }
 
