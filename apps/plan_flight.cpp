@@ -85,6 +85,19 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   return f;
 }
 
+std::optional<std::string> calibrationCoverageNote(const mission::Mission& written, const energy::Vehicle& v,
+                                                   const std::string& vehicle_path) {
+  const PredictionSetup setup = predictionSetup(v, vehicle_path, "", 25.0);
+  if (!setup.calibrated || !setup.coverage) return std::nullopt;
+  const auto why = calibration::outsideCalibration(calibration::missionKind(mission::sequenceMission(written), setup.autopilot),
+                                                   *setup.coverage);
+  if (why.empty()) return std::nullopt;
+  std::string text = "calibration: the written mission is outside what the vehicle's calibration flew (";
+  for (std::size_t i = 0; i < why.size(); ++i) text += (i ? "; " : "") + why[i];
+  return text + "): its flight figures rest on behaviour the calibration did not see; `wattswath predict mission.plan` "
+                "gives the range with the behaviour before the calibration";
+}
+
 void printFlight(const PlanFlight& f) {
   const auto& p = f.prediction;
   const auto& m = p.phases[static_cast<int>(mission::FlightPhase::Mission)];

@@ -2,6 +2,7 @@
 // `plan`'s finalists flown by the vehicle's autopilot model (planner/flight_score.hpp) with the
 // same setup as `predict` (prediction_setup.hpp): the cheapest flight is the plan written, and
 // the plan reports that flight's energy and time, which `predict` gives for the mission written.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,11 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
                         std::vector<std::string>& notes);
 
 /// The text lines of the flight.
+/// A note when the written mission `written` asks for flying the vehicle's calibration never saw
+/// (calibration::outsideCalibration, as `predict` says it), else nothing.
+std::optional<std::string> calibrationCoverageNote(const mission::Mission& written, const energy::Vehicle& v,
+                                                   const std::string& vehicle_path);
+
 void printFlight(const PlanFlight& f);
 
 /// The JSON object of the flight ("flight" key of plan --json).

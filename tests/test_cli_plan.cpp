@@ -353,6 +353,35 @@ TEST(CliPlan, PredictOnTheWrittenMissionGivesThePlansFlight) {
   }
 }
 
+// A calibrated vehicle whose calibration flights never stopped at a waypoint, or flew slower than
+// the plan: plan says its written mission is outside the calibration, as predict does.
+TEST(CliPlan, AWrittenMissionOutsideTheVehiclesCalibrationIsSaidToBe) {
+  nlohmann::json v = nlohmann::json::parse(slurp(sourcePath("data/vehicles/iris-plus-arducopter3.json")));
+  v["extensions"]["calibration"] = {{"effects", {"hover", "kinetic", "parasitic_drag"}},
+                                    {"coverage", {{"stop_waypoints", 0}, {"fast_waypoints", 40}, {"speed_mps", {4.0, 6.0}}}},
+                                    {"behaviour_before", {{"WPNAV_ACCEL", 100}}}};
+  const std::string dir = outDir("coverage_vehicle"), vehicle = dir + "/v.json";
+  std::filesystem::create_directories(dir);
+  std::ofstream(vehicle) << v.dump();
+  auto calibrationNotes = [&](const std::string& name) {
+    const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + vehicle +
+                       " --spacing 15 --no-report --out " + outDir(name) + " --json 2>/dev/null");
+    EXPECT_EQ(r.status, 0) << r.output;
+    std::vector<std::string> found;
+    const auto j = nlohmann::json::parse(r.output);  // kept: a range-for over parse(...).at(...) would dangle
+    for (const auto& n : j.at("notes"))
+      if (n.get<std::string>().rfind("calibration: the written mission is outside", 0) == 0) found.push_back(n);
+    return found;
+  };
+  const auto outside = calibrationNotes("coverage_outside");
+  ASSERT_EQ(outside.size(), 1u);
+  EXPECT_NE(outside[0].find("m/s; the calibration flights 4 to 6 m/s"), std::string::npos) << outside[0];
+  // A calibration that flew stops and fast waypoints at every speed the plan commands: no note.
+  v["extensions"]["calibration"]["coverage"] = {{"stop_waypoints", 10}, {"fast_waypoints", 40}, {"speed_mps", {1.0, 20.0}}};
+  std::ofstream(vehicle) << v.dump();
+  EXPECT_TRUE(calibrationNotes("coverage_inside").empty());
+}
+
 // Surveys larger than one battery (issue 23): with a 1.3 Ah pack the IRIS+ area needs several
 // sorties; `predict` on each written sortie_NN.plan lands with the 25 % reserve (also with its 10 %
 // energy margin), the sorties
