@@ -242,7 +242,7 @@ void registerPredictCommand(CLI::App& app) {
   cmd->add_option("--reserve", o->reserve_pct, "Usable charge to keep on landing [%]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
   cmd->add_option("--energy-margin", o->energy_margin_pct,
                   "Extra energy the reserve verdict also checks, for the prediction's own error [%] (uncalibrated "
-                  "predictions of real flights were off by up to 9 %: docs/validation.md; 0: none)")
+                  "predictions of real flights were off by up to 8 %: docs/validation.md; 0: none)")
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
   cmd->add_option("--launch", o->launch,
