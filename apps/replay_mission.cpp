@@ -76,6 +76,8 @@ json flightJson(const calibration::FlightComparison& c, const std::string& log, 
                     {"predicted_time_s", numOrNull(c.predicted.leg_s[k])},
                     {"measured_speed_mps", numOrNull(c.measured.leg_speed_mps[k])},
                     {"predicted_speed_mps", numOrNull(c.predicted.leg_speed_mps[k])},
+                    {"measured_peak_mps", numOrNull(k < c.measured.leg_peak_mps.size() ? c.measured.leg_peak_mps[k] : std::nan(""))},
+                    {"predicted_peak_mps", numOrNull(k < c.predicted.leg_peak_mps.size() ? c.predicted.leg_peak_mps[k] : std::nan(""))},
                     {"measured_energy_j", numOrNull(c.measured.leg_energy_j[k])},
                     {"predicted_energy_j", numOrNull(c.predicted.leg_energy_j[k])}});
   }
@@ -94,6 +96,9 @@ json flightJson(const calibration::FlightComparison& c, const std::string& log, 
           {"energy_error_pct", c.energy_error_pct},
           {"leg_time_mape_pct", numOrNull(c.leg_time_mape_pct)},
           {"legs_matched", c.legs_matched},
+          // Where the kinematics differ: time spent slow (stops, sharp corners) and how fast the legs peak.
+          {"slow_time_s", {{"measured", numOrNull(c.measured.slow_s)}, {"predicted", numOrNull(c.predicted.slow_s)}}},
+          {"leg_peak_speed_ratio", numOrNull(c.leg_peak_ratio)},
           {"log_offset_m", {c.offset.x(), c.offset.y()}},
           {"launch_from_mission_home_m", {c.launch.x(), c.launch.y()}},
           {"legs", legs}};
@@ -134,6 +139,7 @@ MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given
     // The predicted trajectory for the report's speed figure (compareFlight keeps only its times).
     const auto pred = mission::predictMission(calibration::missionLaunchedAt(f.mission, c.launch), v, model, ap, ps);
     out.report.flights.push_back(reportFlight(f, mission_paths[i], c, pred, replay_j));
+    out.report.flights.back().kinematics_note = kinematicsSentence(out.json.back());
   }
   return out;
 }
@@ -153,6 +159,30 @@ std::string launchSentence(double east_m, double north_m) {
   return o.str();
 }
 
+std::string kinematicsSentence(const json& m) {
+  const auto& slow = m["slow_time_s"];
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(0);
+  if (slow["measured"].is_null() || slow["predicted"].is_null()) {
+    o << "Time below 1 m/s and peak speeds: not compared (no waypoint passage matched).";
+    return o.str();
+  }
+  o << "Between the first and last waypoint the vehicle spent " << slow["measured"].get<double>() << " s below 1 m/s, the prediction "
+    << slow["predicted"].get<double>() << " s";
+  const json& r = m["leg_peak_speed_ratio"];
+  if (r.is_null()) {
+    o << "; no leg to compare peak speeds on.";
+  } else {
+    const double pct = 100.0 * (r.get<double>() - 1.0);
+    if (std::abs(pct) < 1.0) {
+      o << "; on the median leg it peaked within 1 % of the prediction's speed.";
+    } else {
+      o << "; on the median leg it peaked " << std::abs(pct) << " % " << (pct >= 0.0 ? "faster" : "slower") << " than predicted.";
+    }
+  }
+  return o.str();
+}
+
 void printMissionReplays(const json& missions) {
   for (const auto& m : missions) {
     std::cout << m["log"].get<std::string>() << " against " << m["mission"].get<std::string>() << " ("
@@ -163,7 +193,7 @@ void printMissionReplays(const json& missions) {
               << m["energy_error_pct"].get<double>() << " %): kinematics " << m["kinematics_error_j"].get<double>()
               << " J, physics " << m["physics_error_j"].get<double>() << " J\n"
               << "  " << launchSentence(m["launch_from_mission_home_m"][0].get<double>(), m["launch_from_mission_home_m"][1].get<double>())
-              << "\n  leg  measured s  predicted s  measured J  predicted J\n";
+              << "\n  " << kinematicsSentence(m) << "\n  leg  measured s  predicted s  measured J  predicted J\n";
     for (const auto& l : m["legs"]) {
       auto f = [](const json& x) {
         return x.is_null() ? std::string("-") : std::to_string(static_cast<long>(std::lround(x.get<double>())));

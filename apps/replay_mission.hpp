@@ -32,6 +32,11 @@ MissionReplays missionReplays(const energy::Vehicle& v, const energy::EnergyMode
 /// home (FlightComparison::launch), and that the prediction flies from there.
 std::string launchSentence(double east_m, double north_m);
 
+/// One sentence on where one comparison's kinematics differ (an element of missionReplays' `json`):
+/// time below 1 m/s between the first and last waypoint, logged and predicted, and the median leg's
+/// peak speed against the prediction's.
+std::string kinematicsSentence(const nlohmann::json& mission_replay);
+
 /// Prints the comparisons (the `json` of missionReplays) as text on stdout.
 void printMissionReplays(const nlohmann::json& missions);
 

@@ -116,6 +116,11 @@ TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
   const auto& m = r["mission_prediction"][0];
   EXPECT_EQ(m["model"], "the vehicle file's calibration");
   EXPECT_GE(m["legs_matched"].get<int>(), 20);
+  // Where the kinematics differ: the IRIS+ spent about 22 s below 1 m/s between its first and last
+  // waypoint (docs/validation.md 5.2), its legs peak near the prediction's.
+  EXPECT_NEAR(m["slow_time_s"]["measured"].get<double>(), 22.0, 3.0);
+  EXPECT_GT(m["slow_time_s"]["predicted"].get<double>(), 0.0);
+  EXPECT_NEAR(m["leg_peak_speed_ratio"].get<double>(), 1.0, 0.2);
   EXPECT_NEAR(m["predicted_energy_j"].get<double>(), p["energy_j"].get<double>(), 0.02 * p["energy_j"].get<double>());
   EXPECT_NEAR(m["kinematics_error_j"].get<double>() + m["physics_error_j"].get<double>(),
               m["predicted_energy_j"].get<double>() - m["measured_energy_j"].get<double>(), 1e-6);

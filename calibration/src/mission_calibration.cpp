@@ -219,6 +219,16 @@ FlightComparison compare(const Prepared& p, const FlightTimes& pred) {
     }
   }
   c.leg_time_mape_pct = c.legs_matched > 0 ? 100.0 * sum / c.legs_matched : kNaN;
+  std::vector<double> ratios;
+  for (std::size_t k = 0; k < std::min(pred.leg_peak_mps.size(), p.measured.leg_peak_mps.size()); ++k)
+    if (std::isfinite(p.measured.leg_peak_mps[k]) && std::isfinite(pred.leg_peak_mps[k]) && pred.leg_peak_mps[k] >= 1.0)
+      ratios.push_back(p.measured.leg_peak_mps[k] / pred.leg_peak_mps[k]);
+  c.leg_peak_ratio = kNaN;
+  if (!ratios.empty()) {
+    std::sort(ratios.begin(), ratios.end());
+    const std::size_t m = ratios.size() / 2;
+    c.leg_peak_ratio = ratios.size() % 2 ? ratios[m] : 0.5 * (ratios[m - 1] + ratios[m]);
+  }
   return c;
 }
 
@@ -258,6 +268,28 @@ Eigen::Vector2d alignTrack(const std::vector<Eigen::Vector3d>& track, const std:
   }
   return best;
 }
+
+namespace {
+
+// Horizontal speed [m/s] at each sample over the 1 s from it (the last second: back to 1 s before),
+// so a 1 Hz log and a 10 Hz prediction are smoothed alike.
+std::vector<double> windowSpeeds(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos) {
+  std::vector<double> v(t.size(), kNaN);
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    j = std::max(j, i);
+    while (j + 1 < t.size() && t[j] < t[i] + 1.0 - 1e-9) ++j;
+    std::size_t a = i, b = j;
+    if (t[b] - t[a] < 1.0 - 1e-9) {  // the log's last second: look back instead
+      a = i;
+      while (a > 0 && t[b] - t[a] < 1.0 - 1e-9) --a;
+    }
+    if (t[b] > t[a]) v[i] = (pos[b] - pos[a]).head<2>().norm() / (t[b] - t[a]);
+  }
+  return v;
+}
+
+}  // namespace
 
 FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos,
                         const std::vector<double>& power, const std::vector<Eigen::Vector3d>& waypoints, double match_m) {
@@ -311,6 +343,22 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
   }
   ft.mission_s = std::isfinite(first) ? last - first : kNaN;
   ft.return_s = std::isfinite(last) ? ft.total_s - last : kNaN;
+  // Peak speed per leg and time spent slow between the first and last passage.
+  const std::vector<double> speed = windowSpeeds(t, pos);
+  for (std::size_t k = 1; k < at_index.size(); ++k) {
+    double peak = kNaN;
+    if (at_index[k] >= 0 && at_index[k - 1] >= 0) {
+      peak = 0.0;
+      for (long i = at_index[k - 1]; i <= at_index[k]; ++i)
+        if (std::isfinite(speed[static_cast<std::size_t>(i)])) peak = std::max(peak, speed[static_cast<std::size_t>(i)]);
+    }
+    ft.leg_peak_mps.push_back(peak);
+  }
+  ft.slow_s = std::isfinite(first) ? 0.0 : kNaN;
+  for (std::size_t i = 1; i < t.size() && std::isfinite(first); ++i) {
+    const double tm = t[i] - t.front();
+    if (tm > first && tm <= last && std::isfinite(speed[i - 1]) && speed[i - 1] < 1.0) ft.slow_s += t[i] - t[i - 1];
+  }
   for (std::size_t i = 1; i < t.size(); ++i) {
     if (!std::isfinite(power[i]) || !std::isfinite(power[i - 1])) continue;
     const double e = 0.5 * (power[i] + power[i - 1]) * (t[i] - t[i - 1]);

@@ -54,6 +54,10 @@ TEST(MissionCalibration, ConstantSpeedTrackGivesExactLegTimesAndEnergy) {
   for (double l : ft.leg_s) EXPECT_NEAR(l, 20.0, 0.11);
   for (double v : ft.leg_speed_mps) EXPECT_NEAR(v, 5.0, 0.05);
   for (double e : ft.leg_energy_j) EXPECT_NEAR(e, 200.0 * 20.0, 25.0);
+  // Every leg peaks at 5 m/s and nothing is slow (a corner's 1 s chord is 3.5 m).
+  ASSERT_EQ(ft.leg_peak_mps.size(), 3u);
+  for (double v : ft.leg_peak_mps) EXPECT_NEAR(v, 5.0, 1e-9);
+  EXPECT_NEAR(ft.slow_s, 0.0, 1e-9);
   EXPECT_NEAR(ft.energy_j, 200.0 * t.back(), 1e-6);
 }
 
@@ -246,4 +250,22 @@ TEST(CalibrationCoverage, WaypointKindsAndSpeedsAreCountedAndTheOutsideIsSaidWhy
   const auto slow = outsideCalibration(k, MissionKind{5, 30, 5.0, 6.0});  // 4 m/s is below 5 / 1.1
   ASSERT_EQ(slow.size(), 1u);
   EXPECT_NE(slow[0].find("commands 4 to 8 m/s; the calibration flights 5 to 6 m/s"), std::string::npos) << slow[0];
+}
+
+TEST(MissionCalibration, TimeSpentSlowAndLegPeaksAreMeasuredOverOneSecondWindows) {
+  // The square at 5 m/s (10 Hz) with a 2 s hover at its second corner (without it nothing is
+  // slow: ConstantSpeedTrackGivesExactLegTimesAndEnergy): the forward 1 s windows are below 1 m/s
+  // from 0.2 s before the hover to 0.2 s after its last second, 1.4 s; the legs still peak at 5 m/s.
+  std::vector<double> t, power;
+  std::vector<Eigen::Vector3d> pos;
+  square({0, 0}, t, pos, power);
+  std::size_t at = 0;
+  while ((pos[at] - Eigen::Vector3d(100, 100, 10)).norm() > 1e-9) ++at;
+  std::vector<double> th(t.begin(), t.begin() + static_cast<long>(at) + 1), ph(power.begin(), power.begin() + static_cast<long>(at) + 1);
+  std::vector<Eigen::Vector3d> xh(pos.begin(), pos.begin() + static_cast<long>(at) + 1);
+  for (int k = 1; k <= 20; ++k) th.push_back(t[at] + 0.1 * k), xh.push_back(pos[at]), ph.push_back(200.0);
+  for (std::size_t i = at + 1; i < t.size(); ++i) th.push_back(t[i] + 2.0), xh.push_back(pos[i]), ph.push_back(200.0);
+  const FlightTimes hover = flightTimes(th, xh, ph, waypoints());
+  EXPECT_NEAR(hover.slow_s, 1.4, 0.11);
+  for (double v : hover.leg_peak_mps) EXPECT_NEAR(v, 5.0, 1e-9);
 }

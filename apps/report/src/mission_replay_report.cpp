@@ -110,15 +110,17 @@ void flightSection(HtmlReport& r, const MissionReplayFlight& f, const std::strin
   checkFlight(f);
   r.heading((several ? "Flight " + suffix.substr(1) + ": " : std::string()) + f.name + " against " + f.mission, 3);
   const double kin = f.predicted_energy_j - f.replay_energy_j, phys = f.replay_energy_j - f.measured_energy_j;
-  r.facts({{"measured", kJWh(f.measured_energy_j) + " in " + formatMinSec(f.measured_time_s) + " min:s"},
-           {"predicted", kJWh(f.predicted_energy_j) + " in " + formatMinSec(f.predicted_time_s) + " min:s: energy " +
-                             pct(f.predicted_energy_j, f.measured_energy_j) + ", time " +
-                             pct(f.predicted_time_s, f.measured_time_s)},
-           {"energy error split", "kinematics " + kJ1(kin) + ", physics " + kJ1(phys)},
-           {"leg time error (MAPE)",
-            std::isfinite(f.leg_time_mape_pct)
-                ? formatNumber(f.leg_time_mape_pct, 1) + " % over " + std::to_string(f.legs.size()) + " legs"
-                : std::string("no leg matched")}});
+  Facts facts = {{"measured", kJWh(f.measured_energy_j) + " in " + formatMinSec(f.measured_time_s) + " min:s"},
+                 {"predicted", kJWh(f.predicted_energy_j) + " in " + formatMinSec(f.predicted_time_s) + " min:s: energy " +
+                                   pct(f.predicted_energy_j, f.measured_energy_j) + ", time " +
+                                   pct(f.predicted_time_s, f.measured_time_s)},
+                 {"energy error split", "kinematics " + kJ1(kin) + ", physics " + kJ1(phys)},
+                 {"leg time error (MAPE)",
+                  std::isfinite(f.leg_time_mape_pct)
+                      ? formatNumber(f.leg_time_mape_pct, 1) + " % over " + std::to_string(f.legs.size()) + " legs"
+                      : std::string("no leg matched")}};
+  if (!f.kinematics_note.empty()) facts.push_back({"where the kinematics differ", f.kinematics_note});
+  r.facts(facts);
   r.paragraph("Kinematics: the predicted flight minus the same energy model on the logged kinematics (" +
               kJ1(f.replay_energy_j) +
               "), i.e. what the flight-behaviour model gets wrong. Physics: that replay minus "

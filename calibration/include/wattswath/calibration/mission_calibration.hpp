@@ -42,6 +42,10 @@ struct FlightTimes {
   std::vector<double> leg_s;        ///< between consecutive matched passages (NaN when either is unmatched)
   std::vector<double> leg_energy_j; ///< [J] energy between consecutive passages (NaN when either is unmatched)
   std::vector<double> leg_speed_mps;  ///< [m/s] mean speed along the path between consecutive passages
+  /// [m/s] highest horizontal speed between consecutive passages (each speed over a 1 s window, so a
+  /// 1 Hz log and a 10 Hz prediction are measured alike; NaN when either passage is unmatched)
+  std::vector<double> leg_peak_mps;
+  double slow_s = 0.0;              ///< [s] time below 1 m/s horizontally between the first and last passage (NaN: none)
   double energy_j = 0.0;            ///< [J] electrical energy of the whole flight
   double mission_energy_j = 0.0;    ///< [J] energy between the first and last passage
 };
@@ -59,6 +63,9 @@ struct FlightComparison {
   double energy_error_pct = 0.0;     ///< [%] total energy
   double leg_time_mape_pct = 0.0;    ///< [%] mean absolute percentage error of the matched leg times
   int legs_matched = 0;              ///< legs with both passages matched
+  /// [-] median over the matched legs of the measured peak speed over the predicted one
+  /// (FlightTimes::leg_peak_mps; NaN without a leg whose predicted peak is 1 m/s or more)
+  double leg_peak_ratio = 0.0;
 };
 
 /// The translation [m] that best lays the logged track onto the mission's waypoints (least mean

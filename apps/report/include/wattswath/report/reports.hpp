@@ -329,6 +329,7 @@ struct MissionReplayFlight {
   double measured_time_s = 0.0;              ///< [s] take-off command to landing, measured
   double predicted_time_s = 0.0;             ///< [s] the same, predicted
   double leg_time_mape_pct = 0.0;            ///< [%] mean absolute error of the matched leg times (NaN: none)
+  std::string kinematics_note;               ///< where the kinematics differ, one sentence (empty: not shown)
 };
 
 /// The mission section of the replay report: which models predicted, and each flight.
