@@ -170,9 +170,12 @@ void xyController(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, con
 // (AC_PosControl::rate_to_accel_xy of 3.x: the integrator holds at the lean limit), lean limit,
 // attitude lag, the airframe's drag; vertical: square-root controller to a climb or descent speed.
 void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, const Airframe& af, double dt) {
+  // Before 3.4 the controller runs when 0.1 s have passed, over the time that actually passed (a
+  // step that does not divide 0.1 s makes it a little longer); at its first call, over one period.
+  const bool first = veh.since_xy > 1e8;
   veh.since_xy += dt;
   if (P.nav_period <= 0.0 || veh.since_xy >= P.nav_period - 1e-9) {
-    xyController(veh, carrot, speed, P, P.nav_period > 0.0 ? std::min(veh.since_xy, P.nav_period) : dt);
+    xyController(veh, carrot, speed, P, P.nav_period <= 0.0 ? dt : first ? P.nav_period : veh.since_xy);
     veh.since_xy = 0.0;
   }
   veh.a.head<2>() += (veh.a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
@@ -232,11 +235,12 @@ struct Flyer {
     Leg g = startLeg(from, to, speed, leash_speed, fast, veh, P);
     if (speed > leash_speed + 0.05 && g.length > 1e-9 && std::abs(g.u.z()) < 0.5) ++late_increases;
     leash_speed = speed;  // recalculated at the position controller's first update on this leg
-    double since_nav = 1e9;  // [s] since the carrot last moved
+    double since_nav = -1.0;  // [s] since the carrot last moved (< 0: not yet on this leg)
     while (true) {
-      since_nav += rec.dt();
-      if (P.nav_period <= 0.0 || since_nav >= P.nav_period - 1e-9) {
-        advanceCarrot(g, veh, P, P.nav_period > 0.0 ? std::min(since_nav, P.nav_period) : rec.dt());
+      const bool first = since_nav < 0.0;
+      since_nav = first ? rec.dt() : since_nav + rec.dt();
+      if (P.nav_period <= 0.0 || first || since_nav >= P.nav_period - 1e-9) {
+        advanceCarrot(g, veh, P, P.nav_period <= 0.0 ? rec.dt() : first ? P.nav_period : since_nav);
         since_nav = 0.0;
       }
       chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, af, rec.dt());

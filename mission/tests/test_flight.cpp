@@ -296,6 +296,24 @@ TEST(ArduCopterLeash, ATrackingErrorSlowsTheCruiseBefore34AsTheLeashSlackSays) {
   }
 }
 
+TEST(ArduCopterLeash, ASimulationStepThatDoesNotDivideTheTenthSecondFliesAlike) {
+  // Before 3.4 the carrot and the position controller run every 0.1 s, over the time that passed:
+  // with steps of 0.03 or 0.04 s (every 0.12 s) the flight is the one at 0.01 s, to a tenth of a
+  // metre per second in cruise and a percent in time. (Stepped by a fixed 0.1 s, the carrot ran at
+  // 0.1 / 0.12 of its speed: 4.17 m/s cruise instead of 4.94.)
+  const auto steps = sequenceMission(localMission({{400, 0, 10}, {400, 200, 10}}));
+  const AutopilotConfig v32 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.2"})", "test");
+  const FlownMission fine = flyMission(steps, v32);
+  for (const double dt : {0.03, 0.04}) {
+    FlightSettings s;
+    s.dt = dt;
+    s.sample_dt = 0.12;
+    const FlownMission coarse = flyMission(steps, v32, s);
+    EXPECT_NEAR(cruiseSpeedBetween(coarse, 150, 300), cruiseSpeedBetween(fine, 150, 300), 0.1) << dt;
+    EXPECT_NEAR(coarse.samples.back().t / fine.samples.back().t, 1.0, 0.01) << dt;
+  }
+}
+
 TEST(ArduCopterLeash, ReturnFromAboveRtlAltFliesHomeAndLands) {
   // Above RTL_ALT (15 m) the RTL climb leg is (nearly) zero long; it used to wait for a carrot
   // that never moves until the 6 h limit.
