@@ -1,6 +1,7 @@
 #include "cli.hpp"
 #include "output_journal.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -280,14 +281,16 @@ void OutputSet::commit() {
   // Every staged file is listed in the folder's journal (flushed) before any is renamed, so a crash
   // midway is completed by the next run into the folder: files inside it by name, files elsewhere
   // (a --report path) by absolute path.
-  const fs::path dir = fs::absolute(dir_, ec);
+  const fs::path dir = fs::absolute(dir_, ec).lexically_normal();
   std::vector<std::pair<std::string, std::string>> journaled;
+  std::vector<fs::path> elsewhere;  // the other folders written into, flushed before the journal goes
   for (const auto& f : staged_) {
     const fs::path t = fs::absolute(f.target, ec).lexically_normal(), tmp = fs::absolute(f.tmp, ec).lexically_normal();
-    if (t.parent_path() == dir.lexically_normal() && tmp.parent_path() == dir.lexically_normal()) {
+    if (t.parent_path() == dir && tmp.parent_path() == dir) {
       journaled.emplace_back(tmp.filename().string(), t.filename().string());
     } else {
       journaled.emplace_back(tmp.string(), t.string());
+      if (std::find(elsewhere.begin(), elsewhere.end(), t.parent_path()) == elsewhere.end()) elsewhere.push_back(t.parent_path());
     }
   }
   if (!journaled.empty()) writeCommitJournal(dir_, journaled);
@@ -302,9 +305,8 @@ void OutputSet::commit() {
       throw std::runtime_error(msg);
     }
     untrackTemporary(staged_[k].slot);
-    const fs::path parent = fs::absolute(staged_[k].target, ec).parent_path();
-    if (parent.lexically_normal() != dir.lexically_normal()) syncFolder(parent.string());
   }
+  for (const auto& folder : elsewhere) syncFolder(folder.string());
   syncFolder(dir_);
   removeCommitJournal(dir_);
   staged_.clear();

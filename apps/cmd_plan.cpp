@@ -571,7 +571,7 @@ void runPlan(const PlanOpts& o) {
   go.leg_properties["time_s"] = r.plan.flown.leg_time;
   const fs::path dir(o.out);
   const std::string plan_text = ms::toQgcPlan(pm.mission);
-  if (auto n = calibrationCoverageNote(ms::parseQgcPlan(plan_text, "mission.plan"), vehicle, o.vehicle)) notes.push_back(*n);
+  if (flight.calibration_note) notes.push_back(*flight.calibration_note);
   writeTextFileAtomic((dir / "mission.plan").string(), plan_text);
   writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
   const std::string path_geojson = geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go);

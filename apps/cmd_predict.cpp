@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <utility>
 #include <sstream>
 #include <vector>
@@ -134,8 +135,20 @@ struct Launch {
   double from_home_m = 0.0;         // [m] horizontal distance from the file's home
   std::optional<double> alt_m;      // [m] the launch point's altitude, as the file's home's (AMSL)
   double alt_change_m = 0.0;        // [m] the launch altitude minus the file's home altitude
-  int absolute_items = 0;           // items whose heights are absolute (they move with the home's)
+  int absolute_items = 0;           // items whose heights are absolute (they move with the home's): absoluteItems
 };
+
+// How many items of `m` whose height is flown (the take-off and the steps flown to, from the
+// sequenced `steps`) give it above sea level (MAV_FRAME_GLOBAL), so it moves with the home's altitude.
+int absoluteItems(const ms::Mission& m, const std::vector<ms::NavStep>& steps) {
+  std::set<int> items;  // an item repeated by DO_JUMP counts once
+  for (const auto& st : steps) {
+    const bool flies_height = st.kind == ms::NavStep::Kind::Takeoff || (ms::isFlownTo(st) && st.has_position);
+    if (flies_height && st.item >= 0 && ms::altitudeFrame(m.items[static_cast<std::size_t>(st.item)].frame) == ms::AltitudeFrame::Absolute)
+      items.insert(st.item);
+  }
+  return static_cast<int>(items.size());
+}
 
 // Moves `m`'s home to `launch` ("LAT,LON" [deg], optionally ",ALT" [m, the file's home's reference]):
 // the autopilot sets home where the vehicle arms and returns there; heights given relative to
@@ -182,12 +195,6 @@ Launch moveHomeTo(ms::Mission& m, const std::string& launch) {
     }
     l.alt_change_m = *l.alt_m - m.home.alt_m;
     m.home.alt_m = *l.alt_m;
-  }
-  // Items whose height is flown (waypoint, loiters, take-off, spline waypoint) in MAV_FRAME_GLOBAL(_INT).
-  for (const auto& it : m.items) {
-    const bool has_height = it.command == 16 || it.command == 17 || it.command == 18 || it.command == 19 ||
-                            it.command == 22 || it.command == 31 || it.command == 82;
-    l.absolute_items += has_height && (it.frame == 0 || it.frame == 5);
   }
   m.home.lat_deg = at.lat_deg;
   m.home.lon_deg = at.lon_deg;
@@ -268,8 +275,8 @@ void registerPredictCommand(CLI::App& app) {
     std::optional<Launch> launch;
     if (!o->launch.empty()) launch = moveHomeTo(m, o->launch);
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
-    const std::optional<Coverage> coverage = coverageOf(m, v, setup);
     ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
+    const std::optional<Coverage> coverage = coverageOf(m, p.flight.steps, v, setup);
     // The reserve is also checked for the dearer of the flights the calibration stands for, and for
     // the behaviour before the calibration when the mission is outside what it flew.
     double dearest = dispute ? dispute->energy_hi_j : 0.0;
@@ -280,7 +287,10 @@ void registerPredictCommand(CLI::App& app) {
       p = ms::predictMission(m, v, model, ap, setup.settings);
     }
     std::vector<std::pair<std::string, std::string>> extra;  // facts for the text, the report and the JSON
-    if (launch) extra.push_back({"launch", launchText(*launch)});
+    if (launch) {
+      launch->absolute_items = absoluteItems(m, p.flight.steps);
+      extra.push_back({"launch", launchText(*launch)});
+    }
     if (dispute) extra.push_back({"calibration", disputeText(*dispute, p)});
     if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));

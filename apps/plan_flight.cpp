@@ -26,6 +26,17 @@ std::string kj(double j) {
   return buf;
 }
 
+// The note on a mission (its sequenced `steps`) outside what the calibration of `setup` flew.
+std::optional<std::string> calibrationNote(const std::vector<mission::NavStep>& steps, const PredictionSetup& setup) {
+  if (!setup.calibrated || !setup.coverage) return std::nullopt;
+  const auto why = calibration::outsideCalibration(calibration::missionKind(steps, setup.autopilot), *setup.coverage);
+  if (why.empty()) return std::nullopt;
+  std::string text = "calibration: the written mission is outside what the vehicle's calibration flew (";
+  for (std::size_t i = 0; i < why.size(); ++i) text += (i ? "; " : "") + why[i];
+  return text + "): its flight figures rest on behaviour the calibration did not see; `wattswath predict mission.plan` "
+                "gives the range with the behaviour before the calibration";
+}
+
 }  // namespace
 
 planner::FlightScoring withSetup(planner::FlightScoring scoring, const PredictionSetup& setup) {
@@ -82,20 +93,8 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
       f.max_chord_offset_m = std::max(f.max_chord_offset_m, l.radius * (1.0 - std::cos(0.5 * std::abs(l.turn_angle))));
   f.mission = best.mission;
   f.prediction = best.prediction;
+  f.calibration_note = calibrationNote(best.prediction.flight.steps, setup);  // the steps of the mission written
   return f;
-}
-
-std::optional<std::string> calibrationCoverageNote(const mission::Mission& written, const energy::Vehicle& v,
-                                                   const std::string& vehicle_path) {
-  const PredictionSetup setup = predictionSetup(v, vehicle_path, "", 25.0);
-  if (!setup.calibrated || !setup.coverage) return std::nullopt;
-  const auto why = calibration::outsideCalibration(calibration::missionKind(mission::sequenceMission(written), setup.autopilot),
-                                                   *setup.coverage);
-  if (why.empty()) return std::nullopt;
-  std::string text = "calibration: the written mission is outside what the vehicle's calibration flew (";
-  for (std::size_t i = 0; i < why.size(); ++i) text += (i ? "; " : "") + why[i];
-  return text + "): its flight figures rest on behaviour the calibration did not see; `wattswath predict mission.plan` "
-                "gives the range with the behaviour before the calibration";
 }
 
 void printFlight(const PlanFlight& f) {

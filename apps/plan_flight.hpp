@@ -36,6 +36,9 @@ struct PlanFlight {
   double max_chord_offset_m = 0.0;     ///< [m] largest arc-to-chord distance of the chosen candidate's arcs
   mission::MissionPrediction prediction;  ///< its flight
   std::string autopilot;               ///< "ArduCopter 4.5 (arducopter-scurve model, ...)"
+  /// A note when the chosen mission asks for flying the vehicle's calibration never saw
+  /// (calibration::outsideCalibration, as `predict` says it), else nothing.
+  std::optional<std::string> calibration_note;
 };
 
 /// `scoring` with the model, autopilot and settings of `setup`, and the mission naming that
@@ -50,11 +53,6 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
                         std::vector<std::string>& notes);
 
 /// The text lines of the flight.
-/// A note when the written mission `written` asks for flying the vehicle's calibration never saw
-/// (calibration::outsideCalibration, as `predict` says it), else nothing.
-std::optional<std::string> calibrationCoverageNote(const mission::Mission& written, const energy::Vehicle& v,
-                                                   const std::string& vehicle_path);
-
 void printFlight(const PlanFlight& f);
 
 /// The JSON object of the flight ("flight" key of plan --json).

@@ -47,9 +47,10 @@ std::string disputeText(const Dispute& d, const ms::MissionPrediction& p) {
   return os.str();
 }
 
-std::optional<Coverage> coverageOf(const ms::Mission& m, const energy::Vehicle& v, const PredictionSetup& setup) {
+std::optional<Coverage> coverageOf(const ms::Mission& m, const std::vector<ms::NavStep>& steps, const energy::Vehicle& v,
+                                   const PredictionSetup& setup) {
   if (!setup.calibrated || !setup.coverage) return std::nullopt;
-  const auto kind = calibration::missionKind(ms::sequenceMission(m), setup.autopilot);
+  const auto kind = calibration::missionKind(steps, setup.autopilot);
   Coverage c;
   c.reasons = calibration::outsideCalibration(kind, *setup.coverage);
   if (c.reasons.empty()) return std::nullopt;

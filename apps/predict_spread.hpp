@@ -35,9 +35,10 @@ struct Coverage {
   double time_s = 0.0;               ///< [s] likewise
 };
 
-/// The coverage check of `setup` on `m`: nothing when uncalibrated, inside, or the calibration
-/// recorded no coverage (files before 2026-11-25).
-std::optional<Coverage> coverageOf(const mission::Mission& m, const energy::Vehicle& v, const PredictionSetup& setup);
+/// The coverage check of `setup` on `m` (sequenced as `steps`): nothing when uncalibrated, inside,
+/// or the calibration recorded no coverage (files before 2026-11-25).
+std::optional<Coverage> coverageOf(const mission::Mission& m, const std::vector<mission::NavStep>& steps,
+                                   const energy::Vehicle& v, const PredictionSetup& setup);
 
 /// One sentence on the coverage, relative to prediction `p`.
 std::string coverageText(const Coverage& c, const mission::MissionPrediction& p);

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "median.hpp"
 #include "number_text.hpp"
 #include "wattswath/calibration/replay.hpp"
 #include "wattswath/geometry/frame.hpp"
@@ -223,12 +224,7 @@ FlightComparison compare(const Prepared& p, const FlightTimes& pred) {
   for (std::size_t k = 0; k < std::min(pred.leg_peak_mps.size(), p.measured.leg_peak_mps.size()); ++k)
     if (std::isfinite(p.measured.leg_peak_mps[k]) && std::isfinite(pred.leg_peak_mps[k]) && pred.leg_peak_mps[k] >= 1.0)
       ratios.push_back(p.measured.leg_peak_mps[k] / pred.leg_peak_mps[k]);
-  c.leg_peak_ratio = kNaN;
-  if (!ratios.empty()) {
-    std::sort(ratios.begin(), ratios.end());
-    const std::size_t m = ratios.size() / 2;
-    c.leg_peak_ratio = ratios.size() % 2 ? ratios[m] : 0.5 * (ratios[m - 1] + ratios[m]);
-  }
+  c.leg_peak_ratio = detail::median(ratios);  // NaN without a leg
   return c;
 }
 

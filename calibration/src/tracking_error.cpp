@@ -3,18 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "median.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 
 namespace wattswath::calibration {
 namespace {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  if (v.size() % 2 == 1) return *mid;
-  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
-}
+using detail::median;
 
 // Horizontal and vertical distance of `p` from the leg a-b, the leg found by horizontal distance.
 void legDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double& horizontal,
