@@ -86,8 +86,28 @@ struct Vehicle {
   Eigen::Vector2d v_cmd_prev = Eigen::Vector2d::Zero();  // the previous step's velocity command (feed-forward)
   Eigen::Vector2d integ = Eigen::Vector2d::Zero();       // [m/s^2] the velocity loop's integrator (VEL_XY_I)
   Eigen::Vector2d a_cmd = Eigen::Vector2d::Zero();       // [m/s^2] the acceleration (lean) target in force
-  double since_xy = 1e9;                                 // [s] since the horizontal controller last ran
+  Eigen::Vector2d ff = Eigen::Vector2d::Zero();          // [m/s^2] the velocity loop's feed-forward last computed
+  bool freeze_ff = false;  // a new leg: the next controller run keeps the feed-forward (AC_PosControl::freeze_ff_xy)
+  double since_nav = 1e9;  // [s] since the carrot and the horizontal controller last ran (1e9: never)
 };
+
+// Advances the navigation clock by `dt` [s]; returns the time [s] the carrot and the horizontal
+// position controller run over on this step, 0 when they do not run. Before 3.4 one clock drives
+// both (AC_WPNav::update_wpnav: every WPNAV_WP_UPDATE_TIME = 0.1 s it moves the carrot and triggers
+// the controller, whose steps run on the next loops with the same dt), across legs and holds: a
+// new leg's carrot first moves at the next tick. From 3.4 on (nav_period 0) both run every step.
+double navStep(Vehicle& veh, const Params& P, double dt) {
+  if (P.nav_period <= 0.0) return dt;
+  if (veh.since_nav > 1e8) {  // the first call: run at once, over one period
+    veh.since_nav = 0.0;
+    return P.nav_period;
+  }
+  veh.since_nav += dt;
+  if (veh.since_nav < P.nav_period - 1e-9) return 0.0;
+  const double ran = veh.since_nav;  // a step that does not divide 0.1 s makes it a little longer
+  veh.since_nav = 0.0;
+  return ran;
+}
 
 struct Leg {
   Eigen::Vector3d origin, dest, u;
@@ -166,18 +186,13 @@ void advanceCarrot(Leg& g, const Vehicle& veh, const Params& P, double dt) {
 
 void xyController(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, double dt);
 
-// The vehicle chases `carrot` one step: square-root position controller, PI velocity loop
-// (AC_PosControl::rate_to_accel_xy of 3.x: the integrator holds at the lean limit), lean limit,
+// The vehicle chases `carrot` one step of `dt` [s]: square-root position controller, PI velocity
+// loop (AC_PosControl::rate_to_accel_xy of 3.x: the integrator holds at the lean limit), lean limit,
 // attitude lag, the airframe's drag; vertical: square-root controller to a climb or descent speed.
-void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, const Airframe& af, double dt) {
-  // Before 3.4 the controller runs when 0.1 s have passed, over the time that actually passed (a
-  // step that does not divide 0.1 s makes it a little longer); at its first call, over one period.
-  const bool first = veh.since_xy > 1e8;
-  veh.since_xy += dt;
-  if (P.nav_period <= 0.0 || veh.since_xy >= P.nav_period - 1e-9) {
-    xyController(veh, carrot, speed, P, P.nav_period <= 0.0 ? dt : first ? P.nav_period : veh.since_xy);
-    veh.since_xy = 0.0;
-  }
+// `nav_dt` [s]: when > 0 the horizontal controller runs over it on this step (navStep).
+void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Params& P, const Airframe& af, double dt,
+           double nav_dt) {
+  if (nav_dt > 0.0) xyController(veh, carrot, speed, P, nav_dt);
   veh.a.head<2>() += (veh.a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
   const double vz_cmd = std::clamp(sqrtController(carrot.z() - veh.p.z(), P.pos_z_p, P.accel_z), -P.speed_dn, P.speed_up);
   veh.a.z() = std::clamp((vz_cmd - veh.v.z()) / std::max(dt, 0.2), -P.accel_z, P.accel_z);
@@ -200,8 +215,15 @@ void xyController(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, con
   if (v_cmd.norm() > speed) v_cmd *= speed / v_cmd.norm();
   // Acceleration: the change of the velocity command (feed-forward, AC_PosControl::rate_to_accel_xy,
   // bounded by the lean limit so a jump at a new leg is not followed at once) plus the velocity loop.
-  Eigen::Vector2d ff = (v_cmd - veh.v_cmd_prev) / dt;
-  if (ff.norm() > P.accel_max) ff *= P.accel_max / ff.norm();
+  // At a new leg the feed-forward is frozen for one run ("stop the feed forward being calculated
+  // during a known discontinuity").
+  Eigen::Vector2d ff = veh.ff;
+  if (!veh.freeze_ff) {
+    ff = (v_cmd - veh.v_cmd_prev) / dt;
+    if (ff.norm() > P.accel_max) ff *= P.accel_max / ff.norm();
+  }
+  veh.freeze_ff = false;
+  veh.ff = ff;
   veh.v_cmd_prev = v_cmd;
   const Eigen::Vector2d verr = v_cmd - veh.v.head<2>();
   Eigen::Vector2d a_cmd = ff + P.vel_xy_p * verr + veh.integ;
@@ -230,30 +252,28 @@ struct Flyer {
   double leash_speed;
   int late_increases = 0;  // legs commanded faster than the leash they start with (flown at the old speed)
 
-  // Flies one leg to `to`; returns when the autopilot declares it reached.
-  void leg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool fast, FlightPhase phase, int step) {
+  // Flies one leg from `from` (where the carrot is) to `to`; returns when the autopilot declares it
+  // reached, with where the carrot then is (past `to` by up to a step's advance on a fast waypoint).
+  Eigen::Vector3d leg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool fast, FlightPhase phase,
+                      int step) {
     Leg g = startLeg(from, to, speed, leash_speed, fast, veh, P);
     if (speed > leash_speed + 0.05 && g.length > 1e-9 && std::abs(g.u.z()) < 0.5) ++late_increases;
     leash_speed = speed;  // recalculated at the position controller's first update on this leg
-    double since_nav = -1.0;  // [s] since the carrot last moved (< 0: not yet on this leg)
+    veh.freeze_ff = true;  // AC_WPNav::update_wpnav: new_wp_destination freezes the feed-forward once
     while (true) {
-      const bool first = since_nav < 0.0;
-      since_nav = first ? rec.dt() : since_nav + rec.dt();
-      if (P.nav_period <= 0.0 || first || since_nav >= P.nav_period - 1e-9) {
-        advanceCarrot(g, veh, P, P.nav_period <= 0.0 ? rec.dt() : first ? P.nav_period : since_nav);
-        since_nav = 0.0;
-      }
-      chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, af, rec.dt());
+      const double nav_dt = navStep(veh, P, rec.dt());
+      if (nav_dt > 0.0) advanceCarrot(g, veh, P, nav_dt);
+      chase(veh, g.length > 1e-9 ? g.carrot() : to, speed, P, af, rec.dt(), nav_dt);
       rec.tick(veh.p, veh.v, phase, step);
       const bool carrot_there = g.length <= 1e-9 || g.desired >= g.length;  // a degenerate leg has no carrot to move
-      if (carrot_there && (fast || (veh.p - to).norm() <= P.radius)) return;
+      if (carrot_there && (fast || (veh.p - to).norm() <= P.radius)) return g.length > 1e-9 ? g.carrot() : to;
     }
   }
   // Hovers at `at` for `seconds`, the vehicle still converging on it.
   void hold(const Eigen::Vector3d& at, double seconds, double speed, FlightPhase phase, int step) {
     const long n = std::lround(seconds / rec.dt());
     for (long i = 0; i < n; ++i) {
-      chase(veh, at, speed, P, af, rec.dt());
+      chase(veh, at, speed, P, af, rec.dt(), navStep(veh, P, rec.dt()));
       rec.tick(veh.p, veh.v, phase, step);
     }
   }
@@ -286,10 +306,10 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
     } else if (isFlownTo(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : target;
       const bool fast = st.kind != NavStep::Kind::LoiterTime && st.hold_s <= 0.0 && !s.stop_at_waypoints;
-      f.leg(target, to, speed, fast, FlightPhase::Mission, ki);
+      const Eigen::Vector3d carrot = f.leg(target, to, speed, fast, FlightPhase::Mission, ki);
       rec.reached(ki);
       f.hold(to, st.hold_s, speed, FlightPhase::Mission, ki);
-      target = to;
+      target = fast ? carrot : to;  // AC_WPNav::set_wp_destination starts the next leg where the carrot is
     } else if (st.kind == NavStep::Kind::Delay) {
       rec.reached(ki);
       f.hold(target, st.hold_s, speed, FlightPhase::Mission, ki);

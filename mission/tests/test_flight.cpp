@@ -314,6 +314,24 @@ TEST(ArduCopterLeash, ASimulationStepThatDoesNotDivideTheTenthSecondFliesAlike) 
   }
 }
 
+TEST(ArduCopterLeash, Before34OneTenthSecondClockDrivesTheCarrotAcrossLegs) {
+  // AC_WPNav::update_wpnav (3.2) moves the carrot when 0.1 s have passed since it last did, whatever
+  // leg it is on: a new leg's carrot first moves at the next tick, not at once. A fast waypoint is
+  // reached at a carrot move, so every waypoint of the flight is reached on one 0.1 s grid. (With a
+  // clock restarted at each leg, each reach came one simulation step later on the grid.)
+  const auto steps = sequenceMission(localMission({{60, 0, 10}, {60, 40, 10}, {20, 40, 10}, {20, 90, 10}, {90, 90, 10}}));
+  const AutopilotConfig v32 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.2"})", "test");
+  const FlownMission f = flyMission(steps, v32);
+  std::vector<double> reached;
+  for (std::size_t k = 1; k + 1 < steps.size(); ++k)
+    if (steps[k].kind == NavStep::Kind::Waypoint) reached.push_back(f.events[k].reached_s);
+  ASSERT_GE(reached.size(), 4u);
+  for (std::size_t k = 1; k < reached.size(); ++k) {
+    const double ticks = (reached[k] - reached[0]) / 0.1;
+    EXPECT_NEAR(ticks, std::round(ticks), 1e-6) << "waypoint " << k << " reached " << reached[k] - reached[0] << " s after the first";
+  }
+}
+
 TEST(ArduCopterLeash, ReturnFromAboveRtlAltFliesHomeAndLands) {
   // Above RTL_ALT (15 m) the RTL climb leg is (nearly) zero long; it used to wait for a carrot
   // that never moves until the 6 h limit.
