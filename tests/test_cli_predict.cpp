@@ -210,7 +210,22 @@ TEST(CliPredict, AMissionOfAnotherKindThanTheCalibrationsIsSaidToBeOutsideItAndF
   ASSERT_TRUE(faster["calibration_coverage"].is_object());
   EXPECT_NE(faster["calibration_coverage"]["outside"][0].get<std::string>().find("commands 5 to 5 m/s"), std::string::npos)
       << faster["calibration_coverage"].dump();
+  // ... nor legs under half the calibration's shortest.
+  v["extensions"]["calibration"]["coverage"]["speed_mps"] = {4.0, 6.0};
+  v["extensions"]["calibration"]["coverage"]["leg_m"] = {2000.0, 3000.0};
+  std::ofstream(path) << v.dump();
+  const json shorter = runJson("predict " + mission + " --vehicle " + path + " --json");
+  ASSERT_TRUE(shorter["calibration_coverage"].is_object());
+  EXPECT_NE(shorter["calibration_coverage"]["outside"][0].get<std::string>().find("the calibration flights' shortest was 2000 m"),
+            std::string::npos)
+      << shorter["calibration_coverage"].dump();
   // A malformed record is an error naming the field.
+  v["extensions"]["calibration"]["coverage"]["leg_m"] = {-1.0, 30.0};
+  std::ofstream(path) << v.dump();
+  const RunResult bad_legs = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");
+  EXPECT_NE(bad_legs.status, 0);
+  EXPECT_NE(bad_legs.output.find("extensions.calibration.coverage.leg_m[0] = -1.0"), std::string::npos) << bad_legs.output;
+  v["extensions"]["calibration"]["coverage"].erase("leg_m");
   v["extensions"]["calibration"]["coverage"]["speed_mps"] = {6.0, 4.0};
   std::ofstream(path) << v.dump();
   const RunResult bad = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");

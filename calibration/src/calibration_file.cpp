@@ -11,6 +11,28 @@
 namespace wattswath::calibration {
 namespace {
 
+// The legs and turns of extensions.calibration.coverage (absent in files before 2026-11-25's second
+// round: then not compared).
+void readCoverageGeometry(const nlohmann::json& c, const std::string& where, MissionKind& k) {
+  auto number = [&](const nlohmann::json& v, const std::string& field, double lo) {
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo) {
+      throw std::invalid_argument(where + ".coverage." + field + " = " + v.dump() + ", expected a number of at least " +
+                                  std::to_string(static_cast<int>(lo)));
+    }
+    return v.get<double>();
+  };
+  if (c.contains("leg_m")) {
+    const auto& l = c["leg_m"];
+    if (!l.is_array() || l.size() != 2) {
+      throw std::invalid_argument(where + ".coverage.leg_m = " + l.dump() + ", expected [shortest, longest]");
+    }
+    k.leg_lo_m = number(l[0], "leg_m[0]", 0);
+    k.leg_hi_m = number(l[1], "leg_m[1]", 0);
+  }
+  if (c.contains("turn_deg_max")) k.turn_hi_deg = number(c["turn_deg_max"], "turn_deg_max", -1);
+  if (c.contains("leg_climb_m_max")) k.climb_hi_m = number(c["leg_climb_m_max"], "leg_climb_m_max", -1);
+}
+
 // extensions.calibration's `coverage` and `behaviour_before` (absent in files before 2026-11-25).
 void readCoverage(const nlohmann::json& j, const std::string& where, CalibratedModel& cm) {
   if (j.contains("coverage")) {
@@ -27,6 +49,7 @@ void readCoverage(const nlohmann::json& j, const std::string& where, CalibratedM
     }
     cm.coverage = MissionKind{c["stop_waypoints"].get<int>(), c["fast_waypoints"].get<int>(), c["speed_mps"][0].get<double>(),
                               c["speed_mps"][1].get<double>()};
+    readCoverageGeometry(c, where, *cm.coverage);
   }
   if (j.contains("behaviour_before")) {
     const auto& b = j["behaviour_before"];
@@ -54,7 +77,10 @@ std::string calibrationToJson(const CalibrationResult& r) {
   }
   j["coverage"] = {{"stop_waypoints", r.coverage.stop_waypoints},
                    {"fast_waypoints", r.coverage.fast_waypoints},
-                   {"speed_mps", {r.coverage.speed_lo_mps, r.coverage.speed_hi_mps}}};
+                   {"speed_mps", {r.coverage.speed_lo_mps, r.coverage.speed_hi_mps}},
+                   {"leg_m", {r.coverage.leg_lo_m, r.coverage.leg_hi_m}},
+                   {"turn_deg_max", r.coverage.turn_hi_deg},
+                   {"leg_climb_m_max", r.coverage.climb_hi_m}};
   j["behaviour_before"] = r.behaviour_before;
   j["effects"] = r.model.effectNames();
   for (const auto& e : r.model.effects())

@@ -2,6 +2,9 @@
 #include "wattswath/calibration/coverage.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "number_text.hpp"
 
@@ -16,25 +19,56 @@ double defaultSpeed(const mission::AutopilotConfig& ap) {
   return ap.get("WPNAV_SPEED") / 100.0;
 }
 
+// A length [m] as a pilot reads it: whole metres from 10 m up, else to a decimetre.
+std::string metres(double m) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, m >= 10.0 ? "%.0f" : "%.1f", m);
+  return buf;
+}
+
+// The lower of two positive values, 0 meaning "none".
+double lowest(double a, double b) { return a <= 0.0 ? b : b <= 0.0 ? a : std::min(a, b); }
+
 }  // namespace
 
 MissionKind missionKind(const std::vector<mission::NavStep>& steps, const mission::AutopilotConfig& autopilot) {
   MissionKind k;
   const double fallback = defaultSpeed(autopilot);
   const mission::NavStep* prev = nullptr;
+  std::vector<const mission::NavStep*> corners;  // the flown-to waypoints after a horizontal leg, in order
+  std::vector<Eigen::Vector2d> headings;         // the horizontal direction of the leg into each
+  std::vector<const mission::NavStep*> froms;    // where that leg starts
   for (const auto& s : steps) {
     if (!mission::isFlownTo(s) || !s.has_position) {
       if (s.kind == mission::NavStep::Kind::Takeoff) prev = &s;
       continue;
     }
     (s.hold_s > 0.0 || s.kind == mission::NavStep::Kind::LoiterTime ? k.stop_waypoints : k.fast_waypoints) += 1;
-    const bool moves = prev == nullptr || (s.target - prev->target).head<2>().norm() > 1.0;
+    const Eigen::Vector2d d = prev ? Eigen::Vector2d((s.target - prev->target).head<2>()) : Eigen::Vector2d::Zero();
+    const bool moves = prev == nullptr || d.norm() > 1.0;
     if (moves) {
       const double v = s.speed_xy > 0.0 ? s.speed_xy : fallback;
       k.speed_lo_mps = k.speed_lo_mps > 0.0 ? std::min(k.speed_lo_mps, v) : v;
       k.speed_hi_mps = std::max(k.speed_hi_mps, v);
     }
+    if (prev != nullptr && d.norm() > 1.0) {
+      k.leg_lo_m = k.leg_lo_m > 0.0 ? std::min(k.leg_lo_m, d.norm()) : d.norm();
+      k.leg_hi_m = std::max(k.leg_hi_m, d.norm());
+      corners.push_back(&s);
+      headings.push_back(d.normalized());
+      froms.push_back(prev);
+    }
+    if (prev != nullptr && prev->kind != mission::NavStep::Kind::Takeoff)
+      k.climb_hi_m = std::max(k.climb_hi_m, std::abs(s.target.z() - prev->target.z()));
     prev = &s;
+  }
+  // A turn is taken at a waypoint without a hold time between two horizontal legs.
+  for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+    const mission::NavStep& c = *corners[i];
+    if (c.hold_s > 0.0 || c.kind == mission::NavStep::Kind::LoiterTime) continue;
+    if (froms[i + 1] != &c) continue;  // something was flown to in between (a climb on the spot)
+    const double cosine = std::clamp(headings[i].dot(headings[i + 1]), -1.0, 1.0);
+    k.turn_hi_deg = std::max(k.turn_hi_deg, std::acos(cosine) * 180.0 / M_PI);
   }
   return k;
 }
@@ -44,7 +78,11 @@ MissionKind combine(const MissionKind& a, const MissionKind& b) {
   k.stop_waypoints = a.stop_waypoints + b.stop_waypoints;
   k.fast_waypoints = a.fast_waypoints + b.fast_waypoints;
   k.speed_hi_mps = std::max(a.speed_hi_mps, b.speed_hi_mps);
-  k.speed_lo_mps = a.speed_lo_mps <= 0.0 ? b.speed_lo_mps : b.speed_lo_mps <= 0.0 ? a.speed_lo_mps : std::min(a.speed_lo_mps, b.speed_lo_mps);
+  k.speed_lo_mps = lowest(a.speed_lo_mps, b.speed_lo_mps);
+  k.leg_lo_m = lowest(a.leg_lo_m, b.leg_lo_m);
+  k.leg_hi_m = std::max(a.leg_hi_m, b.leg_hi_m);
+  k.turn_hi_deg = std::max(a.turn_hi_deg, b.turn_hi_deg);
+  k.climb_hi_m = std::max(a.climb_hi_m, b.climb_hi_m);
   return k;
 }
 
@@ -62,6 +100,19 @@ std::vector<std::string> outsideCalibration(const MissionKind& m, const MissionK
       (m.speed_hi_mps > 1.1 * c.speed_hi_mps || m.speed_lo_mps < c.speed_lo_mps / 1.1)) {
     why.push_back("this mission commands " + num(m.speed_lo_mps) + " to " + num(m.speed_hi_mps) +
                   " m/s; the calibration flights " + num(c.speed_lo_mps) + " to " + num(c.speed_hi_mps) + " m/s");
+  }
+  if (m.leg_lo_m > 0.0 && c.leg_lo_m > 0.0 && m.leg_lo_m < 0.5 * c.leg_lo_m) {
+    why.push_back("this mission has legs as short as " + metres(m.leg_lo_m) + " m; the calibration flights' shortest was " +
+                  metres(c.leg_lo_m) + " m (a short leg is flown accelerating and braking)");
+  }
+  if (m.turn_hi_deg >= 0.0 && c.turn_hi_deg >= 0.0 && m.turn_hi_deg > c.turn_hi_deg + 20.0) {
+    why.push_back("this mission turns by up to " + metres(std::round(m.turn_hi_deg)) +
+                  " deg at waypoints without a hold time; the calibration flights by up to " + metres(std::round(c.turn_hi_deg)) +
+                  " deg");
+  }
+  if (m.climb_hi_m >= 0.0 && c.climb_hi_m >= 0.0 && m.climb_hi_m > std::max(2.0 * c.climb_hi_m, c.climb_hi_m + 5.0)) {
+    why.push_back("this mission's legs change height by up to " + metres(m.climb_hi_m) + " m; the calibration flights' by up to " +
+                  metres(c.climb_hi_m) + " m");
   }
   return why;
 }

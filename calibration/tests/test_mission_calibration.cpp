@@ -250,6 +250,32 @@ TEST(CalibrationCoverage, WaypointKindsAndSpeedsAreCountedAndTheOutsideIsSaidWhy
   const auto slow = outsideCalibration(k, MissionKind{5, 30, 5.0, 6.0});  // 4 m/s is below 5 / 1.1
   ASSERT_EQ(slow.size(), 1u);
   EXPECT_NE(slow[0].find("commands 4 to 8 m/s; the calibration flights 5 to 6 m/s"), std::string::npos) << slow[0];
+  // Legs, turns and climbs: three 100 m legs (the climb on the spot is none), 90 deg turns at the
+  // two waypoints without a hold (the stop's turn is not flown through), 20 m up on a leg (the
+  // take-off's climb is not a leg's).
+  EXPECT_DOUBLE_EQ(k.leg_lo_m, 100.0);
+  EXPECT_DOUBLE_EQ(k.leg_hi_m, 100.0);
+  EXPECT_NEAR(k.turn_hi_deg, 90.0, 1e-9);
+  EXPECT_DOUBLE_EQ(k.climb_hi_m, 20.0);
+  MissionKind gentle = both;  // long legs, 45 deg turns, 2 m climbs
+  gentle.leg_lo_m = 250.0;
+  gentle.leg_hi_m = 400.0;
+  gentle.turn_hi_deg = 45.0;
+  gentle.climb_hi_m = 2.0;
+  const auto sharp = outsideCalibration(k, gentle);
+  ASSERT_EQ(sharp.size(), 3u);
+  EXPECT_NE(sharp[0].find("legs as short as 100 m; the calibration flights' shortest was 250 m"), std::string::npos) << sharp[0];
+  EXPECT_NE(sharp[1].find("turns by up to 90 deg"), std::string::npos) << sharp[1];
+  EXPECT_NE(sharp[2].find("change height by up to 20 m; the calibration flights' by up to 2.0 m"), std::string::npos) << sharp[2];
+  gentle.leg_lo_m = 199.0;   // 100 m is just over half of it
+  gentle.turn_hi_deg = 70.0;  // 90 is within 20 deg of it
+  gentle.climb_hi_m = 15.0;   // 20 is below 15 + 5
+  EXPECT_TRUE(outsideCalibration(k, gentle).empty());
+  const MissionKind joined = combine(gentle, k);
+  EXPECT_DOUBLE_EQ(joined.leg_lo_m, 100.0);
+  EXPECT_DOUBLE_EQ(joined.leg_hi_m, 400.0);
+  EXPECT_DOUBLE_EQ(joined.turn_hi_deg, 90.0);
+  EXPECT_DOUBLE_EQ(joined.climb_hi_m, 20.0);
 }
 
 TEST(MissionCalibration, TimeSpentSlowAndLegPeaksAreMeasuredOverOneSecondWindows) {
