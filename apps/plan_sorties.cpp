@@ -72,34 +72,61 @@ std::string name(std::size_t k, const char* ext) {
 
 }  // namespace
 
-// The split at the largest budget at which every sortie, flown by the autopilot model, lands with
-// the reserve: the usable energy as predict's battery model discharges it (the first split's
-// sorties tell: energy / (1 - usable left)), then the pieces of a sortie that lands below the
+// The closed-form budget corrected by flights: the usable energy as predict's battery model
+// discharges it, from the sorties of a first split at `ss.budget_j` (energy / (1 - usable left),
+// their median). Unchanged when that split fails or no sortie used the battery.
+double flownBudget(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
+                   const pl::SortieSettings& ss, double reserve_pct) {
+  std::vector<FlownSortie> flown;
+  bool fits = false;
+  try {
+    flown = flySorties(pl::splitIntoSorties(plan.flown, *scoring.problem, scorer, ss), scoring, fits);
+  } catch (const std::runtime_error&) {
+    return ss.budget_j;
+  }
+  std::vector<double> usable_j;
+  for (const auto& f : flown)
+    if (f.prediction.battery.usable_left_end < 0.95) usable_j.push_back(f.prediction.total.energy_j / (1.0 - f.prediction.battery.usable_left_end));
+  if (usable_j.empty()) return ss.budget_j;
+  std::nth_element(usable_j.begin(), usable_j.begin() + usable_j.size() / 2, usable_j.end());
+  return usable_j[usable_j.size() / 2] * (1.0 - reserve_pct / 100.0) / (1.0 + scoring.settings.energy_margin);
+}
+
+// The fewest sorties (or `ss.count`) each of which, flown by the autopilot model, lands with the
+// reserve with the energy margin, and among those the least closed-form energy: the planner asks
+// the flight model which runs of pieces fly (pl::splitIntoFlownSorties), starting from the budget
+// the first split's flights give.
+std::vector<FlownSortie> flownSplit(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
+                                    pl::SortieSettings ss, double reserve_pct, bool& fits) {
+  fits = false;
+  ss.budget_j = flownBudget(plan, scoring, scorer, ss, reserve_pct);
+  if (ss.budget_j <= ss.overhead_j) return {};
+  const pl::SortieCheck flies = [&](const pl::Sortie& so) {
+    const auto m = pl::missionFromPlan(so.flown, *scoring.problem, *scoring.frame, scoring.home_altitude_amsl_m, scoring.mission);
+    return pl::flyWrittenMission(m, scoring, "sortie mission.plan").battery.fits_with_margin;
+  };
+  try {
+    return flySorties(pl::splitIntoFlownSorties(plan.flown, *scoring.problem, scorer, ss, flies), scoring, fits);
+  } catch (const std::runtime_error&) {
+    return {};
+  }
+}
+
+// The naive split at the largest budget at which every sortie, flown by the autopilot model, lands
+// with the reserve: the budget flownBudget gives, then the pieces of a sortie that lands below the
 // reserve weighted up until every one keeps it.
-std::vector<FlownSortie> splitThatFits(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
-                                       pl::SortieSettings ss, double reserve_pct, bool& fits) {
+std::vector<FlownSortie> naiveSplitThatFits(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
+                                            pl::SortieSettings ss, double reserve_pct, bool& fits) {
   std::vector<FlownSortie> flown;
   fits = false;
-  bool calibrated = false;
+  ss.budget_j = flownBudget(plan, scoring, scorer, ss, reserve_pct);
   for (int attempt = 0; attempt < 30; ++attempt) {
     if (ss.budget_j <= ss.overhead_j) break;
     try {
       flown = flySorties(pl::splitIntoSorties(plan.flown, *scoring.problem, scorer, ss), scoring, fits);
     } catch (const std::runtime_error&) {
-      if (calibrated) break;  // no split at this budget: none at a smaller one
       fits = false;
-      return flown;
-    }
-    if (!calibrated) {
-      calibrated = true;
-      std::vector<double> usable_j;
-      for (const auto& f : flown)
-        if (f.prediction.battery.usable_left_end < 0.95) usable_j.push_back(f.prediction.total.energy_j / (1.0 - f.prediction.battery.usable_left_end));
-      if (!usable_j.empty()) {
-        std::nth_element(usable_j.begin(), usable_j.begin() + usable_j.size() / 2, usable_j.end());
-        ss.budget_j = usable_j[usable_j.size() / 2] * (1.0 - reserve_pct / 100.0) / (1.0 + scoring.settings.energy_margin);
-        continue;
-      }
+      break;  // no split at this budget: none with heavier pieces
     }
     if (fits) break;
     // Where a sortie lands below the reserve (the battery drains faster at high power than its
@@ -208,7 +235,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   if (plan.flown.energy > 0.0) ss.scale = std::clamp((single_flight_j - overhead_j) / plan.flown.energy, 0.5, 2.0);
   const double budget0 = ss.budget_j;
   bool fits = false;
-  const std::vector<FlownSortie> flown = splitThatFits(plan, scoring, scorer, ss, req.reserve_pct, fits);
+  const std::vector<FlownSortie> flown = flownSplit(plan, scoring, scorer, ss, req.reserve_pct, fits);
   if (!fits)
     throw std::runtime_error("no split into " + (count ? std::to_string(count) : std::string("sorties")) + " lands every sortie with the " +
                              std::to_string(req.reserve_pct).substr(0, 4) + " % reserve with " + std::to_string(req.energy_margin_pct).substr(0, 4) +
@@ -218,7 +245,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   naive.count = 0;
   naive.budget_j = budget0;
   bool naive_fits = false;
-  const auto naive_flown = splitThatFits(plan, scoring, scorer, naive, req.reserve_pct, naive_fits);
+  const auto naive_flown = naiveSplitThatFits(plan, scoring, scorer, naive, req.reserve_pct, naive_fits);
   std::vector<pl::Track> tracks;
   for (const auto& f : flown) tracks.push_back(trackOf(f.prediction, scoring.problem->home));
   std::optional<pl::FleetSchedule> fleet;

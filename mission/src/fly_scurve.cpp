@@ -199,8 +199,9 @@ Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Ve
 }
 
 LegSpec specOf(const NavStep& s, const Params& P, int k) {
-  // DO_CHANGE_SPEED is capped at WPNAV_SPEED (the SITL logs never exceed it).
-  return {s.target, s.speed_xy > 0 ? std::min(s.speed_xy, P.speed_xy) : P.speed_xy, s.speed_up > 0 ? s.speed_up : P.speed_up,
+  // A DO_CHANGE_SPEED above WPNAV_SPEED is flown (AC_WPNav::set_speed_xy does not cap it; the
+  // airframe's lean limit and drag may).
+  return {s.target, s.speed_xy > 0 ? s.speed_xy : P.speed_xy, s.speed_up > 0 ? s.speed_up : P.speed_up,
           s.speed_down > 0 ? s.speed_down : P.speed_dn, s.hold_s, k, false};
 }
 

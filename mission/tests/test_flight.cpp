@@ -158,6 +158,19 @@ TEST(ArduCopterSCurve, LeanLimitAndDragCapTheSpeed) {
   EXPECT_NEAR(vmax, std::sqrt(9.80665 * std::tan(M_PI / 6.0) / 0.0576), 0.1);
 }
 
+
+TEST(ArduCopterSCurve, DoChangeSpeedAboveWpnavSpeedIsFlown) {
+  // AC_WPNav::set_speed_xy (4.1+) takes any speed of at least WPNAV_WP_SPEED_MIN and passes it to
+  // the position controller and the S-curve: nothing caps it at WPNAV_SPEED. A 600 m leg at
+  // DO_CHANGE_SPEED 8 m/s with WPNAV_SPEED 5 m/s cruises at 8 m/s (no drag: the lean limit is far).
+  const Mission m = localMission({{600, 0, 10}}, 0.0, 8.0);
+  AutopilotConfig ap;
+  ap.parameters["WPNAV_SPEED"] = 500;
+  const FlownMission f = flyMission(sequenceMission(m), ap);
+  double vmax = 0.0;
+  for (const auto& s : f.samples) vmax = std::max(vmax, std::hypot(s.velocity.x(), s.velocity.y()));
+  EXPECT_NEAR(vmax, 8.0, 0.15);
+}
 TEST(ArduCopterSCurve, TakeoffClimbsAtWpnavSpeedUpAndLandingEndsOnTheGround) {
   const Mission m = localMission({{0, 50, 10}});
   const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});

@@ -2,6 +2,8 @@
 #include "wattswath/planner/sorties.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <future>
 #include <cmath>
 #include <utility>
 #include <limits>
@@ -202,15 +204,23 @@ std::vector<int> naiveCuts(const Splitter& sp, const SortieSettings& s) {
 // Cut points of the fewest sorties and, among those, the least total energy (lexicographic: a
 // sortie more costs a battery swap and a landing, worth more than the few kJ it may save):
 // best[j] covers pieces 0..j-1.
-std::vector<int> optimalCutsAnyCount(const Splitter& sp, const SortieSettings& s) {
+// Whether the run of pieces a..b may be one sortie: within the budget (closed form), or, for the
+// flown split, no longer than the longest run from a that flies.
+using RunAllowed = std::function<bool(int a, int b)>;
+
+RunAllowed withinBudget(const Splitter& sp, const SortieSettings& s) {
+  return [&sp, &s](int a, int b) { return sp.cost(a, b, s.overhead_j) <= s.budget_j; };
+}
+
+std::vector<int> optimalCutsAnyCount(const Splitter& sp, const SortieSettings& s, const RunAllowed& allowed) {
   const int m = sp.sweeps();
   std::vector<std::pair<int, double>> best(m + 1, {std::numeric_limits<int>::max(), kInf});
   std::vector<int> from(m + 1, -1);
   best[0] = {0, 0.0};
   for (int j = 1; j <= m; ++j)
     for (int a = j - 1; a >= 0; --a) {
+      if (!allowed(a, j - 1)) break;  // a longer run only costs more (energies are positive)
       const double c = sp.cost(a, j - 1, s.overhead_j);
-      if (c > s.budget_j) break;  // a longer run only costs more (energies are positive)
       if (!std::isfinite(best[a].second)) continue;
       const std::pair<int, double> cand{best[a].first + 1, best[a].second + c};
       if (cand < best[j]) {
@@ -225,8 +235,8 @@ std::vector<int> optimalCutsAnyCount(const Splitter& sp, const SortieSettings& s
 }
 
 // Cut points of the least total energy with exactly s.count sorties.
-std::vector<int> optimalCuts(const Splitter& sp, const SortieSettings& s) {
-  if (s.count == 0) return optimalCutsAnyCount(sp, s);
+std::vector<int> optimalCuts(const Splitter& sp, const SortieSettings& s, const RunAllowed& allowed) {
+  if (s.count == 0) return optimalCutsAnyCount(sp, s, allowed);
   const int m = sp.sweeps(), kmax = s.count;
   if (kmax > m) throw std::runtime_error(std::to_string(kmax) + " sorties for " + std::to_string(m) + " pieces of sweep: fewer are needed");
   std::vector<std::vector<double>> best(kmax + 1, std::vector<double>(m + 1, kInf));
@@ -235,8 +245,8 @@ std::vector<int> optimalCuts(const Splitter& sp, const SortieSettings& s) {
   for (int k = 1; k <= kmax; ++k)
     for (int j = 1; j <= m; ++j)
       for (int a = j - 1; a >= 0; --a) {
+        if (!allowed(a, j - 1)) break;
         const double c = sp.cost(a, j - 1, s.overhead_j);
-        if (c > s.budget_j) break;
         if (best[k - 1][a] + c < best[k][j]) {
           best[k][j] = best[k - 1][a] + c;
           from[k][j] = a;
@@ -250,6 +260,77 @@ std::vector<int> optimalCuts(const Splitter& sp, const SortieSettings& s) {
   return starts;
 }
 
+// For first pieces from..to-1, the last piece of the longest run from each that `flies` accepts
+// (taking a run to fly when a longer one from the same piece does, so that the longest run from a
+// ends no earlier than the one from a - 1), into `last`. From the first piece: the longest run
+// within the budget, then longer runs in growing steps while they fly, then the boundary
+// bisected; from each next piece, the run one piece past the previous end, extended while it
+// flies: about two flights a piece. Throws naming the piece when it does not fly alone.
+void longestFlyingRuns(const Splitter& sp, const SortieSettings& s, const SortieCheck& flies, int from, int to,
+                       std::vector<int>& last) {
+  const int m = sp.sweeps();
+  for (int a = from; a < to; ++a) {
+    // A run from a that ends within the run from a - 1 is part of a run that flies: it flies.
+    const int known = a > from ? last[static_cast<std::size_t>(a - 1)] : a - 1;
+    auto fliesRun = [&](int b) { return b <= known || flies(sp.build(a, b, s.overhead_j)); };
+    int ok = std::max(a - 1, known), bad = m;  // the longest run known to fly, the shortest known not to
+    if (a == from) {
+      int guess = a;
+      while (guess + 1 < m && sp.cost(a, guess + 1, s.overhead_j) <= s.budget_j) ++guess;
+      (fliesRun(guess) ? ok : bad) = guess;
+    }
+    if (bad == m) {
+      for (int step = 1; ok + step < m; step *= 2) {
+        if (!fliesRun(ok + step)) {
+          bad = ok + step;
+          break;
+        }
+        ok += step;
+      }
+    }
+    while (bad - ok > 1) {
+      const int mid = ok + (bad - ok) / 2;
+      (fliesRun(mid) ? ok : bad) = mid;
+    }
+    if (ok < a) {
+      throw std::runtime_error("sweep piece " + std::to_string(a + 1) + " alone, with its transits from and to home, does "
+                               "not land with the reserve when flown");
+    }
+    last[static_cast<std::size_t>(a)] = ok;
+  }
+}
+
+// longestFlyingRuns over all first pieces, the second half on a thread of its own (the flights
+// dominate; `flies` is called from both).
+std::vector<int> longestFlyingRuns(const Splitter& sp, const SortieSettings& s, const SortieCheck& flies) {
+  const int m = sp.sweeps();
+  std::vector<int> last(static_cast<std::size_t>(m));
+  if (m < 16) {
+    longestFlyingRuns(sp, s, flies, 0, m, last);
+    return last;
+  }
+  auto second = std::async(std::launch::async, [&] { longestFlyingRuns(sp, s, flies, m / 2, m, last); });
+  try {
+    longestFlyingRuns(sp, s, flies, 0, m / 2, last);
+  } catch (...) {
+    second.wait();
+    throw;
+  }
+  second.get();
+  return last;
+}
+
+// The sorties starting at `starts`.
+SortieSplit assemble(const Splitter& sp, const std::vector<int>& starts, const SortieSettings& s) {
+  SortieSplit out;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const int b = k + 1 < starts.size() ? starts[k + 1] - 1 : sp.sweeps() - 1;
+    out.sorties.push_back(sp.build(starts[k], b, s.overhead_j));
+    out.estimate_j += out.sorties.back().estimate_j;
+  }
+  return out;
+}
+
 }  // namespace
 
 SortieSplit splitIntoSorties(const FlownPath& plan, const SurveyProblem& problem, RouteScorer& scorer, const SortieSettings& s) {
@@ -260,14 +341,18 @@ SortieSplit splitIntoSorties(const FlownPath& plan, const SurveyProblem& problem
       throw std::runtime_error("sweep " + std::to_string(a + 1) + " alone, with its transits from and to home, needs " +
                                std::to_string(sp.cost(a, a, s.overhead_j) / 1000.0) + " kJ, more than the " +
                                std::to_string(s.budget_j / 1000.0) + " kJ one sortie may use");
-  const std::vector<int> starts = s.naive ? naiveCuts(sp, s) : optimalCuts(sp, s);
-  SortieSplit out;
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    const int b = k + 1 < starts.size() ? starts[k + 1] - 1 : sp.sweeps() - 1;
-    out.sorties.push_back(sp.build(starts[k], b, s.overhead_j));
-    out.estimate_j += out.sorties.back().estimate_j;
-  }
-  return out;
+  return assemble(sp, s.naive ? naiveCuts(sp, s) : optimalCuts(sp, s, withinBudget(sp, s)), s);
+}
+
+SortieSplit splitIntoFlownSorties(const FlownPath& plan, const SurveyProblem& problem, RouteScorer& scorer, const SortieSettings& s,
+                                  const SortieCheck& flies) {
+  SortieSettings plain = s;
+  plain.piece_weight.clear();
+  check(plain);
+  const Splitter sp(plan, problem, scorer, plain.scale, plain.piece_m, {});
+  const std::vector<int> longest = longestFlyingRuns(sp, plain, flies);
+  const RunAllowed allowed = [&longest](int a, int b) { return b <= longest[static_cast<std::size_t>(a)]; };
+  return assemble(sp, optimalCuts(sp, plain, allowed), plain);
 }
 
 }  // namespace wattswath::planner

@@ -7,9 +7,10 @@
 /// take the fewest sorties and, among those (or for a given count), minimise the total energy (dynamic programming over the sweep pieces, closed-form energies: the
 /// plan's own leg energies, stop-to-stop transits, a fixed take-off and landing overhead); the
 /// naive split (each sortie as long as the budget allows, in flight order) is the baseline. The
-/// caller checks each sortie's mission with the flight model and shrinks the budget when one does
-/// not fit (apps, `plan --sorties`).
+/// caller checks each sortie's mission with the flight model (apps, `plan --sorties`), or lets
+/// splitIntoFlownSorties ask it which runs of pieces fly.
 
+#include <functional>
 #include <vector>
 
 #include "wattswath/planner/coverage.hpp"
@@ -53,5 +54,18 @@ struct SortieSettings {
 /// budget or no split into `count` sorties fits.
 SortieSplit splitIntoSorties(const FlownPath& plan, const SurveyProblem& problem, RouteScorer& scorer,
                              const SortieSettings& settings);
+
+/// True when `sortie`, written as a mission and flown by the autopilot model, lands with the reserve.
+using SortieCheck = std::function<bool(const Sortie& sortie)>;
+
+/// As splitIntoSorties, but each sortie is one `flies` accepts: for every first piece, the longest
+/// run of pieces that still flies is found by asking `flies` (starting from the longest run within
+/// `settings.budget_j`, stepping one piece at a time; a run is taken to fly when a longer one from
+/// the same piece does), then the cuts take the fewest such runs and, among those (or for
+/// `settings.count`), the least total closed-form energy. `settings.naive` and `piece_weight` are
+/// not used. Throws std::runtime_error naming the piece when a piece alone does not fly, or when no
+/// split into `count` sorties does.
+SortieSplit splitIntoFlownSorties(const FlownPath& plan, const SurveyProblem& problem, RouteScorer& scorer,
+                                  const SortieSettings& settings, const SortieCheck& flies);
 
 }  // namespace wattswath::planner
