@@ -112,11 +112,11 @@ std::vector<FlownSortie> flownSplit(const pl::PlanCandidate& plan, const pl::Fli
   }
 }
 
-// The naive split at the largest budget at which every sortie, flown by the autopilot model, lands
-// with the reserve: the budget flownBudget gives, then the pieces of a sortie that lands below the
-// reserve weighted up until every one keeps it.
-std::vector<FlownSortie> naiveSplitThatFits(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
-                                            pl::SortieSettings ss, double reserve_pct, bool& fits) {
+// The closed-form split (`ss.naive`: the naive one) at the largest budget at which every sortie,
+// flown by the autopilot model, lands with the reserve: the budget flownBudget gives, then the
+// pieces of a sortie that lands below the reserve weighted up until every one keeps it.
+std::vector<FlownSortie> repairedSplit(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
+                                       pl::SortieSettings ss, double reserve_pct, bool& fits) {
   std::vector<FlownSortie> flown;
   fits = false;
   ss.budget_j = flownBudget(plan, scoring, scorer, ss, reserve_pct);
@@ -140,6 +140,22 @@ std::vector<FlownSortie> naiveSplitThatFits(const pl::PlanCandidate& plan, const
     }
   }
   return flown;
+}
+
+// The better of the flown split and the repaired closed-form one, each flown: the fewest sorties
+// that all land with the reserve, then the least flown energy. The flown split takes a run to fly
+// when a longer one from the same piece does, which a run ending far from home can belie; the
+// repaired split then may fit with fewer.
+std::vector<FlownSortie> bestSplit(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
+                                   const pl::SortieSettings& ss, double reserve_pct, bool& fits) {
+  bool flown_fits = false, repaired_fits = false;
+  std::vector<FlownSortie> flown = flownSplit(plan, scoring, scorer, ss, reserve_pct, flown_fits);
+  std::vector<FlownSortie> repaired = repairedSplit(plan, scoring, scorer, ss, reserve_pct, repaired_fits);
+  fits = flown_fits || repaired_fits;
+  if (!repaired_fits) return flown;
+  if (!flown_fits) return repaired;
+  const bool repaired_better = repaired.size() < flown.size() || (repaired.size() == flown.size() && total(repaired) < total(flown));
+  return repaired_better ? repaired : flown;
 }
 
 namespace {
@@ -235,7 +251,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   if (plan.flown.energy > 0.0) ss.scale = std::clamp((single_flight_j - overhead_j) / plan.flown.energy, 0.5, 2.0);
   const double budget0 = ss.budget_j;
   bool fits = false;
-  const std::vector<FlownSortie> flown = flownSplit(plan, scoring, scorer, ss, req.reserve_pct, fits);
+  const std::vector<FlownSortie> flown = bestSplit(plan, scoring, scorer, ss, req.reserve_pct, fits);
   if (!fits)
     throw std::runtime_error("no split into " + (count ? std::to_string(count) : std::string("sorties")) + " lands every sortie with the " +
                              std::to_string(req.reserve_pct).substr(0, 4) + " % reserve with " + std::to_string(req.energy_margin_pct).substr(0, 4) +
@@ -245,7 +261,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   naive.count = 0;
   naive.budget_j = budget0;
   bool naive_fits = false;
-  const auto naive_flown = naiveSplitThatFits(plan, scoring, scorer, naive, req.reserve_pct, naive_fits);
+  const auto naive_flown = repairedSplit(plan, scoring, scorer, naive, req.reserve_pct, naive_fits);
   std::vector<pl::Track> tracks;
   for (const auto& f : flown) tracks.push_back(trackOf(f.prediction, scoring.problem->home));
   std::optional<pl::FleetSchedule> fleet;

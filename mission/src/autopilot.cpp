@@ -20,6 +20,7 @@ const std::map<std::string, double> kArduCopter4 = {
     {"RTL_SPEED", 0},            {"RTL_LOIT_TIME", 5000}, {"RTL_CONE_SLOPE", 3.0}, {"LAND_SPEED", 50},
     {"LAND_SPEED_HIGH", 0},      {"LAND_ALT_LOW", 1000},  {"MOT_SPOOL_TIME", 0.5},
     {"PSC_POSXY_P", 1.0},        {"PSC_VELXY_P", 2.0},    {"PSC_VELXY_I", 1.0},    {"PSC_VELXY_IMAX", 1000},
+    {"PSC_VELXY_D", 0.25},       {"PSC_VELXY_FLTE", 5.0}, {"PSC_VELXY_FLTD", 5.0},
     {"ANGLE_MAX", 3000},         {"PSC_ANGLE_MAX", 0},
 };
 

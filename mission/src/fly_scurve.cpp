@@ -60,6 +60,9 @@ Params readParams(const AutopilotConfig& ap) {
   p.gains.vel_p = checkParameter("PSC_VELXY_P", ap.get("PSC_VELXY_P"), 0.1, 20, "1/s");
   p.gains.vel_i = checkParameter("PSC_VELXY_I", ap.get("PSC_VELXY_I"), 0, 20, "1/s/s");
   p.gains.vel_imax = checkParameter("PSC_VELXY_IMAX", ap.get("PSC_VELXY_IMAX"), 0, 10000, "cm/s/s") / 100.0;
+  p.gains.vel_d = checkParameter("PSC_VELXY_D", ap.get("PSC_VELXY_D"), 0, 10, "s");
+  p.gains.filt_e_hz = checkParameter("PSC_VELXY_FLTE", ap.get("PSC_VELXY_FLTE"), 0, 100, "Hz");
+  p.gains.filt_d_hz = checkParameter("PSC_VELXY_FLTD", ap.get("PSC_VELXY_FLTD"), 0, 100, "Hz");
   p.gains.accel = p.accel_xy;
   const double psc_angle = ap.get("PSC_ANGLE_MAX");  // [deg], 0: ANGLE_MAX
   const double lean_deg = psc_angle > 0.0 ? psc_angle : checkParameter("ANGLE_MAX", ap.get("ANGLE_MAX"), 1000, 8000, "cdeg") / 100.0;
@@ -262,6 +265,9 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       // RTL starts from where the vehicle would stop now (it may still be moving or lagging).
       const Eigen::Vector3d stop = fl.veh.stoppingPoint();
       here = {stop.x(), stop.y(), here.z()};
+      // ModeRTL::init runs AC_WPNav::wp_and_spline_init: the S-curve clock restarts at full speed.
+      fl.veh.restartClock();
+      fl.clock = 1.0;
       double alt = std::max(P.rtl_alt, here.z() + P.rtl_climb_min);
       if (P.rtl_cone_slope >= 0.5) alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, 2.5));
       alt = std::max(alt, here.z());

@@ -1,7 +1,7 @@
 #pragma once
 // Private to mission/src: the vehicle under ArduCopter 4.x's horizontal position controller
 // (AC_PosControl::update_xy_controller: a square-root position loop on the target's position
-// error plus the target velocity, a PI velocity loop plus the target acceleration, the lean-angle
+// error plus the target velocity, a PID velocity loop on the filtered error plus the target acceleration, the lean-angle
 // limit) flying an airframe with drag and a lagging attitude response (FlightSettings::Airframe),
 // and the S-curve clock scaler AC_WPNav derives from how far the vehicle lags its target
 // (AC_WPNav::advance_wp_target_along_track, `_track_scalar_dt`). Vertically the vehicle is taken
@@ -21,6 +21,9 @@ struct PositionGains {
   double vel_p = 2.0;      ///< [1/s] PSC_VELXY_P
   double vel_i = 1.0;      ///< [1/s^2] PSC_VELXY_I
   double vel_imax = 10.0;  ///< [m/s^2] PSC_VELXY_IMAX
+  double vel_d = 0.25;     ///< [-] PSC_VELXY_D: on the rate of change of the filtered velocity error
+  double filt_e_hz = 5.0;  ///< [Hz] PSC_VELXY_FLTE: low-pass filter on the velocity error (0: none)
+  double filt_d_hz = 5.0;  ///< [Hz] PSC_VELXY_FLTD: low-pass filter on its derivative (0: none)
   double accel = 2.5;      ///< [m/s^2] WPNAV_ACCEL: the square-root controller's deceleration
   double lean_accel = 5.66;  ///< [m/s^2] g tan(lean limit): the largest horizontal acceleration
   double scaler_tc = 2.5;  ///< [s] time constant of the S-curve clock scaler (WPNAV_ACCEL / WPNAV_JERK)
@@ -37,6 +40,7 @@ class PositionFollower {
     v_.setZero();
     lean_.setZero();
     integ_.setZero();
+    reset_filter_ = true;
   }
 
   /// Advances `dt` [s] towards the target (position `tp` [m], velocity `tv` [m/s], acceleration
@@ -51,8 +55,8 @@ class PositionFollower {
     const Eigen::Vector2d e = (tp - p_).head<2>();
     Eigen::Vector2d vel_target = tv.head<2>();
     if (e.norm() > 1e-12) vel_target += e / e.norm() * sqrtController(e.norm(), g_.pos_p, g_.accel);
-    const Eigen::Vector2d verr = vel_target - v_.head<2>();
-    Eigen::Vector2d cmd = ta.head<2>() + g_.vel_p * verr + integ_;
+    const Eigen::Vector2d verr = filteredError(vel_target - v_.head<2>(), dt);
+    Eigen::Vector2d cmd = ta.head<2>() + g_.vel_p * verr + integ_ + g_.vel_d * deriv_;
     if (cmd.norm() > g_.lean_accel) {
       cmd *= g_.lean_accel / cmd.norm();  // at the lean limit: the integrator holds (anti-windup)
     } else {
@@ -71,6 +75,10 @@ class PositionFollower {
     return scaler_;
   }
 
+  /// Restarts the S-curve clock at full speed (AC_WPNav::wp_and_spline_init: `_track_scalar_dt = 1`,
+  /// as when a mode such as RTL starts the waypoint controller afresh).
+  void restartClock() { scaler_ = 1.0; }
+
   /// Where the autopilot would bring the vehicle to rest from its state now
   /// (AC_PosControl::get_stopping_point_xy: linear near zero speed, v^2 / 2a beyond).
   Eigen::Vector3d stoppingPoint() const {
@@ -88,6 +96,22 @@ class PositionFollower {
   const Eigen::Vector3d& velocity() const { return v_; }
 
  private:
+  // The velocity error as AC_PID_2D::update_all keeps it: low-passed (PSC_VELXY_FLTE), its rate of
+  // change low-passed too (PSC_VELXY_FLTD) into deriv_; at the first call taken as it is.
+  Eigen::Vector2d filteredError(const Eigen::Vector2d& raw, double dt) {
+    auto alpha = [dt](double hz) { return hz > 0.0 ? dt / (dt + 1.0 / (2.0 * M_PI * hz)) : 1.0; };
+    if (reset_filter_) {
+      reset_filter_ = false;
+      err_ = raw;
+      deriv_.setZero();
+      return err_;
+    }
+    const Eigen::Vector2d last = err_;
+    err_ += (raw - err_) * alpha(g_.filt_e_hz);
+    deriv_ += ((err_ - last) / dt - deriv_) * alpha(g_.filt_d_hz);
+    return err_;
+  }
+
   // _track_scalar_dt: slows the S-curve clock when the vehicle cannot keep up with its target.
   void updateScaler(const Eigen::Vector3d& tp, const Eigen::Vector3d& tv, double dt) {
     double raw = 1.0;
@@ -105,6 +129,8 @@ class PositionFollower {
   Airframe a_;
   Eigen::Vector3d p_ = Eigen::Vector3d::Zero(), v_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d lean_ = Eigen::Vector2d::Zero(), integ_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d err_ = Eigen::Vector2d::Zero(), deriv_ = Eigen::Vector2d::Zero();  // filtered velocity error, its rate
+  bool reset_filter_ = true;
   double scaler_ = 1.0;
 };
 
