@@ -94,12 +94,11 @@ double flownBudget(const pl::PlanCandidate& plan, const pl::FlightScoring& scori
 
 // The fewest sorties (or `ss.count`) each of which, flown by the autopilot model, lands with the
 // reserve with the energy margin, and among those the least closed-form energy: the planner asks
-// the flight model which runs of pieces fly (pl::splitIntoFlownSorties), starting from the budget
-// the first split's flights give.
+// the flight model which runs of pieces fly (pl::splitIntoFlownSorties), starting from the
+// closed-form budget `ss.budget_j` (flownBudget's).
 std::vector<FlownSortie> flownSplit(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
-                                    pl::SortieSettings ss, double reserve_pct, bool& fits) {
+                                    const pl::SortieSettings& ss, bool& fits) {
   fits = false;
-  ss.budget_j = flownBudget(plan, scoring, scorer, ss, reserve_pct);
   if (ss.budget_j <= ss.overhead_j) return {};
   const pl::SortieCheck flies = [&](const pl::Sortie& so) {
     const auto m = pl::missionFromPlan(so.flown, *scoring.problem, *scoring.frame, scoring.home_altitude_amsl_m, scoring.mission);
@@ -112,14 +111,13 @@ std::vector<FlownSortie> flownSplit(const pl::PlanCandidate& plan, const pl::Fli
   }
 }
 
-// The closed-form split (`ss.naive`: the naive one) at the largest budget at which every sortie,
-// flown by the autopilot model, lands with the reserve: the budget flownBudget gives, then the
-// pieces of a sortie that lands below the reserve weighted up until every one keeps it.
+// The closed-form split (`ss.naive`: the naive one) at which every sortie, flown by the autopilot
+// model, lands with the reserve: from the budget `ss.budget_j` (flownBudget's), the pieces of a
+// sortie that lands below the reserve weighted up until every one keeps it.
 std::vector<FlownSortie> repairedSplit(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
                                        pl::SortieSettings ss, double reserve_pct, bool& fits) {
   std::vector<FlownSortie> flown;
   fits = false;
-  ss.budget_j = flownBudget(plan, scoring, scorer, ss, reserve_pct);
   for (int attempt = 0; attempt < 30; ++attempt) {
     if (ss.budget_j <= ss.overhead_j) break;
     try {
@@ -147,9 +145,10 @@ std::vector<FlownSortie> repairedSplit(const pl::PlanCandidate& plan, const pl::
 // when a longer one from the same piece does, which a run ending far from home can belie; the
 // repaired split then may fit with fewer.
 std::vector<FlownSortie> bestSplit(const pl::PlanCandidate& plan, const pl::FlightScoring& scoring, pl::RouteScorer& scorer,
-                                   const pl::SortieSettings& ss, double reserve_pct, bool& fits) {
+                                   pl::SortieSettings ss, double reserve_pct, bool& fits) {
+  ss.budget_j = flownBudget(plan, scoring, scorer, ss, reserve_pct);
   bool flown_fits = false, repaired_fits = false;
-  std::vector<FlownSortie> flown = flownSplit(plan, scoring, scorer, ss, reserve_pct, flown_fits);
+  std::vector<FlownSortie> flown = flownSplit(plan, scoring, scorer, ss, flown_fits);
   std::vector<FlownSortie> repaired = repairedSplit(plan, scoring, scorer, ss, reserve_pct, repaired_fits);
   fits = flown_fits || repaired_fits;
   if (!repaired_fits) return flown;
@@ -260,6 +259,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   naive.naive = true;
   naive.count = 0;
   naive.budget_j = budget0;
+  naive.budget_j = flownBudget(plan, scoring, scorer, naive, req.reserve_pct);
   bool naive_fits = false;
   const auto naive_flown = repairedSplit(plan, scoring, scorer, naive, req.reserve_pct, naive_fits);
   std::vector<pl::Track> tracks;
