@@ -274,6 +274,9 @@ void registerPredictCommand(CLI::App& app) {
     ms::Mission m = ms::readMission(o->mission, ro);
     std::optional<Launch> launch;
     if (!o->launch.empty()) launch = moveHomeTo(m, o->launch);
+    // Flights of the mission's kind decide a disputed parameter (predict_spread.hpp, KindChoice).
+    const std::optional<KindChoice> choice = kindChoiceOf(ms::sequenceMission(m), setup);
+    if (choice) setup.autopilot.parameters[setup.disputed_parameter] = choice->value;
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
     ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
     const std::optional<Coverage> coverage = coverageOf(m, p.flight.steps, v, setup);
@@ -291,7 +294,7 @@ void registerPredictCommand(CLI::App& app) {
       launch->absolute_items = absoluteItems(m, p.flight.steps);
       extra.push_back({"launch", launchText(*launch)});
     }
-    if (dispute) extra.push_back({"calibration", disputeText(*dispute, p)});
+    if (dispute) extra.push_back({"calibration", disputeText(*dispute, p, choice)});
     if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
     if (!o->report.empty() || !o->report_svg.empty()) {
@@ -312,7 +315,10 @@ void registerPredictCommand(CLI::App& app) {
       if (dispute) {
         j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},
                                     {"energy_j", {dispute->energy_lo_j, dispute->energy_hi_j}},
-                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}}, {"text", disputeText(*dispute, p)}};
+                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}},
+                                    {"chosen", choice ? nlohmann::json{{"value", choice->value}, {"flights", choice->flights}}
+                                                      : nlohmann::json(nullptr)},
+                                    {"text", disputeText(*dispute, p, choice)}};
       }
       // null: uncalibrated, or the mission is of the kind the calibration flew (or the file predates the check).
       j["calibration_coverage"] = nullptr;

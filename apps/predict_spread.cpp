@@ -36,14 +36,39 @@ std::optional<Dispute> disputeOf(const ms::Mission& m, const energy::Vehicle& v,
   return d;
 }
 
-std::string disputeText(const Dispute& d, const ms::MissionPrediction& p) {
+std::optional<KindChoice> kindChoiceOf(const std::vector<ms::NavStep>& steps, const PredictionSetup& setup) {
+  const std::size_t n = setup.disputed_values.size();
+  if (setup.disputed_parameter.empty() || n < 2 || setup.disputed_kinds.size() != n || setup.disputed_flights.size() != n)
+    return std::nullopt;
+  const auto kind = calibration::missionKind(steps, setup.autopilot);
+  KindChoice c;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!calibration::outsideCalibration(kind, setup.disputed_kinds[i]).empty()) continue;
+    sum += setup.disputed_values[i];
+    c.flights.push_back(setup.disputed_flights[i]);
+  }
+  if (c.flights.empty() || c.flights.size() == n) return std::nullopt;
+  c.value = sum / static_cast<double>(c.flights.size());
+  return c;
+}
+
+std::string disputeText(const Dispute& d, const ms::MissionPrediction& p, const std::optional<KindChoice>& choice) {
   std::ostringstream os;
   os << std::setprecision(3) << "the calibration's flights disagree on " << d.parameter << " (each wants " << d.lo << " to " << d.hi
      << "): flown with each, " << std::fixed << std::setprecision(1) << d.energy_lo_j / 3600.0 << " to " << d.energy_hi_j / 3600.0
      << " Wh (" << std::showpos << 100.0 * (d.energy_lo_j / p.total.energy_j - 1.0) << " to "
      << 100.0 * (d.energy_hi_j / p.total.energy_j - 1.0) << std::noshowpos << " %), " << report::formatMinSec(d.time_lo_s) << " to "
-     << report::formatMinSec(d.time_hi_s) << " min:s; the prediction is the joint value's, and the reserve is checked with "
-     << std::setprecision(0) << 100.0 * p.battery.energy_margin << " % more energy";
+     << report::formatMinSec(d.time_hi_s) << " min:s; the prediction is ";
+  if (choice) {
+    os << std::setprecision(3) << std::defaultfloat << d.parameter << " " << choice->value << "'s, fitted on ";
+    for (std::size_t i = 0; i < choice->flights.size(); ++i) os << (i ? ", " : "") << choice->flights[i];
+    os << ", the calibration flight(s) of this mission's kind,";
+  } else {
+    os << "the joint value's,";
+  }
+  os << " and the reserve is checked with " << std::fixed << std::setprecision(0) << 100.0 * p.battery.energy_margin
+     << " % more energy";
   return os.str();
 }
 

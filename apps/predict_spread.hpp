@@ -23,8 +23,21 @@ struct Dispute {
 /// The dispute of `setup` flown on `m`, or nothing when its flights agreed.
 std::optional<Dispute> disputeOf(const mission::Mission& m, const energy::Vehicle& v, const PredictionSetup& setup);
 
-/// One sentence on the dispute, relative to prediction `p`.
-std::string disputeText(const Dispute& d, const mission::MissionPrediction& p);
+/// The disputed parameter's value fitted on the calibration flights of the mission's kind: when
+/// the flights disagreed and some of them (not all) flew missions the mission is inside of
+/// (calibration::outsideCalibration empty), their values' mean; they fitted how the vehicle flies
+/// this kind of mission, the joint value a mix of kinds.
+struct KindChoice {
+  double value = 0.0;                ///< [the parameter's unit]
+  std::vector<std::string> flights;  ///< the calibration flights it comes from
+};
+
+/// The choice for the mission sequenced as `steps` under `setup`, or nothing (no dispute, no
+/// recorded kinds, or no flight, or every flight, of the mission's kind).
+std::optional<KindChoice> kindChoiceOf(const std::vector<mission::NavStep>& steps, const PredictionSetup& setup);
+
+/// One sentence on the dispute, relative to prediction `p` (made with `choice` when there is one).
+std::string disputeText(const Dispute& d, const mission::MissionPrediction& p, const std::optional<KindChoice>& choice);
 
 /// The mission is outside what the calibration flew: it is also flown with the behaviour before the
 /// calibration (the fitted parameters' starting values, no calibrated take-off delay, corner rule

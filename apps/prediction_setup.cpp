@@ -11,7 +11,7 @@ PredictionSetup predictionSetup(const energy::Vehicle& v, const std::string& veh
   const bool use_calibration = calibrated && effects.empty();
   PredictionSetup s{use_calibration ? calibrated->model
                                     : energy::buildModel(v, energy::splitEffectList(effects.empty() ? "hover,kinetic,parasitic_drag" : effects)),
-                    mission::parseAutopilot(v.autopilot_json, vehicle_path), {}, use_calibration, {}, {}, {}, {}};
+                    mission::parseAutopilot(v.autopilot_json, vehicle_path), {}, use_calibration, {}, {}, {}, {}, {}, {}};
   s.settings.reserve_fraction = reserve_pct / 100.0;
   if (use_calibration) {
     if (calibrated->takeoff_delay_s >= 0.0) s.settings.flight.takeoff_delay_s = calibrated->takeoff_delay_s;
@@ -20,6 +20,8 @@ PredictionSetup predictionSetup(const energy::Vehicle& v, const std::string& veh
     s.settings.flight.tracking_error = calibrated->tracking_error;
     s.disputed_parameter = calibrated->disputed_parameter;
     s.disputed_values = calibrated->disputed_values;
+    s.disputed_flights = calibrated->disputed_flights;
+    s.disputed_kinds = calibrated->disputed_kinds;
     s.coverage = calibrated->coverage;
     s.behaviour_before = calibrated->behaviour_before;
   }

@@ -22,6 +22,8 @@ struct PredictionSetup {
   bool calibrated = false;              ///< true when the file's calibration is used
   std::string disputed_parameter;       ///< the calibration's flights disagreed on it (empty: no dispute)
   std::vector<double> disputed_values;  ///< each calibration flight's own value of it
+  std::vector<std::string> disputed_flights;            ///< their names (empty in older files)
+  std::vector<calibration::MissionKind> disputed_kinds;  ///< what each flew (empty in older files)
   /// What the calibration flights flew (nothing without a calibration, or from files before 2026-11-25).
   std::optional<calibration::MissionKind> coverage;
   std::map<std::string, double> behaviour_before;  ///< the calibrated behaviour parameters' values before it

@@ -2,6 +2,8 @@
 // and the replay report's mission section.
 #include "replay_mission.hpp"
 
+#include "predict_spread.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -129,15 +131,31 @@ MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given
   for (std::size_t i = 0; i < log_paths.size(); ++i) {
     calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]),
                                  logs::readFlightLog(log_paths[i], read)};
-    const auto c = calibration::compareFlight(f, v, model, ap, ps);
+    // As predict: the calibration flights of the mission's kind decide a disputed acceleration.
+    mission::AutopilotConfig ap_f = ap;
+    std::optional<KindChoice> choice;
+    if (use_cal) {
+      PredictionSetup s;
+      s.autopilot = ap;
+      s.disputed_parameter = cal->disputed_parameter;
+      s.disputed_values = cal->disputed_values;
+      s.disputed_flights = cal->disputed_flights;
+      s.disputed_kinds = cal->disputed_kinds;
+      choice = kindChoiceOf(mission::sequenceMission(f.mission), s);
+      if (choice) ap_f.parameters[s.disputed_parameter] = choice->value;
+    }
+    const auto c = calibration::compareFlight(f, v, model, ap_f, ps);
     // Physics: the same model on the logged kinematics (replay) against the measurement;
     // kinematics: the predicted flight against that replay.
     const double replay_j = use_cal ? calibration::replay(model, calibration::prepareLog(f.log)).flight.modelled_j
                                     : reps[i].flight.modelled_j;
     out.json.push_back(
         flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
+    out.json.back()["calibration_chosen"] =
+        choice ? nlohmann::json{{"parameter", cal->disputed_parameter}, {"value", choice->value}, {"flights", choice->flights}}
+               : nlohmann::json(nullptr);
     // The predicted trajectory for the report's speed figure (compareFlight keeps only its times).
-    const auto pred = mission::predictMission(calibration::missionLaunchedAt(f.mission, c.launch), v, model, ap, ps);
+    const auto pred = mission::predictMission(calibration::missionLaunchedAt(f.mission, c.launch), v, model, ap_f, ps);
     out.report.flights.push_back(reportFlight(f, mission_paths[i], c, pred, replay_j));
     out.report.flights.back().kinematics_note = kinematicsSentence(out.json.back());
   }

@@ -156,8 +156,42 @@ TEST(CliPredict, ACalibrationWhoseFlightsDisagreeGivesTheSpreadAndWidensTheMargi
   const json agreed = runJson("predict " + mission + " --vehicle " + path + " --json --energy-margin 1");
   EXPECT_TRUE(agreed["calibration_dispute"].is_null());
   EXPECT_NEAR(agreed["battery"]["energy_margin"].get<double>(), 0.01, 1e-12);
-  // A malformed record is an error naming the field.
+  // With each flight's mission kind recorded, the flight of the mission's kind decides: the first
+  // flew anything like it, the second only 0.1-0.2 m/s legs. The prediction is then WPNAV_ACCEL
+  // 250's, as a vehicle set to 250 flies it, and says so.
   v["extensions"]["calibration"]["flights_agree"] = false;
+  v["extensions"]["calibration"]["per_flight"]["flights"] = {"like_it.csv", "slow.csv"};
+  const json anything = {{"stop_waypoints", 10}, {"fast_waypoints", 40}, {"speed_mps", {0.1, 50.0}}};
+  const json slow = {{"stop_waypoints", 10}, {"fast_waypoints", 40}, {"speed_mps", {0.1, 0.2}}};
+  v["extensions"]["calibration"]["per_flight"]["kinds"] = {anything, slow};
+  std::ofstream(path) << v.dump();
+  const json chosen = runJson("predict " + mission + " --vehicle " + path + " --json");
+  const auto& c = chosen["calibration_dispute"]["chosen"];
+  ASSERT_TRUE(c.is_object()) << chosen["calibration_dispute"].dump();
+  EXPECT_EQ(c["value"].get<double>(), 250.0);
+  EXPECT_EQ(c["flights"], json({"like_it.csv"}));
+  EXPECT_NE(chosen["calibration_dispute"]["text"].get<std::string>().find("WPNAV_ACCEL 250's, fitted on like_it.csv"),
+            std::string::npos);
+  json set = v;
+  set["extensions"]["calibration"]["flights_agree"] = true;
+  set["autopilot"]["parameters"]["WPNAV_ACCEL"] = 250.0;
+  const std::string set_path = tempPath("dispute_vehicle_250.json");
+  std::ofstream(set_path) << set.dump();
+  EXPECT_NEAR(chosen["energy_j"].get<double>(), runJson("predict " + mission + " --vehicle " + set_path + " --json")["energy_j"].get<double>(),
+              1e-6);
+  std::remove(set_path.c_str());
+  // Both flights of its kind: the joint value, as before.
+  v["extensions"]["calibration"]["per_flight"]["kinds"] = {anything, anything};
+  std::ofstream(path) << v.dump();
+  EXPECT_TRUE(runJson("predict " + mission + " --vehicle " + path + " --json")["calibration_dispute"]["chosen"].is_null());
+  // Kinds without names (or one short) are an error naming the field.
+  v["extensions"]["calibration"]["per_flight"].erase("flights");
+  std::ofstream(path) << v.dump();
+  const RunResult unnamed = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");
+  EXPECT_NE(unnamed.status, 0);
+  EXPECT_NE(unnamed.output.find("extensions.calibration.per_flight"), std::string::npos) << unnamed.output;
+  v["extensions"]["calibration"]["per_flight"].erase("kinds");
+  // A malformed record is an error naming the field.
   v["extensions"]["calibration"]["per_flight"]["values"] = {90.0};
   std::ofstream(path) << v.dump();
   const RunResult bad = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");
@@ -212,20 +246,20 @@ TEST(CliPredict, AMissionOfAnotherKindThanTheCalibrationsIsSaidToBeOutsideItAndF
       << faster["calibration_coverage"].dump();
   // ... nor legs under half the calibration's shortest.
   v["extensions"]["calibration"]["coverage"]["speed_mps"] = {4.0, 6.0};
-  v["extensions"]["calibration"]["coverage"]["leg_m"] = {2000.0, 3000.0};
+  v["extensions"]["calibration"]["coverage"]["leg_median_m"] = {2000.0, 3000.0};
   std::ofstream(path) << v.dump();
   const json shorter = runJson("predict " + mission + " --vehicle " + path + " --json");
   ASSERT_TRUE(shorter["calibration_coverage"].is_object());
-  EXPECT_NE(shorter["calibration_coverage"]["outside"][0].get<std::string>().find("the calibration flights' shortest was 2000 m"),
+  EXPECT_NE(shorter["calibration_coverage"]["outside"][0].get<std::string>().find("the calibration flights' 2000 m or more"),
             std::string::npos)
       << shorter["calibration_coverage"].dump();
   // A malformed record is an error naming the field.
-  v["extensions"]["calibration"]["coverage"]["leg_m"] = {-1.0, 30.0};
+  v["extensions"]["calibration"]["coverage"]["leg_median_m"] = {-1.0, 30.0};
   std::ofstream(path) << v.dump();
   const RunResult bad_legs = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");
   EXPECT_NE(bad_legs.status, 0);
-  EXPECT_NE(bad_legs.output.find("extensions.calibration.coverage.leg_m[0] = -1.0"), std::string::npos) << bad_legs.output;
-  v["extensions"]["calibration"]["coverage"].erase("leg_m");
+  EXPECT_NE(bad_legs.output.find("extensions.calibration.coverage.leg_median_m[0] = -1.0"), std::string::npos) << bad_legs.output;
+  v["extensions"]["calibration"]["coverage"].erase("leg_median_m");
   v["extensions"]["calibration"]["coverage"]["speed_mps"] = {6.0, 4.0};
   std::ofstream(path) << v.dump();
   const RunResult bad = run(cli("predict " + mission + " --vehicle " + path) + " 2>&1");

@@ -16,41 +16,69 @@ namespace {
 void readCoverageGeometry(const nlohmann::json& c, const std::string& where, MissionKind& k) {
   auto number = [&](const nlohmann::json& v, const std::string& field, double lo) {
     if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo) {
-      throw std::invalid_argument(where + ".coverage." + field + " = " + v.dump() + ", expected a number of at least " +
+      throw std::invalid_argument(where + "." + field + " = " + v.dump() + ", expected a number of at least " +
                                   std::to_string(static_cast<int>(lo)));
     }
     return v.get<double>();
   };
-  if (c.contains("leg_m")) {
-    const auto& l = c["leg_m"];
+  if (c.contains("leg_median_m")) {
+    const auto& l = c["leg_median_m"];
     if (!l.is_array() || l.size() != 2) {
-      throw std::invalid_argument(where + ".coverage.leg_m = " + l.dump() + ", expected [shortest, longest]");
+      throw std::invalid_argument(where + ".leg_median_m = " + l.dump() + ", expected [lowest, highest]");
     }
-    k.leg_lo_m = number(l[0], "leg_m[0]", 0);
-    k.leg_hi_m = number(l[1], "leg_m[1]", 0);
+    k.leg_lo_m = number(l[0], "leg_median_m[0]", 0);
+    k.leg_hi_m = number(l[1], "leg_median_m[1]", 0);
   }
   if (c.contains("turn_deg_max")) k.turn_hi_deg = number(c["turn_deg_max"], "turn_deg_max", -1);
   if (c.contains("leg_climb_m_max")) k.climb_hi_m = number(c["leg_climb_m_max"], "leg_climb_m_max", -1);
 }
 
+// A MissionKind as stored (calibrationToJson's kindToJson); `where` names it in errors.
+MissionKind kindFromJson(const nlohmann::json& c, const std::string& where) {
+  const bool ok = c.is_object() && c.contains("stop_waypoints") && c["stop_waypoints"].is_number_integer() &&
+                  c["stop_waypoints"].get<long>() >= 0 && c.contains("fast_waypoints") &&
+                  c["fast_waypoints"].is_number_integer() && c["fast_waypoints"].get<long>() >= 0 && c.contains("speed_mps") &&
+                  c["speed_mps"].is_array() && c["speed_mps"].size() == 2 && c["speed_mps"][0].is_number() &&
+                  c["speed_mps"][1].is_number() && c["speed_mps"][0].get<double>() >= 0.0 &&
+                  c["speed_mps"][1].get<double>() >= c["speed_mps"][0].get<double>();
+  if (!ok) {
+    throw std::invalid_argument(where + " = " + c.dump() +
+                                ", expected {\"stop_waypoints\": N, \"fast_waypoints\": N, \"speed_mps\": [low, high]}");
+  }
+  MissionKind k{c["stop_waypoints"].get<int>(), c["fast_waypoints"].get<int>(), c["speed_mps"][0].get<double>(),
+                c["speed_mps"][1].get<double>()};
+  readCoverageGeometry(c, where, k);
+  return k;
+}
+
+// A MissionKind as stored in extensions.calibration (`coverage`, `per_flight.kinds`).
+nlohmann::json kindToJson(const MissionKind& k) {
+  return {{"stop_waypoints", k.stop_waypoints},
+          {"fast_waypoints", k.fast_waypoints},
+          {"speed_mps", {k.speed_lo_mps, k.speed_hi_mps}},
+          {"leg_median_m", {k.leg_lo_m, k.leg_hi_m}},
+          {"turn_deg_max", k.turn_hi_deg},
+          {"leg_climb_m_max", k.climb_hi_m}};
+}
+
+// per_flight's `flights` and `kinds`, one each per value (absent in older files: nothing read).
+void readDisputedKinds(const nlohmann::json& pf, const std::string& where, CalibratedModel& cm) {
+  if (!pf.contains("flights") && !pf.contains("kinds")) return;
+  const std::size_t n = pf["values"].size();
+  if (!pf.contains("flights") || !pf["flights"].is_array() || pf["flights"].size() != n || !pf.contains("kinds") ||
+      !pf["kinds"].is_array() || pf["kinds"].size() != n) {
+    throw std::invalid_argument(where + " = " + pf.dump() + ", expected \"flights\" (names) and \"kinds\" with one entry per value");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!pf["flights"][i].is_string()) throw std::invalid_argument(where + ".flights holds " + pf["flights"][i].dump() + ", expected names");
+    cm.disputed_flights.push_back(pf["flights"][i].get<std::string>());
+    cm.disputed_kinds.push_back(kindFromJson(pf["kinds"][i], where + ".kinds[" + std::to_string(i) + "]"));
+  }
+}
+
 // extensions.calibration's `coverage` and `behaviour_before` (absent in files before 2026-11-25).
 void readCoverage(const nlohmann::json& j, const std::string& where, CalibratedModel& cm) {
-  if (j.contains("coverage")) {
-    const auto& c = j["coverage"];
-    const bool ok = c.is_object() && c.contains("stop_waypoints") && c["stop_waypoints"].is_number_integer() &&
-                    c["stop_waypoints"].get<long>() >= 0 && c.contains("fast_waypoints") &&
-                    c["fast_waypoints"].is_number_integer() && c["fast_waypoints"].get<long>() >= 0 && c.contains("speed_mps") &&
-                    c["speed_mps"].is_array() && c["speed_mps"].size() == 2 && c["speed_mps"][0].is_number() &&
-                    c["speed_mps"][1].is_number() && c["speed_mps"][0].get<double>() >= 0.0 &&
-                    c["speed_mps"][1].get<double>() >= c["speed_mps"][0].get<double>();
-    if (!ok) {
-      throw std::invalid_argument(where + ".coverage = " + c.dump() +
-                                  ", expected {\"stop_waypoints\": N, \"fast_waypoints\": N, \"speed_mps\": [low, high]}");
-    }
-    cm.coverage = MissionKind{c["stop_waypoints"].get<int>(), c["fast_waypoints"].get<int>(), c["speed_mps"][0].get<double>(),
-                              c["speed_mps"][1].get<double>()};
-    readCoverageGeometry(c, where, *cm.coverage);
-  }
+  if (j.contains("coverage")) cm.coverage = kindFromJson(j["coverage"], where + ".coverage");
   if (j.contains("behaviour_before")) {
     const auto& b = j["behaviour_before"];
     if (!b.is_object()) throw std::invalid_argument(where + ".behaviour_before = " + b.dump() + ", expected {NAME: value}");
@@ -75,12 +103,7 @@ std::string calibrationToJson(const CalibrationResult& r) {
                              {"vertical", r.tracking.error.vertical_m},
                              {"samples", r.tracking.samples}};
   }
-  j["coverage"] = {{"stop_waypoints", r.coverage.stop_waypoints},
-                   {"fast_waypoints", r.coverage.fast_waypoints},
-                   {"speed_mps", {r.coverage.speed_lo_mps, r.coverage.speed_hi_mps}},
-                   {"leg_m", {r.coverage.leg_lo_m, r.coverage.leg_hi_m}},
-                   {"turn_deg_max", r.coverage.turn_hi_deg},
-                   {"leg_climb_m_max", r.coverage.climb_hi_m}};
+  j["coverage"] = kindToJson(r.coverage);
   j["behaviour_before"] = r.behaviour_before;
   j["effects"] = r.model.effectNames();
   for (const auto& e : r.model.effects())
@@ -90,7 +113,11 @@ std::string calibrationToJson(const CalibrationResult& r) {
   j["flights_agree"] = r.flights_agree;
   if (!r.per_flight.empty()) {
     j["per_flight"]["parameter"] = r.acceleration_parameter;
-    for (const auto& f : r.per_flight) j["per_flight"]["values"].push_back(f.value);
+    for (const auto& f : r.per_flight) {
+      j["per_flight"]["values"].push_back(f.value);
+      j["per_flight"]["flights"].push_back(f.flight);
+      j["per_flight"]["kinds"].push_back(kindToJson(f.kind));
+    }
   }
   for (const auto& f : r.after) j["flights"].push_back(f.name);
   return j.dump();
@@ -152,6 +179,7 @@ std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v) {
       }
       cm.disputed_values.push_back(x.get<double>());
     }
+    readDisputedKinds(pf, where + ".per_flight", cm);
   }
   return cm;
 }

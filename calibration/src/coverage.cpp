@@ -38,6 +38,7 @@ MissionKind missionKind(const std::vector<mission::NavStep>& steps, const missio
   std::vector<const mission::NavStep*> corners;  // the flown-to waypoints after a horizontal leg, in order
   std::vector<Eigen::Vector2d> headings;         // the horizontal direction of the leg into each
   std::vector<const mission::NavStep*> froms;    // where that leg starts
+  std::vector<double> legs;                      // [m] the horizontal legs' lengths
   for (const auto& s : steps) {
     if (!mission::isFlownTo(s) || !s.has_position) {
       if (s.kind == mission::NavStep::Kind::Takeoff) prev = &s;
@@ -52,8 +53,7 @@ MissionKind missionKind(const std::vector<mission::NavStep>& steps, const missio
       k.speed_hi_mps = std::max(k.speed_hi_mps, v);
     }
     if (prev != nullptr && d.norm() > 1.0) {
-      k.leg_lo_m = k.leg_lo_m > 0.0 ? std::min(k.leg_lo_m, d.norm()) : d.norm();
-      k.leg_hi_m = std::max(k.leg_hi_m, d.norm());
+      legs.push_back(d.norm());
       corners.push_back(&s);
       headings.push_back(d.normalized());
       froms.push_back(prev);
@@ -61,6 +61,10 @@ MissionKind missionKind(const std::vector<mission::NavStep>& steps, const missio
     if (prev != nullptr && prev->kind != mission::NavStep::Kind::Takeoff)
       k.climb_hi_m = std::max(k.climb_hi_m, std::abs(s.target.z() - prev->target.z()));
     prev = &s;
+  }
+  if (!legs.empty()) {
+    std::nth_element(legs.begin(), legs.begin() + static_cast<long>(legs.size() / 2), legs.end());
+    k.leg_lo_m = k.leg_hi_m = legs[legs.size() / 2];
   }
   // A turn is taken at a waypoint without a hold time between two horizontal legs.
   for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
@@ -102,8 +106,8 @@ std::vector<std::string> outsideCalibration(const MissionKind& m, const MissionK
                   " m/s; the calibration flights " + num(c.speed_lo_mps) + " to " + num(c.speed_hi_mps) + " m/s");
   }
   if (m.leg_lo_m > 0.0 && c.leg_lo_m > 0.0 && m.leg_lo_m < 0.5 * c.leg_lo_m) {
-    why.push_back("this mission has legs as short as " + metres(m.leg_lo_m) + " m; the calibration flights' shortest was " +
-                  metres(c.leg_lo_m) + " m (a short leg is flown accelerating and braking)");
+    why.push_back("this mission's median leg is " + metres(m.leg_lo_m) + " m; the calibration flights' " + metres(c.leg_lo_m) +
+                  " m or more (a short leg is flown accelerating and braking)");
   }
   if (m.turn_hi_deg >= 0.0 && c.turn_hi_deg >= 0.0 && m.turn_hi_deg > c.turn_hi_deg + 20.0) {
     why.push_back("this mission turns by up to " + metres(std::round(m.turn_hi_deg)) +

@@ -554,6 +554,8 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     checkAgreement(prepared, free.front(), base, [&](const std::vector<double>& xf, const Prepared& p) {
       return flightCost(xf, chosen, p);
     }, r);
+    for (std::size_t i = 0; i < r.per_flight.size() && i < prepared.size(); ++i)
+      r.per_flight[i].kind = missionKind(prepared[i].steps, autopilot);
   }
   // Energy: the model's coefficients fitted to the logged power on the logged kinematics.
   if (s.fit_energy) {

@@ -3,6 +3,8 @@
 // NaN, never a guess.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 
 #include "test_util.hpp"
@@ -142,6 +144,13 @@ TEST(MissionCalibration, FlightsSetUpWithDifferentAccelerationsAreToldApartAndSa
   bool said = false;
   for (const auto& n : apart.notes) said = said || n.find("the flights do not agree on WPNAV_ACCEL") != std::string::npos;
   EXPECT_TRUE(said);
+  // Each flight's mission kind is kept with its value, and stored and read back with its name.
+  EXPECT_EQ(apart.per_flight[0].kind.fast_waypoints, apart.coverage.fast_waypoints / 2);
+  EXPECT_GT(apart.per_flight[0].kind.fast_waypoints, 0);
+  const auto stored = nlohmann::json::parse(calibrationToJson(apart));
+  ASSERT_EQ(stored["per_flight"]["kinds"].size(), 2u);
+  EXPECT_EQ(stored["per_flight"]["flights"][1], "quick.csv");
+  EXPECT_EQ(stored["per_flight"]["kinds"][0]["fast_waypoints"], apart.per_flight[0].kind.fast_waypoints);
   const auto alike = calibrateMissions({flownSquare("a.csv", 100, v), flownSquare("b.csv", 100, v)}, v, model, ap, cs);
   EXPECT_TRUE(alike.flights_agree);
   ASSERT_EQ(alike.per_flight.size(), 2u);
@@ -250,7 +259,7 @@ TEST(CalibrationCoverage, WaypointKindsAndSpeedsAreCountedAndTheOutsideIsSaidWhy
   const auto slow = outsideCalibration(k, MissionKind{5, 30, 5.0, 6.0});  // 4 m/s is below 5 / 1.1
   ASSERT_EQ(slow.size(), 1u);
   EXPECT_NE(slow[0].find("commands 4 to 8 m/s; the calibration flights 5 to 6 m/s"), std::string::npos) << slow[0];
-  // Legs, turns and climbs: three 100 m legs (the climb on the spot is none), 90 deg turns at the
+  // Legs, turns and climbs: three 100 m legs, median 100 m (the climb on the spot is none), 90 deg turns at the
   // two waypoints without a hold (the stop's turn is not flown through), 20 m up on a leg (the
   // take-off's climb is not a leg's).
   EXPECT_DOUBLE_EQ(k.leg_lo_m, 100.0);
@@ -264,10 +273,10 @@ TEST(CalibrationCoverage, WaypointKindsAndSpeedsAreCountedAndTheOutsideIsSaidWhy
   gentle.climb_hi_m = 2.0;
   const auto sharp = outsideCalibration(k, gentle);
   ASSERT_EQ(sharp.size(), 3u);
-  EXPECT_NE(sharp[0].find("legs as short as 100 m; the calibration flights' shortest was 250 m"), std::string::npos) << sharp[0];
+  EXPECT_NE(sharp[0].find("median leg is 100 m; the calibration flights' 250 m or more"), std::string::npos) << sharp[0];
   EXPECT_NE(sharp[1].find("turns by up to 90 deg"), std::string::npos) << sharp[1];
   EXPECT_NE(sharp[2].find("change height by up to 20 m; the calibration flights' by up to 2.0 m"), std::string::npos) << sharp[2];
-  gentle.leg_lo_m = 199.0;   // 100 m is just over half of it
+  gentle.leg_lo_m = 199.0;   // a median of 100 m is just over half of it
   gentle.turn_hi_deg = 70.0;  // 90 is within 20 deg of it
   gentle.climb_hi_m = 15.0;   // 20 is below 15 + 5
   EXPECT_TRUE(outsideCalibration(k, gentle).empty());

@@ -18,8 +18,10 @@ struct MissionKind {
   int fast_waypoints = 0;     ///< waypoints without one (flown through, or stopped at by the 3.x rule)
   double speed_lo_mps = 0.0;  ///< [m/s] slowest horizontal speed commanded on a leg (0: no leg)
   double speed_hi_mps = 0.0;  ///< [m/s] fastest horizontal speed commanded on a leg (0: no leg)
-  double leg_lo_m = 0.0;      ///< [m] shortest horizontal leg between waypoints (0: no leg, or not recorded)
-  double leg_hi_m = 0.0;      ///< [m] longest horizontal leg between waypoints (0: no leg, or not recorded)
+  /// [m] the median horizontal leg between waypoints; joined kinds keep the lowest and the highest
+  /// of their medians (0: no leg, or not recorded)
+  double leg_lo_m = 0.0;
+  double leg_hi_m = 0.0;      ///< [m] see leg_lo_m
   double turn_hi_deg = -1.0;  ///< [deg] sharpest turn at a waypoint without a hold time (-1: none, or not recorded)
   double climb_hi_m = -1.0;   ///< [m] largest height change on a leg between waypoints (-1: none, or not recorded)
 };
@@ -32,9 +34,10 @@ MissionKind missionKind(const std::vector<mission::NavStep>& steps, const missio
 MissionKind combine(const MissionKind& a, const MissionKind& b);
 
 /// Why `mission` is outside what `calibrated` flew, one sentence each (empty: inside): waypoint
-/// kinds the calibration never flew, speeds more than 10 % beyond its range, legs under half its
-/// shortest, turns through waypoints more than 20 deg sharper than its sharpest, height changes on
-/// legs above twice (and 5 m more than) its largest. A quantity not recorded is not compared.
+/// kinds the calibration never flew, speeds more than 10 % beyond its range, a median leg under half
+/// its lowest median leg (one short leg does not make a mission of short legs), turns through
+/// waypoints more than 20 deg sharper than its sharpest, height changes on legs above twice (and
+/// 5 m more than) its largest. A quantity not recorded is not compared.
 std::vector<std::string> outsideCalibration(const MissionKind& mission, const MissionKind& calibrated);
 
 }  // namespace wattswath::calibration

@@ -138,6 +138,7 @@ struct FlightAcceleration {
   double value = 0.0;            ///< the parameter fitted on this flight alone [its unit]
   double misfit_alone = 0.0;     ///< [-] the flight's time misfit with its own value
   double misfit_joint = 0.0;     ///< [-] the flight's time misfit with the joint value (others as above)
+  MissionKind kind;              ///< what the flight's mission asked for (waypoint kinds, speeds, legs)
 };
 
 /// A calibrated autopilot and energy model, with the errors before and after.
@@ -183,6 +184,10 @@ struct CalibratedModel {
   /// flights_agree false), empty when they agreed or there was one flight.
   std::string disputed_parameter;
   std::vector<double> disputed_values;  ///< each flight's own value of it [the parameter's unit]
+  /// Each flight's name and what its mission asked for, in the order of disputed_values (empty in
+  /// files before 2026-11-25's last round).
+  std::vector<std::string> disputed_flights;
+  std::vector<MissionKind> disputed_kinds;  ///< see disputed_flights
 };
 
 /// The calibration stored in `v` (extensions.calibration), or nothing when it has none. Throws
