@@ -265,8 +265,8 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       // RTL starts from where the vehicle would stop now (it may still be moving or lagging).
       const Eigen::Vector3d stop = fl.veh.stoppingPoint();
       here = {stop.x(), stop.y(), here.z()};
-      // ModeRTL::init runs AC_WPNav::wp_and_spline_init: the S-curve clock restarts at full speed.
-      fl.veh.restartClock();
+      // ModeRTL::init runs AC_WPNav::wp_and_spline_init: the controller starts afresh.
+      fl.veh.restartController();
       fl.clock = 1.0;
       double alt = std::max(P.rtl_alt, here.z() + P.rtl_climb_min);
       if (P.rtl_cone_slope >= 0.5) alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, 2.5));

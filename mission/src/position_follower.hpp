@@ -64,20 +64,22 @@ class PositionFollower {
       if (integ_.norm() > g_.vel_imax) integ_ *= g_.vel_imax / integ_.norm();
     }
     lean_ += (cmd - lean_) * std::min(1.0, dt / std::max(a_.response_s, dt));
-    const Eigen::Vector2d vh = v_.head<2>();
-    const double speed = vh.norm();
-    Eigen::Vector2d drag = Eigen::Vector2d::Zero();
-    if (speed > 1e-9) drag = -vh / speed * (a_.drag_linear_per_s * speed + a_.drag_quadratic_per_m * speed * speed);
-    v_.head<2>() += (lean_ + drag) * dt;
+    v_.head<2>() += (lean_ + drag(v_.head<2>())) * dt;
     p_.head<2>() += v_.head<2>() * dt;
     p_.z() = tp.z();
     v_.z() = tv.z();
     return scaler_;
   }
 
-  /// Restarts the S-curve clock at full speed (AC_WPNav::wp_and_spline_init: `_track_scalar_dt = 1`,
-  /// as when a mode such as RTL starts the waypoint controller afresh).
-  void restartClock() { scaler_ = 1.0; }
+  /// Starts the waypoint controller afresh, as a mode such as RTL does (AC_WPNav::wp_and_spline_init):
+  /// the S-curve clock at full speed (`_track_scalar_dt = 1`), and AC_PosControl::init_xy_controller's
+  /// velocity loop: its filters reset and its integrator set to the lean acceleration minus the
+  /// acceleration achieved, i.e. what holds the airframe's drag now.
+  void restartController() {
+    scaler_ = 1.0;
+    reset_filter_ = true;
+    integ_ = -drag(v_.head<2>());
+  }
 
   /// Where the autopilot would bring the vehicle to rest from its state now
   /// (AC_PosControl::get_stopping_point_xy: linear near zero speed, v^2 / 2a beyond).
@@ -96,6 +98,13 @@ class PositionFollower {
   const Eigen::Vector3d& velocity() const { return v_; }
 
  private:
+  // [m/s^2] The airframe's drag deceleration at horizontal velocity `vh`.
+  Eigen::Vector2d drag(const Eigen::Vector2d& vh) const {
+    const double speed = vh.norm();
+    if (speed <= 1e-9) return Eigen::Vector2d::Zero();
+    return -vh / speed * (a_.drag_linear_per_s * speed + a_.drag_quadratic_per_m * speed * speed);
+  }
+
   // The velocity error as AC_PID_2D::update_all keeps it: low-passed (PSC_VELXY_FLTE), its rate of
   // change low-passed too (PSC_VELXY_FLTD) into deriv_; at the first call taken as it is.
   Eigen::Vector2d filteredError(const Eigen::Vector2d& raw, double dt) {

@@ -144,6 +144,29 @@ TEST(ArduCopterSCurve, TrackingVehicleLagsThenSettlesDuringTheHold) {
   EXPECT_LT((end->position - Eigen::Vector3d(100, 0, 10)).norm(), 0.3);
 }
 
+TEST(ArduCopterSCurve, ReturnFromAStopAtHomeTakesTheLoiterAndOneShortLeg) {
+  // A square that ends at home (as the SITL square_5mps): the vehicle overshoots the last
+  // waypoint by under 0.5 m, RTL flies back from its stopping point (an S-curve of at most 0.5 m:
+  // 3.0 s) and loiters RTL_LOIT_TIME 5 s before landing. ModeRTL::init starts the waypoint
+  // controller afresh (AC_WPNav::wp_and_spline_init: the S-curve clock at full speed, the velocity
+  // loop's integrator from the lean it holds); carried over from the stop, the slowed clock and
+  // the stop's integrator stretched this to about 10 s.
+  const Mission m = localMission({{100, 0, 10}, {100, 100, 10}, {0, 100, 10}, {0, 0, 10}});
+  FlightSettings fs;
+  fs.airframe.drag_linear_per_s = 0.26;
+  fs.airframe.drag_quadratic_per_m = 0.03;
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, fs);
+  double t0 = -1.0, t1 = -1.0;
+  for (const auto& s : f.samples) {
+    if (s.phase == FlightPhase::Return && t0 < 0.0) t0 = s.t;
+    if (s.phase == FlightPhase::Landing && t1 < 0.0) t1 = s.t;
+  }
+  ASSERT_GT(t0, 0.0);
+  ASSERT_GT(t1, t0);
+  EXPECT_GT(t1 - t0, 5.0);
+  EXPECT_LT(t1 - t0, 5.0 + 3.0 + 0.5);
+}
+
 TEST(ArduCopterSCurve, VelocityLoopFiltersItsErrorAndAddsTheDerivative) {
   // AC_PID_2D (PSC_VELXY_*): P and I act on the velocity error low-passed at PSC_VELXY_FLTE, D on
   // its rate of change low-passed at PSC_VELXY_FLTD. The filter delays the correction of a lag, so
