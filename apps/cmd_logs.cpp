@@ -114,8 +114,12 @@ void registerReplay(CLI::App& app) {
                          {"physics_error_j", c.physicsErrorJ()}});
       }
     }
-    const MissionReplays missions = o->missions.empty() ? MissionReplays{}
-                                                        : missionReplays(v, model, effects_opt->count() > 0, o->logs, o->missions, reps, o->read);
+    // The missions are flown as predict flies them (the file's calibration unless --effects).
+    MissionReplays missions;
+    if (!o->missions.empty()) {
+      const PredictionSetup setup = predictionSetup(v, o->vehicle, model, effects_opt->count() > 0, 25.0);
+      missions = missionReplays(v, setup, o->logs, o->missions, reps, o->read);
+    }
     if (!o->report.empty() || !o->report_svg.empty()) {
       // With --mission the mission section comes first, then the model on the logged kinematics.
       auto data = validationFromReplays(reps);

@@ -274,12 +274,14 @@ void registerPredictCommand(CLI::App& app) {
     ms::Mission m = ms::readMission(o->mission, ro);
     std::optional<Launch> launch;
     if (!o->launch.empty()) launch = moveHomeTo(m, o->launch);
-    // Flights of the mission's kind decide a disputed parameter (predict_spread.hpp, KindChoice).
-    const std::optional<KindChoice> choice = kindChoiceOf(ms::sequenceMission(m), setup);
+    // What the mission asks of the vehicle, for the calibration's flights of its kind to decide a
+    // disputed parameter (predict_spread.hpp, KindChoice) and for the coverage check.
+    const calibration::MissionKind kind = calibration::missionKind(ms::sequenceMission(m), setup.autopilot);
+    const std::optional<KindChoice> choice = kindChoiceOf(kind, setup);
     if (choice) setup.autopilot.parameters[setup.disputed_parameter] = choice->value;
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
     ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
-    const std::optional<Coverage> coverage = coverageOf(m, p.flight.steps, v, setup);
+    const std::optional<Coverage> coverage = coverageOf(m, kind, v, setup);
     // The reserve is also checked for the dearer of the flights the calibration stands for, and for
     // the behaviour before the calibration when the mission is outside what it flew.
     double dearest = dispute ? dispute->energy_hi_j : 0.0;

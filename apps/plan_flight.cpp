@@ -7,6 +7,7 @@
 #include <iterator>
 #include <iostream>
 
+#include "predict_spread.hpp"
 #include "prediction_setup.hpp"
 #include "wattswath/report/svg.hpp"
 
@@ -49,8 +50,7 @@ planner::FlightScoring withSetup(planner::FlightScoring scoring, const Predictio
 
 PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, const std::string& vehicle_path,
                         std::vector<std::string>& notes) {
-  const PredictionSetup setup = predictionSetup(*scoring.vehicle, vehicle_path, "", 25.0);
-  scoring = withSetup(scoring, setup);
+  PredictionSetup setup = predictionSetup(*scoring.vehicle, vehicle_path, "", 25.0);
   std::vector<std::pair<std::string, const planner::PlanCandidate*>> cands = {{"plan", &r.plan}};
   if (r.per_cell && r.per_cell->valid) cands.push_back({"per-cell", &*r.per_cell});
   if (r.best_spiral && r.best_spiral->valid) cands.push_back({"best spiral", &*r.best_spiral});
@@ -58,12 +58,29 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   // The ground-station default flown too (in the same batch of flights), as a baseline: never written.
   cands.push_back({"ground-station default", &r.ground_station_default});
   scoring.as_written = {&r.ground_station_default};  // what a ground station writes: not rewritten with our speed commands
-  auto scores = planner::scoreByFlight(cands, scoring);
-  const auto baseline = std::stable_partition(scores.begin(), scores.end(), [&](const planner::FlightScore& s) {
-    return s.candidate != &r.ground_station_default;
-  });
-  std::vector<planner::FlightScore> baselines(std::make_move_iterator(baseline), std::make_move_iterator(scores.end()));
-  scores.erase(baseline, scores.end());
+  std::vector<planner::FlightScore> scores, baselines;
+  const auto fly = [&] {
+    scores = planner::scoreByFlight(cands, withSetup(scoring, setup));
+    const auto baseline = std::stable_partition(scores.begin(), scores.end(), [&](const planner::FlightScore& s) {
+      return s.candidate != &r.ground_station_default;
+    });
+    baselines.assign(std::make_move_iterator(baseline), std::make_move_iterator(scores.end()));
+    scores.erase(baseline, scores.end());
+  };
+  fly();
+  // A calibration whose flights disagree: flown again as `predict` flies the mission written, with
+  // the value of the calibration flights of its kind (predict_spread.hpp, KindChoice).
+  const auto kind = calibration::missionKind(scores[planner::cheapestFlight(scores)].prediction.flight.steps, setup.autopilot);
+  if (const auto choice = kindChoiceOf(kind, setup)) {
+    setup.autopilot.parameters[setup.disputed_parameter] = choice->value;
+    fly();
+    std::string from;
+    for (const auto& name : choice->flights) from += (from.empty() ? "" : ", ") + name;
+    char value[32];
+    std::snprintf(value, sizeof value, "%.3g", choice->value);
+    notes.push_back("calibration: its flights disagree on " + setup.disputed_parameter + "; the plan is flown with " + value +
+                    ", fitted on " + from + ", the calibration flight(s) of the written mission's kind, as `wattswath predict` flies it");
+  }
   PlanFlight f;
   for (const auto& s : scores) f.rows.push_back(rowOf(s, false));
   f.chosen = planner::cheapestFlight(scores);

@@ -10,6 +10,7 @@
 #include "cli.hpp"
 #include "plan_fleet.hpp"
 #include "plan_flight.hpp"
+#include "predict_spread.hpp"
 #include "wattswath/report/svg.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/planned_mission.hpp"
@@ -239,6 +240,10 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
     throw std::invalid_argument("--energy-margin " + std::to_string(req.energy_margin_pct) + ": expected 0..100 %");
   PredictionSetup setup = predictionSetup(v, vehicle_path, "", req.reserve_pct);
   setup.settings.energy_margin = req.energy_margin_pct / 100.0;
+  // As the whole plan was flown (plan_flight.cpp): a disputed calibration takes the value of its
+  // flights of the plan's kind.
+  if (const auto choice = kindChoiceOf(calibration::missionKind(flight.prediction.flight.steps, setup.autopilot), setup))
+    setup.autopilot.parameters[setup.disputed_parameter] = choice->value;
   scoring = withSetup(scoring, setup);
   pl::RouteScorer scorer(setup.model, pl::SpeedSettings::fromVehicle(v));
   const double usable = pl::predictBatteryUse(plan.flown, *v.battery).usable_energy_j;

@@ -36,11 +36,10 @@ std::optional<Dispute> disputeOf(const ms::Mission& m, const energy::Vehicle& v,
   return d;
 }
 
-std::optional<KindChoice> kindChoiceOf(const std::vector<ms::NavStep>& steps, const PredictionSetup& setup) {
+std::optional<KindChoice> kindChoiceOf(const calibration::MissionKind& kind, const PredictionSetup& setup) {
   const std::size_t n = setup.disputed_values.size();
   if (setup.disputed_parameter.empty() || n < 2 || setup.disputed_kinds.size() != n || setup.disputed_flights.size() != n)
     return std::nullopt;
-  const auto kind = calibration::missionKind(steps, setup.autopilot);
   KindChoice c;
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -72,10 +71,9 @@ std::string disputeText(const Dispute& d, const ms::MissionPrediction& p, const 
   return os.str();
 }
 
-std::optional<Coverage> coverageOf(const ms::Mission& m, const std::vector<ms::NavStep>& steps, const energy::Vehicle& v,
+std::optional<Coverage> coverageOf(const ms::Mission& m, const calibration::MissionKind& kind, const energy::Vehicle& v,
                                    const PredictionSetup& setup) {
   if (!setup.calibrated || !setup.coverage) return std::nullopt;
-  const auto kind = calibration::missionKind(steps, setup.autopilot);
   Coverage c;
   c.reasons = calibration::outsideCalibration(kind, *setup.coverage);
   if (c.reasons.empty()) return std::nullopt;

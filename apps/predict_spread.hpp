@@ -32,9 +32,9 @@ struct KindChoice {
   std::vector<std::string> flights;  ///< the calibration flights it comes from
 };
 
-/// The choice for the mission sequenced as `steps` under `setup`, or nothing (no dispute, no
-/// recorded kinds, or no flight, or every flight, of the mission's kind).
-std::optional<KindChoice> kindChoiceOf(const std::vector<mission::NavStep>& steps, const PredictionSetup& setup);
+/// The choice for a mission of `kind` (calibration::missionKind) under `setup`, or nothing (no
+/// dispute, no recorded kinds, or no flight, or every flight, of the mission's kind).
+std::optional<KindChoice> kindChoiceOf(const calibration::MissionKind& kind, const PredictionSetup& setup);
 
 /// One sentence on the dispute, relative to prediction `p` (made with `choice` when there is one).
 std::string disputeText(const Dispute& d, const mission::MissionPrediction& p, const std::optional<KindChoice>& choice);
@@ -48,10 +48,10 @@ struct Coverage {
   double time_s = 0.0;               ///< [s] likewise
 };
 
-/// The coverage check of `setup` on `m` (sequenced as `steps`): nothing when uncalibrated, inside,
-/// or the calibration recorded no coverage (files before 2026-11-25).
-std::optional<Coverage> coverageOf(const mission::Mission& m, const std::vector<mission::NavStep>& steps,
-                                   const energy::Vehicle& v, const PredictionSetup& setup);
+/// The coverage check of `setup` on `m` (of `kind`, calibration::missionKind): nothing when
+/// uncalibrated, inside, or the calibration recorded no coverage (files before 2026-11-25).
+std::optional<Coverage> coverageOf(const mission::Mission& m, const calibration::MissionKind& kind, const energy::Vehicle& v,
+                                   const PredictionSetup& setup);
 
 /// One sentence on the coverage, relative to prediction `p`.
 std::string coverageText(const Coverage& c, const mission::MissionPrediction& p);

@@ -1,7 +1,7 @@
 #pragma once
-// How `predict` and `plan` fly a mission for a vehicle file: the energy model (the file's
+// How `predict`, `plan` and `replay --mission` fly a mission for a vehicle file: the energy model (the file's
 // calibration when it has one and no --effects is given, else the listed effects), its autopilot
-// and the calibrated flight behaviour. One place, so plan and predict agree.
+// and the calibrated flight behaviour. One place, so plan, predict and replay agree.
 #include <map>
 #include <optional>
 #include <string>
@@ -33,5 +33,10 @@ struct PredictionSetup {
 /// calibration or "hover,kinetic,parasitic_drag"); `reserve_pct` [%] the landing reserve.
 PredictionSetup predictionSetup(const energy::Vehicle& v, const std::string& vehicle_path, const std::string& effects,
                                 double reserve_pct);
+
+/// As above with the energy model already built: `given` unless the file has a calibration and
+/// `effects_given` is false (then the calibration's), as `replay` chooses.
+PredictionSetup predictionSetup(const energy::Vehicle& v, const std::string& vehicle_path, const energy::EnergyModel& given,
+                                bool effects_given, double reserve_pct);
 
 }  // namespace wattswath::apps

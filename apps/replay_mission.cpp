@@ -108,43 +108,25 @@ json flightJson(const calibration::FlightComparison& c, const std::string& log, 
 
 }  // namespace
 
-MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given, bool effects_given,
-                              const std::vector<std::string>& log_paths, const std::vector<std::string>& mission_paths,
-                              const std::vector<calibration::LogReplay>& reps, const logs::LogReadOptions& read) {
-  const auto cal = calibration::calibratedModel(v);
-  const bool use_cal = cal && !effects_given;
-  const en::EnergyModel& model = use_cal ? cal->model : given;
-  const auto ap = mission::parseAutopilot(v.autopilot_json, v.name);
-  mission::PredictSettings ps;
-  if (use_cal) {
-    if (cal->takeoff_delay_s >= 0.0) ps.flight.takeoff_delay_s = cal->takeoff_delay_s;
-    ps.flight.stop_at_waypoints = cal->stop_at_waypoints;
-    ps.flight.speed_change_late = cal->speed_change_late;
-    ps.flight.tracking_error = cal->tracking_error;
-  }
+MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup, const std::vector<std::string>& log_paths,
+                              const std::vector<std::string>& mission_paths, const std::vector<calibration::LogReplay>& reps,
+                              const logs::LogReadOptions& read) {
+  const bool use_cal = setup.calibrated;
+  const en::EnergyModel& model = setup.model;
   const std::string model_text = use_cal ? "the vehicle file's calibration" : "--effects";
   MissionReplays out;
   std::string effects;
   for (const auto& e : model.effectNames()) effects += (effects.empty() ? "" : ", ") + e;
   out.report.model = effects + (use_cal ? " (the vehicle file's calibration)" : " (--effects)");
-  out.report.autopilot = mission::toString(ap.family);
+  out.report.autopilot = mission::toString(setup.autopilot.family);
   for (std::size_t i = 0; i < log_paths.size(); ++i) {
     calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]),
                                  logs::readFlightLog(log_paths[i], read)};
     // As predict: the calibration flights of the mission's kind decide a disputed acceleration.
-    mission::AutopilotConfig ap_f = ap;
-    std::optional<KindChoice> choice;
-    if (use_cal) {
-      PredictionSetup s;
-      s.autopilot = ap;
-      s.disputed_parameter = cal->disputed_parameter;
-      s.disputed_values = cal->disputed_values;
-      s.disputed_flights = cal->disputed_flights;
-      s.disputed_kinds = cal->disputed_kinds;
-      choice = kindChoiceOf(mission::sequenceMission(f.mission), s);
-      if (choice) ap_f.parameters[s.disputed_parameter] = choice->value;
-    }
-    const auto c = calibration::compareFlight(f, v, model, ap_f, ps);
+    mission::AutopilotConfig ap = setup.autopilot;
+    const auto choice = kindChoiceOf(calibration::missionKind(mission::sequenceMission(f.mission), ap), setup);
+    if (choice) ap.parameters[setup.disputed_parameter] = choice->value;
+    const auto c = calibration::compareFlight(f, v, model, ap, setup.settings);
     // Physics: the same model on the logged kinematics (replay) against the measurement;
     // kinematics: the predicted flight against that replay.
     const double replay_j = use_cal ? calibration::replay(model, calibration::prepareLog(f.log)).flight.modelled_j
@@ -152,10 +134,11 @@ MissionReplays missionReplays(const en::Vehicle& v, const en::EnergyModel& given
     out.json.push_back(
         flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
     out.json.back()["calibration_chosen"] =
-        choice ? nlohmann::json{{"parameter", cal->disputed_parameter}, {"value", choice->value}, {"flights", choice->flights}}
+        choice ? nlohmann::json{{"parameter", setup.disputed_parameter}, {"value", choice->value}, {"flights", choice->flights}}
                : nlohmann::json(nullptr);
     // The predicted trajectory for the report's speed figure (compareFlight keeps only its times).
-    const auto pred = mission::predictMission(calibration::missionLaunchedAt(f.mission, c.launch), v, model, ap_f, ps);
+    const auto pred =
+        mission::predictMission(calibration::missionLaunchedAt(f.mission, c.launch), v, model, ap, setup.settings);
     out.report.flights.push_back(reportFlight(f, mission_paths[i], c, pred, replay_j));
     out.report.flights.back().kinematics_note = kinematicsSentence(out.json.back());
   }

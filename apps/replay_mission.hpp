@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "prediction_setup.hpp"
 #include "wattswath/calibration/replay.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
@@ -21,12 +22,12 @@ struct MissionReplays {
   report::MissionReplayData report;               ///< the report's mission section
 };
 
-/// Compares each log of `log_paths` with the prediction of the mission of `mission_paths` at the same
-/// index. The model is the vehicle file's calibration unless `effects_given` (then `given`);
-/// `reps` are the replays of `given` on the same logs (for the kinematics / physics split).
-MissionReplays missionReplays(const energy::Vehicle& v, const energy::EnergyModel& given, bool effects_given,
-                              const std::vector<std::string>& log_paths, const std::vector<std::string>& mission_paths,
-                              const std::vector<calibration::LogReplay>& reps, const logs::LogReadOptions& read);
+/// Compares each log of `log_paths` with the prediction, under `setup` (as `predict` flies it), of
+/// the mission of `mission_paths` at the same index; `reps` are the replays of the --effects model
+/// on the same logs (the kinematics / physics split when `setup` is not calibrated).
+MissionReplays missionReplays(const energy::Vehicle& v, const PredictionSetup& setup, const std::vector<std::string>& log_paths,
+                              const std::vector<std::string>& mission_paths, const std::vector<calibration::LogReplay>& reps,
+                              const logs::LogReadOptions& read);
 
 /// One sentence on where the log's vehicle took off, `east_m` and `north_m` [m] from the mission's
 /// home (FlightComparison::launch), and that the prediction flies from there.

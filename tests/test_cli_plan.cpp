@@ -382,6 +382,39 @@ TEST(CliPlan, AWrittenMissionOutsideTheVehiclesCalibrationIsSaidToBe) {
   EXPECT_TRUE(calibrationNotes("coverage_inside").empty());
 }
 
+// A calibration whose flights disagree on WPNAV_ACCEL (250 and 60 cm/s/s), the first of the
+// written mission's kind: plan flies the finalists with 250, as predict flies the mission written
+// (before, plan flew the joint value and differed from predict), and says so.
+TEST(CliPlan, ADisputedCalibrationIsFlownWithItsFlightsOfTheWrittenMissionsKindAsPredictDoes) {
+  nlohmann::json v = nlohmann::json::parse(slurp(sourcePath("data/vehicles/iris-plus-arducopter3.json")));
+  const nlohmann::json anything = {{"stop_waypoints", 10}, {"fast_waypoints", 400}, {"speed_mps", {0.1, 50.0}}};
+  const nlohmann::json slow = {{"stop_waypoints", 10}, {"fast_waypoints", 400}, {"speed_mps", {0.1, 0.2}}};
+  v["extensions"]["calibration"] = {{"effects", {"hover", "kinetic", "parasitic_drag"}},
+                                    {"flights_agree", false},
+                                    {"per_flight",
+                                     {{"parameter", "WPNAV_ACCEL"},
+                                      {"values", {250.0, 60.0}},
+                                      {"flights", {"like_it.csv", "slow.csv"}},
+                                      {"kinds", {anything, slow}}}}};
+  const std::string dir = outDir("dispute_vehicle"), vehicle = dir + "/v.json", out = outDir("dispute_plan");
+  std::filesystem::create_directories(dir);
+  std::ofstream(vehicle) << v.dump();
+  const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + vehicle +
+                     " --spacing 15 --no-report --out " + out + " --json 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  std::string note;
+  for (const auto& n : j.at("notes"))
+    if (n.get<std::string>().rfind("calibration: its flights disagree", 0) == 0) note = n;
+  EXPECT_NE(note.find("flown with 250, fitted on like_it.csv"), std::string::npos) << j.at("notes").dump();
+  const auto p = run(cliBinary() + " predict " + out + "/mission.plan --vehicle " + vehicle + " --json 2>/dev/null");
+  ASSERT_EQ(p.status, 0) << p.output;
+  const auto pj = nlohmann::json::parse(p.output);
+  ASSERT_TRUE(pj.at("calibration_dispute").at("chosen").is_object()) << pj.at("calibration_dispute").dump();
+  EXPECT_NEAR(pj.at("energy_j").get<double>() / j.at("flight").at("energy_j").get<double>(), 1.0, 1e-6);
+  EXPECT_NEAR(pj.at("time_s").get<double>() / j.at("flight").at("time_s").get<double>(), 1.0, 1e-6);
+}
+
 // Surveys larger than one battery (issue 23): with a 1.3 Ah pack the IRIS+ area needs several
 // sorties; `predict` on each written sortie_NN.plan lands with the 25 % reserve (also with its 10 %
 // energy margin), the sorties
