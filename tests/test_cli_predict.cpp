@@ -85,6 +85,26 @@ TEST(CliPredict, UnknownCommandIsAnErrorAndLenientSkipsItWithAWarning) {
   EXPECT_NE(j["warnings"].dump().find("NAV_VTOL_TAKEOFF"), std::string::npos) << j["warnings"].dump();
 }
 
+// PX4 has no NAV_SPLINE_WAYPOINT: its upload answers MAV_MISSION_UNSUPPORTED and keeps nothing, so
+// predict refuses the mission for a PX4 vehicle, naming the file, the line and the command; an
+// ArduCopter vehicle flies it.
+TEST(CliPredict, ASplineWaypointIsFlownByArduCopterAndRefusedForPx4) {
+  const std::string path = tempPath("spline.waypoints");
+  std::ofstream(path) << "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t43.7\t10.4\t0\t1\n"
+                         "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t20\t1\n"
+                         "2\t0\t3\t82\t0\t0\t0\t0\t43.7009\t10.4\t20\t1\n"
+                         "3\t0\t3\t82\t0\t0\t0\t0\t43.7009\t10.4012\t20\t1\n"
+                         "4\t0\t3\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const RunResult px4 = run(cli("predict " + path + " --vehicle " + sourcePath("tests/data/iris-px4.json") + " 2>&1"));
+  EXPECT_NE(px4.status, 0);
+  EXPECT_NE(px4.output.find("spline.waypoints:4: NAV_SPLINE_WAYPOINT (82): PX4 refuses"), std::string::npos) << px4.output;
+  const json j = runJson("predict " + path + " --vehicle " + sourcePath("data/vehicles/iris.json") + " --json");
+  // Longer than the 376 m of straight legs (20 m up, 100 m north, 97 m east, 139 m home, 20 m
+  // down): the first spline leaves towards the second's destination and swings out.
+  EXPECT_GT(j["distance_m"].get<double>(), 380.0);
+  std::remove(path.c_str());
+}
+
 #ifdef WATTSWATH_TEST_SHARED_DATA
 TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
   const std::string flight = "2017-10-18_1436_energy14";

@@ -80,6 +80,11 @@ double AutopilotConfig::get(const std::string& name) const {
                           toString(family) + " default");
 }
 
+bool versionAtLeast(const std::string& version, int major, int minor) {
+  const auto [ma, mi] = majorMinor(version);
+  return ma > major || (ma == major && mi >= minor);
+}
+
 AutopilotFamily familyOf(const std::string& firmware, const std::string& version) {
   if (firmware == "PX4") return AutopilotFamily::PX4;
   if (firmware == "ArduCopter") {

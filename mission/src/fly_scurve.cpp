@@ -2,12 +2,15 @@
 // vehicle does not stop when the next navigation item is a waypoint and this one has no hold: the
 // next leg's S-curve is started early and added to the end of this one once the predicted middle of
 // the overlap is within WPNAV_RADIUS of the waypoint, slower than both legs' speeds and within the
-// corner acceleration (AC_WPNav / SCurve::advance_target_along_track, docs/autopilots.md).
+// corner acceleration (AC_WPNav / SCurve::advance_target_along_track, docs/autopilots.md). A
+// NAV_SPLINE_WAYPOINT is a Hermite segment (spline_curve.hpp) joined to straight legs at a speed,
+// without a corner blend (AC_WPNav::set_spline_destination and its _next variants).
 #include <algorithm>
 #include <cmath>
 
 #include "flight_internal.hpp"
 #include "position_follower.hpp"
+#include "spline_curve.hpp"
 #include "wattswath/mission/scurve.hpp"
 
 namespace wattswath::mission {
@@ -20,8 +23,13 @@ struct Params {
   double speed_xy, speed_up, speed_dn, accel_xy, accel_z, jerk, snap, radius, accel_corner;
   double jerk_z, rtl_alt, rtl_alt_final, rtl_climb_min, rtl_speed, rtl_loiter_s, land_speed, land_speed_high,
       land_alt_low, pos_z_p, spool_s, rtl_cone_slope;
+  double spline_lateral;  // share of the acceleration limit a spline's curvature may use
   detail::PositionGains gains;
 };
+
+// [-] SplineCurve's LATERAL_ACCEL_SCALER: 1 until ArduPilot PR 19941 (2022-01-31) halved it so
+// that the path stays within what the vehicle can follow; 0.5 from 4.2 on.
+double splineLateralShare(const std::string& version) { return versionAtLeast(version, 4, 2) ? 0.5 : 1.0; }
 
 Params readParams(const AutopilotConfig& ap) {
   using detail::checkParameter;
@@ -68,6 +76,7 @@ Params readParams(const AutopilotConfig& ap) {
   const double lean_deg = psc_angle > 0.0 ? psc_angle : checkParameter("ANGLE_MAX", ap.get("ANGLE_MAX"), 1000, 8000, "cdeg") / 100.0;
   p.gains.lean_accel = kGravity * std::tan(std::clamp(lean_deg, 10.0, 80.0) * M_PI / 180.0);
   p.gains.scaler_tc = p.accel_xy / p.jerk;
+  p.spline_lateral = splineLateralShare(ap.version);
   return p;
 }
 
@@ -92,10 +101,14 @@ struct LegSpec {
   Eigen::Vector3d target;
   double speed_xy, speed_up, speed_dn, hold_s;
   int step;
-  bool fast;  // the next leg follows without a stop
+  bool fast;            // the next leg follows without a stop
+  bool spline = false;  // a NAV_SPLINE_WAYPOINT: a spline segment, not a straight leg
 };
 
-Leg makeLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const LegSpec& spec, const Params& P, double jerk) {
+// The straight leg from `from` to `to`, starting at `v0` and ending at `v1` [m/s] (0: at rest;
+// more than 0 where it joins a spline).
+Leg makeLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const LegSpec& spec, const Params& P, double jerk,
+            double v0 = 0.0, double v1 = 0.0) {
   Leg leg;
   leg.origin = from;
   leg.dest = to;
@@ -107,7 +120,7 @@ Leg makeLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const LegSpe
   const double amax = detail::kinematicLimit(leg.u, P.accel_xy, P.accel_z, P.accel_z);
   leg.accz = P.accel_z;
   const double snap = P.snap * jerk / P.jerk;
-  leg.prof = SCurveProfile::restToRest(len, {leg.vmax, amax, jerk, snap});
+  leg.prof = SCurveProfile::between(len, v0, v1, {leg.vmax, amax, jerk, snap});
   return leg;
 }
 
@@ -140,17 +153,22 @@ struct Flight {
   }
 };
 
-// Flies a chain of legs from `here`, blending corners into every leg marked fast; returns where
-// the vehicle stops (the last leg's target, after its hold). A waypoint without a following leg
-// is reached when the S-curve has ended there and the vehicle is within WPNAV_RADIUS of it.
+// Flies a chain of straight legs from `here`, blending corners into every leg marked fast; returns
+// where the vehicle stops (the last leg's target, after its hold). A waypoint without a following
+// leg is reached when the S-curve has ended there and the vehicle is within WPNAV_RADIUS of it.
+// The first leg starts at `v_start` [m/s]; the last, when fast (a spline follows), ends at `v_end`
+// (at most its peak speed), and `end_speed` [m/s] is then the speed it ended at.
 Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Vector3d here, const Params& P,
-                         FlightPhase phase, double jerk) {
+                         FlightPhase phase, double jerk, double v_start = 0.0, double v_end = 0.0, double* end_speed = nullptr) {
   Recorder& rec = fl.rec;
-  Leg prev, cur = makeLeg(here, legs[0].target, legs[0], P, jerk), next;
+  const auto endOf = [&](std::size_t k) { return k + 1 == legs.size() ? v_end : 0.0; };
+  Leg prev, cur = makeLeg(here, legs[0].target, legs[0], P, jerk, v_start, endOf(0)), next;
   std::size_t i = 0;
+  if (end_speed) *end_speed = 0.0;
   auto prepareNext = [&] {
     next = Leg();
-    if (legs[i].fast && i + 1 < legs.size()) next = makeLeg(legs[i].target, legs[i + 1].target, legs[i + 1], P, jerk);
+    if (legs[i].fast && i + 1 < legs.size())
+      next = makeLeg(legs[i].target, legs[i + 1].target, legs[i + 1], P, jerk, 0.0, endOf(i + 1));
   };
   auto arrived = [&] {
     const bool target_done = !next.started && cur.t >= cur.prof.duration() && prev.remaining() <= 0.0;
@@ -191,7 +209,10 @@ Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Ve
       }
       fl.hold(legs[i].target, legs[i].hold_s, phase, legs[i].step);
       rec.completed(legs[i].step);
-      if (i + 1 >= legs.size()) return legs[i].target;
+      if (i + 1 >= legs.size()) {
+        if (end_speed) *end_speed = cur.prof.at(cur.prof.duration()).vel;
+        return legs[i].target;
+      }
       here = legs[i].target;
       prev = Leg();
       ++i;
@@ -205,7 +226,79 @@ LegSpec specOf(const NavStep& s, const Params& P, int k) {
   // A DO_CHANGE_SPEED above WPNAV_SPEED is flown (AC_WPNav::set_speed_xy does not cap it; the
   // airframe's lean limit and drag may).
   return {s.target, s.speed_xy > 0 ? s.speed_xy : P.speed_xy, s.speed_up > 0 ? s.speed_up : P.speed_up,
-          s.speed_down > 0 ? s.speed_down : P.speed_dn, s.hold_s, k, false};
+          s.speed_down > 0 ? s.speed_down : P.speed_dn, s.hold_s, k, false, s.kind == NavStep::Kind::SplineWaypoint};
+}
+
+// The spline segment of legs[k] from `origin`, entered along tangent `in` (zero from a stop), and
+// left along the next leg (AC_WPNav::set_spline_destination): towards the waypoint after next when
+// that is a spline too, else along the next straight leg; not at all (a stop) when legs[k] is not
+// fast. `stale` [m/s] is the arrival limit the autopilot's curve object still holds. With
+// `limit_by_next`, the arrival speed is also kept to what the next leg can start at.
+detail::SplineCurve splineOf(const std::vector<LegSpec>& legs, std::size_t k, const Eigen::Vector3d& origin,
+                             const Eigen::Vector3d& in, const Params& P, double jerk, double stale, bool limit_by_next = true) {
+  const LegSpec& s = legs[k];
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  const bool next = s.fast && k + 1 < legs.size();
+  if (next) out = legs[k + 1].target - (legs[k + 1].spline ? origin : s.target);
+  const detail::SplineLimits lim{s.speed_xy, s.speed_up, s.speed_dn, P.accel_xy, P.accel_z, P.spline_lateral};
+  detail::SplineCurve c(origin, s.target, in, out, lim, stale);
+  if (next && limit_by_next && !out.isZero()) {
+    if (legs[k + 1].spline) {
+      c.limitDestinationSpeed(splineOf(legs, k + 1, s.target, out, P, jerk, c.destinationSpeedMax(), false).originSpeedMax());
+    } else {
+      c.limitDestinationSpeed(makeLeg(s.target, legs[k + 1].target, legs[k + 1], P, jerk).prof.peakSpeed());
+    }
+  }
+  return c;
+}
+
+// Flies spline segment `c` of leg `s` from target speed `speed` [m/s]; returns the target speed at
+// its end. It is reached when its curve ends there, and, at a stop, when the vehicle is also within
+// WPNAV_RADIUS (AC_WPNav::advance_wp_target_along_track); then its hold.
+double flySpline(Flight& fl, detail::SplineCurve& c, const LegSpec& s, const Params& P, FlightPhase phase, double speed) {
+  while (true) {
+    Eigen::Vector3d pos, vel;
+    c.advance(fl.rec.dt() * fl.clock, speed, pos, vel);
+    fl.tick(pos, vel, Eigen::Vector3d::Zero(), phase, s.step);
+    if (c.reached() && (s.fast || (fl.veh.position() - s.target).norm() <= P.radius)) break;
+  }
+  fl.rec.reached(s.step);
+  fl.hold(s.target, s.hold_s, phase, s.step);
+  fl.rec.completed(s.step);
+  return s.fast ? speed : 0.0;
+}
+
+// Flies a chain (chainFrom) from `here`: runs of straight legs as S-curve chains (flyChain), spline
+// legs as spline segments, joined at the speed both allow (AC_WPNav::set_spline_destination_next,
+// set_wp_destination_next); returns where the vehicle stops.
+Eigen::Vector3d flyRoute(Flight& fl, const std::vector<LegSpec>& legs, const Eigen::Vector3d& here, const Params& P,
+                         FlightPhase phase, double jerk) {
+  if (std::none_of(legs.begin(), legs.end(), [](const LegSpec& l) { return l.spline; }))
+    return flyChain(fl, legs, here, P, phase, jerk);
+  Eigen::Vector3d origin = here, in = Eigen::Vector3d::Zero();
+  double speed = 0.0, stale = 0.0;
+  for (std::size_t a = 0; a < legs.size();) {
+    if (legs[a].spline) {
+      detail::SplineCurve c = splineOf(legs, a, origin, in, P, jerk, stale);
+      speed = flySpline(fl, c, legs[a], P, phase, speed);
+      stale = c.destinationSpeedMax();
+      in = legs[a].fast ? c.destinationTangent() : Eigen::Vector3d::Zero();
+      origin = legs[a].target;
+      ++a;
+      continue;
+    }
+    std::size_t b = a;
+    while (b + 1 < legs.size() && !legs[b + 1].spline) ++b;
+    const Eigen::Vector3d leg_origin = b > a ? legs[b - 1].target : origin;
+    double v_end = 0.0;
+    if (b + 1 < legs.size()) v_end = splineOf(legs, b + 1, legs[b].target, legs[b].target - leg_origin, P, jerk, stale).originSpeedMax();
+    flyChain(fl, {legs.begin() + static_cast<std::ptrdiff_t>(a), legs.begin() + static_cast<std::ptrdiff_t>(b) + 1}, origin, P, phase,
+             jerk, speed, v_end, &speed);
+    in = legs[b].fast ? Eigen::Vector3d(legs[b].target - leg_origin) : Eigen::Vector3d::Zero();
+    origin = legs[b].target;
+    a = b + 1;
+  }
+  return origin;
 }
 
 // The waypoints from step k on that the vehicle flies without stopping, up to the first stop.
@@ -252,7 +345,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       ++k;
     } else if (isFlownTo(st)) {
       const std::vector<LegSpec> legs = chainFrom(steps, k, here, P, s.stop_at_waypoints);
-      here = flyChain(fl, legs, here, P, phase, P.jerk);
+      here = flyRoute(fl, legs, here, P, phase, P.jerk);
       k += legs.size();
     } else if (st.kind == NavStep::Kind::Delay) {
       rec.reached(ki);

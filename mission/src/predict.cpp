@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "wattswath/mission/files.hpp"
+
 namespace wattswath::mission {
 namespace {
 
@@ -83,6 +85,16 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   }
   if (!(s.energy_margin >= 0.0 && s.energy_margin <= 1.0)) {
     throw std::invalid_argument("energy margin " + std::to_string(s.energy_margin) + ", expected 0..1");
+  }
+  // PX4 has no NAV_SPLINE_WAYPOINT: its mission upload answers MAV_MISSION_UNSUPPORTED and keeps
+  // nothing (mavlink_mission.cpp, parse_mavlink_mission_item), so such a mission is never flown.
+  if (autopilot.family == AutopilotFamily::PX4) {
+    for (const MissionItem& it : m.items) {
+      if (it.command != static_cast<int>(Command::NavSplineWaypoint)) continue;
+      throw MissionError(it.where + ": NAV_SPLINE_WAYPOINT (82): PX4 refuses a mission that holds one (the upload is answered "
+                         "MAV_MISSION_UNSUPPORTED and no item is kept), so it cannot be flown; write NAV_WAYPOINT (16) for a "
+                         "PX4 vehicle");
+    }
   }
   MissionPrediction p;
   p.warnings = m.warnings;

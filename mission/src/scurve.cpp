@@ -150,7 +150,9 @@ void SCurveProfile::pushPhase(int& i, double tj, double jerk, double t2, double 
   pushJerkRamp(i, tj, -jerk, t2);
 }
 
-SCurveProfile SCurveProfile::restToRest(double length, const SCurveLimits& limits) {
+SCurveProfile SCurveProfile::restToRest(double length, const SCurveLimits& limits) { return between(length, 0.0, 0.0, limits); }
+
+SCurveProfile SCurveProfile::between(double length, double origin_speed, double destination_speed, const SCurveLimits& limits) {
   checkLimit("speed", limits.speed);
   checkLimit("accel", limits.accel);
   checkLimit("jerk", limits.jerk);
@@ -158,25 +160,37 @@ SCurveProfile SCurveProfile::restToRest(double length, const SCurveLimits& limit
   if (!(length >= 0.0) || !std::isfinite(length)) {
     throw std::invalid_argument("S-curve leg length " + std::to_string(length) + " m, expected a finite value >= 0");
   }
+  if (!(origin_speed >= 0.0 && destination_speed >= 0.0 && std::isfinite(origin_speed) && std::isfinite(destination_speed))) {
+    throw std::invalid_argument("S-curve end speeds " + std::to_string(origin_speed) + " and " + std::to_string(destination_speed) +
+                                " m/s, expected finite values >= 0");
+  }
   SCurveProfile p;
   p.length_ = length;
   if (length == 0.0) return p;
-  const SpeedChange c = planSpeedChange(0.0, limits.speed, 0.5 * length, limits);
+  // The rest-to-rest peak speed Vm (SCurve::calculate_track), then each end's speed change from its
+  // own speed (at most Vm) to Vm within half the leg (set_origin_speed_max / set_destination_speed_max).
+  const SpeedChange rest = planSpeedChange(0.0, limits.speed, 0.5 * length, limits);
+  const double vm = extentOf(rest, 0.0).speed_gain;
+  const double v0 = std::min(origin_speed, vm), v1 = std::min(destination_speed, vm);
+  const SpeedChange up = v0 > 0.0 ? planSpeedChange(v0, vm, 0.5 * length, limits) : rest;
+  const SpeedChange down = v1 > 0.0 ? planSpeedChange(v1, vm, 0.5 * length, limits) : rest;
+  p.end_vel_[0] = v0;
   int i = 1;
-  p.pushPhase(i, c.tj, c.jerk, c.t2, c.t4);
+  p.pushPhase(i, up.tj, up.jerk, up.t2, up.t4);
   p.end_acc_[kAccelEnd] = 0.0;  // rounding of the ramps
   const double v = p.end_vel_[kAccelEnd];
-  const double cruise = v > 0.0 ? std::max(0.0, (length - 2.0 * p.end_pos_[kAccelEnd]) / v) : 0.0;
+  const double down_distance = extentOf(down, v1).distance;
+  const double cruise = v > 0.0 ? std::max(0.0, (length - p.end_pos_[kAccelEnd] - down_distance) / v) : 0.0;
   p.push(i, Kind::ConstJerk, cruise, 0.0);
-  p.pushPhase(i, c.tj, -c.jerk, c.t2, c.t4);
+  p.pushPhase(i, down.tj, -down.jerk, down.t2, down.t4);
   p.end_acc_[kSegments - 1] = 0.0;
-  p.end_vel_[kSegments - 1] = 0.0;
+  p.end_vel_[kSegments - 1] = v1;
   return p;
 }
 
 TrackState SCurveProfile::at(double t) const {
-  if (!(t > 0.0)) return {0.0, 0.0, 0.0};
-  if (t >= duration()) return {length_, 0.0, 0.0};
+  if (!(t > 0.0)) return {0.0, end_vel_[0], 0.0};
+  if (t >= duration()) return {length_, end_vel_[kSegments - 1], 0.0};
   int i = 1;
   while (i < kSegments - 1 && t >= end_time_[i]) ++i;
   const State prev{end_acc_[i - 1], end_vel_[i - 1], end_pos_[i - 1]};

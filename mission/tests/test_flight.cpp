@@ -6,53 +6,14 @@
 
 #include <cmath>
 
+#include "flight_test_util.hpp"
 #include "wattswath/mission/flight.hpp"
 #include "wattswath/mission/scurve.hpp"
 
 using namespace wattswath::mission;
+using wattswath::mission::testing::localMission;
+using wattswath::mission::testing::minSpeedBetween;
 
-namespace {
-
-// A mission in local metres: home at the origin of a frame, waypoints given as ENU offsets.
-Mission localMission(const std::vector<Eigen::Vector3d>& wps, double hold_s = 0.0, double speed = 0.0, bool rtl = true) {
-  const wattswath::geometry::GeoPoint home{43.7, 10.4, 0.0};
-  const wattswath::geometry::LocalFrame frame(home);
-  Mission m;
-  m.source = "test";
-  m.home = home;
-  m.home_known = true;
-  int seq = 1;
-  auto add = [&](int cmd, const Eigen::Vector3d& p, double p1 = 0.0, double p2 = 0.0, int frame_no = 3) {
-    MissionItem it;
-    it.seq = seq++;
-    it.command = cmd;
-    it.frame = frame_no;
-    it.param[0] = p1;
-    it.param[1] = p2;
-    if (p.head<2>().norm() > 0.0 || cmd == 16) {
-      const auto g = frame.toGeodetic({p.x(), p.y()});
-      it.lat_deg = g.lat_deg;
-      it.lon_deg = g.lon_deg;
-    }
-    it.alt_m = p.z();
-    it.where = "test item " + std::to_string(it.seq);
-    m.items.push_back(it);
-  };
-  add(22, {0, 0, wps.front().z()});
-  if (speed > 0.0) add(178, {0, 0, 0}, 1.0, speed, 2);
-  for (const auto& w : wps) add(16, w, hold_s);
-  if (rtl) add(20, {0, 0, 0}, 0, 0, 2);
-  return m;
-}
-
-double minSpeedBetween(const FlownMission& f, double t0, double t1) {
-  double v = 1e9;
-  for (const auto& s : f.samples)
-    if (s.t >= t0 && s.t <= t1) v = std::min(v, s.velocity.norm());
-  return v;
-}
-
-}  // namespace
 
 TEST(SCurve, LongLegReachesSpeedWithTheDerivedRamps) {
   // ArduCopter 4.x defaults: V 10 m/s, A 2.5 m/s^2, J 1 m/s^3, snap 5.236 m/s^4 -> tj = 0.3 s;
@@ -88,6 +49,24 @@ TEST(SCurve, ShortLegNeverReachesItsSpeedAndStillEndsAtRestOnTheTarget) {
       prev = p.at(t).pos;
     }
   }
+}
+
+TEST(SCurve, ALegJoinedAtSpeedKeepsTheRestToRestPeakAndEndsAtItsSpeeds) {
+  // ArduCopter's SCurve::set_origin_speed_max / set_destination_speed_max: the peak stays the
+  // rest-to-rest one; each end's speed change starts (or ends) at its own speed, so it is shorter.
+  const SCurveLimits lim{10.0, 2.5, 1.0, 1.0 * M_PI / 0.3 * 0.5};
+  const SCurveProfile rest = SCurveProfile::restToRest(200.0, lim);
+  const SCurveProfile joined = SCurveProfile::between(200.0, 4.0, 6.0, lim);
+  EXPECT_NEAR(joined.at(0.0).vel, 4.0, 1e-12);
+  EXPECT_NEAR(joined.at(joined.duration()).vel, 6.0, 1e-12);
+  EXPECT_NEAR(joined.at(joined.duration() - 1e-6).vel, 6.0, 1e-4);  // continuous at the end
+  EXPECT_NEAR(joined.at(joined.duration()).pos, 200.0, 1e-9);
+  EXPECT_NEAR(joined.peakSpeed(), rest.peakSpeed(), 1e-6);
+  EXPECT_LT(joined.duration(), rest.duration());
+  // End speeds above the peak are cut to it; negative ones are an error.
+  const SCurveProfile short_leg = SCurveProfile::between(10.0, 20.0, 20.0, lim);
+  EXPECT_NEAR(short_leg.at(0.0).vel, SCurveProfile::restToRest(10.0, lim).peakSpeed(), 1e-9);
+  EXPECT_THROW(SCurveProfile::between(10.0, -1.0, 0.0, lim), std::invalid_argument);
 }
 
 TEST(SCurve, RejectsLimitsThatAreNotPositive) {

@@ -39,6 +39,9 @@ struct AutopilotConfig {
 /// The family's documented defaults (autopilot units), by parameter name.
 const std::map<std::string, double>& defaultParameters(AutopilotFamily f);
 
+/// True when firmware version `version` ("4.5.7", "V3.3.3") is at least `major`.`minor`.
+bool versionAtLeast(const std::string& version, int major, int minor);
+
 /// Family of a firmware name and version: ArduCopter < 4.1 is the leash model, 4.1 and later the
 /// S-curve model, PX4 the PX4 model; throws std::invalid_argument naming both for anything else.
 AutopilotFamily familyOf(const std::string& firmware, const std::string& version);

@@ -36,10 +36,15 @@ class SCurveProfile {
   /// The profile of a leg of `length` [m] from rest to rest under `limits`; throws
   /// std::invalid_argument when a limit is not positive and finite or the length is negative.
   static SCurveProfile restToRest(double length, const SCurveLimits& limits);
+  /// The profile of a leg of `length` [m] that starts at `origin_speed` and ends at
+  /// `destination_speed` [m/s] (each at most the rest-to-rest peak speed), as ArduCopter joins a
+  /// straight leg to a spline (SCurve::set_origin_speed_max / set_destination_speed_max): the
+  /// rest-to-rest peak is kept and each end's speed change starts (or ends) at its own speed.
+  static SCurveProfile between(double length, double origin_speed, double destination_speed, const SCurveLimits& limits);
 
   /// State at time `t` [s] after the start (clamped to [0, duration()]).
   TrackState at(double t) const;
-  /// Total time from rest to rest [s].
+  /// Total time from start to end [s].
   double duration() const { return end_time_[kSegments - 1]; }
   /// Time at which the acceleration phase ends and constant speed begins [s].
   double accelEndTime() const { return end_time_[kAccelEnd]; }

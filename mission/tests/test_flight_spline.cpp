@@ -1,0 +1,115 @@
+// NAV_SPLINE_WAYPOINT as ArduCopter 4.x flies it (AP_Math/SplineCurve.cpp, AC_WPNav): between two
+// stops a spline is the straight line flown at half the acceleration limit; through spline
+// waypoints the path is the Hermite curve, taken within half the acceleration limit sideways; a
+// straight leg and a spline meet at a speed, on the waypoint, without a stop or a cut corner.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "flight_test_util.hpp"
+#include "wattswath/mission/flight.hpp"
+
+using namespace wattswath::mission;
+using wattswath::mission::testing::localMission;
+using wattswath::mission::testing::minSpeedBetween;
+
+namespace {
+
+// The autopilot's target alone (the vehicle on it), for hand-worked paths and speeds.
+FlightSettings onTarget() {
+  FlightSettings s;
+  s.airframe.track = false;
+  return s;
+}
+
+// [m] How close the flight passes `p`.
+double closestTo(const FlownMission& f, const Eigen::Vector3d& p) {
+  double d = 1e9;
+  for (const auto& s : f.samples) d = std::min(d, (s.position - p).norm());
+  return d;
+}
+
+// [m/s^2] The largest acceleration across the direction of travel between `t0` and `t1` [s], from
+// the samples' velocities (central differences).
+double largestLateralAcceleration(const FlownMission& f, double t0, double t1) {
+  double a_max = 0.0;
+  for (std::size_t i = 1; i + 1 < f.samples.size(); ++i) {
+    const auto& s = f.samples[i];
+    if (s.t < t0 || s.t > t1 || s.velocity.norm() < 0.5) continue;
+    const Eigen::Vector3d a = (f.samples[i + 1].velocity - f.samples[i - 1].velocity) / (f.samples[i + 1].t - f.samples[i - 1].t);
+    const Eigen::Vector3d u = s.velocity.normalized();
+    a_max = std::max(a_max, (a - a.dot(u) * u).norm());
+  }
+  return a_max;
+}
+
+}  // namespace
+
+TEST(ArduCopterSpline, BetweenTwoStopsItIsTheStraightLineAtHalfTheAccelerationLimit) {
+  // Zero tangents at both ends (from a stop, to a 3 s hold): the Hermite curve is the chord. The
+  // target speeds up at 0.5 x WPNAV_ACCEL = 1.25 m/s^2 to 10 m/s (8 s, 40 m), cruises 120 m (12 s)
+  // and brakes on sqrt(2 x 1.25 x distance left) (8 s): 28 s for 200 m in continuous time. Stepped
+  // at 0.01 s, the braking law is evaluated where the target was a step before and it arrives
+  // earlier (27.54 s for this 1-D law by hand at 0.01 s).
+  const Mission m = localMission({{200, 0, 10}}, 3.0, 0.0, true, 82);
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, onTarget());
+  const double leg_s = f.events[1].reached_s - f.events[0].completed_s;
+  EXPECT_GT(leg_s, 27.5);
+  EXPECT_LT(leg_s, 28.0);
+  EXPECT_NEAR(f.events[1].completed_s - f.events[1].reached_s, 3.0, 0.02);
+  double off_line = 0.0, v_max = 0.0, a_max = 0.0;
+  for (std::size_t i = 1; i < f.samples.size(); ++i) {
+    const auto& s = f.samples[i];
+    if (s.t < f.events[0].completed_s || s.t > f.events[1].reached_s) continue;
+    off_line = std::max(off_line, std::abs(s.position.y()));
+    v_max = std::max(v_max, s.velocity.norm());
+    a_max = std::max(a_max, std::abs(s.velocity.norm() - f.samples[i - 1].velocity.norm()) / (s.t - f.samples[i - 1].t));
+  }
+  EXPECT_LT(off_line, 1e-6);
+  EXPECT_NEAR(v_max, 10.0, 1e-6);
+  EXPECT_LT(a_max, 1.25 + 1e-6);
+  EXPECT_GT(a_max, 1.2);
+}
+
+TEST(ArduCopterSpline, ThroughSplineWaypointsTheCurveIsFlownAtSpeedAndTheLateralShareMatters) {
+  // Tangent at each inner waypoint: next minus previous (AC_WPNav::set_spline_destination).
+  const std::vector<Eigen::Vector3d> wps{{0, 100, 10}, {100, 100, 10}, {100, 0, 10}, {200, 0, 10}};
+  const Mission m = localMission(wps, 0.0, 0.0, true, 82);
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, onTarget());
+  for (const auto& w : wps) EXPECT_LT(closestTo(f, w), 0.6) << w.transpose();  // samples 0.1 s apart
+  const double t0 = f.events[1].reached_s, t3 = f.events[4].reached_s;
+  EXPECT_GT(minSpeedBetween(f, t0 + 0.5, t3 - 8.0), 3.0);  // flown through; the last one is a stop (RTL next)
+  // The curvature caps the speed at 0.5 x WPNAV_ACCEL sideways, but the speed may fall only at
+  // 0.5 x WPNAV_ACCEL along the curve and SplineCurve does not look ahead: where the curve
+  // tightens the target runs above its cap for a moment (within the 2.5 m/s^2 limit here).
+  const double lateral = largestLateralAcceleration(f, t0, t3);
+  EXPECT_GT(lateral, 1.0);
+  EXPECT_LT(lateral, 2.5);
+  // Longer than the polyline (300 m): the curves swing out.
+  double path = 0.0;
+  for (std::size_t i = 1; i < f.samples.size(); ++i)
+    if (f.samples[i].t > t0 && f.samples[i].t <= t3) path += (f.samples[i].position - f.samples[i - 1].position).norm();
+  EXPECT_GT(path, 310.0);
+  // Before ArduPilot 4.2 the curvature could use the whole acceleration limit: faster through and
+  // harder sideways.
+  AutopilotConfig old;
+  old.version = "4.1.5";
+  const FlownMission f41 = flyMission(sequenceMission(m), old, onTarget());
+  const double t0_41 = f41.events[1].reached_s, t3_41 = f41.events[4].reached_s;
+  EXPECT_LT(t3_41 - t0_41, t3 - t0 - 1.0);
+  EXPECT_GT(largestLateralAcceleration(f41, t0_41, t3_41), lateral);
+}
+
+TEST(ArduCopterSpline, AStraightLegMeetsASplineOnItsWaypointAtSpeed) {
+  // 100 m east (a waypoint), a spline to (200, 50), a waypoint at (300, 50): the straight leg ends
+  // on its waypoint at the speed the spline can start at, without a stop and without the corner
+  // blend two straight legs would get (which cuts it by about WPNAV_RADIUS).
+  const std::vector<Eigen::Vector3d> wps{{100, 0, 10}, {200, 50, 10}, {300, 50, 10}};
+  Mission m = localMission(wps);
+  m.items[2].command = 82;  // take-off, waypoint, spline, waypoint, RTL
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, onTarget());
+  EXPECT_LT(closestTo(f, wps[0]), 0.5);
+  EXPECT_GT(minSpeedBetween(f, f.events[1].reached_s - 3.0, f.events[2].reached_s), 2.0);
+  const FlownMission straight = flyMission(sequenceMission(localMission(wps)), AutopilotConfig{}, onTarget());
+  EXPECT_GT(closestTo(straight, wps[0]), 1.0);
+}
