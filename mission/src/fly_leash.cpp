@@ -12,6 +12,7 @@
 #include <string>
 
 #include "flight_internal.hpp"
+#include "spline_curve.hpp"
 
 namespace wattswath::mission {
 namespace {
@@ -236,6 +237,14 @@ void xyController(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, con
   veh.a_cmd = a_cmd;
 }
 
+// What a 3.x spline segment hands to the next (AC_WPNav keeps them across segments).
+struct SplineCarry {
+  bool active = false;  // the last segment was a spline flown through (SEGMENT_SPLINE, not stopped)
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();  // its destination tangent, unscaled [m]
+  double time = 0.0;    // [-] its curve parameter at the end (may pass 1 by a step)
+  double scaler = 0.0;  // [m/s] _spline_vel_scaler: the target's speed
+};
+
 struct Flyer {
   Recorder& rec;
   const Params& P;
@@ -269,6 +278,64 @@ struct Flyer {
       if (carrot_there && (fast || (veh.p - to).norm() <= P.radius)) return g.length > 1e-9 ? g.carrot() : to;
     }
   }
+  // A spline segment (AC_WPNav::set_spline_origin_and_destination, advance_spline_target_along_track
+  // of 3.x) from where the target is to `to`, entered along `in` and left along `out` (zero
+  // vectors: a stop there, for which ArduPilot takes the chord x 0.02: "0.02 * distance vector");
+  // `carry` continues the last spline's parameter and speed when `in` comes from it. The target
+  // speeds up at WPNAV_ACCEL while the leash has slack, up to WPNAV_SPEED; a stop brakes on
+  // sqrt(2 WPNAV_ACCEL d) within track speed^2 / 4 track accel; the curve parameter moves by
+  // speed / |P'| x dt. Reached when the parameter reaches 1; returns where the target then is.
+  Eigen::Vector3d spline(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const Eigen::Vector3d& in,
+                         const Eigen::Vector3d& out, double speed, FlightPhase phase, int step, SplineCarry& carry) {
+    const bool stop = out.isZero();
+    const Eigen::Vector3d at_rest = (to - from) * 0.02;
+    const detail::HermiteSegment c(from, to, in.isZero() ? at_rest : in, stop ? at_rest : out);
+    double t = 0.0, scaler = 0.0;
+    if (carry.active) {  // from a spline flown through: its leftover parameter and speed
+      t = carry.time > 1.0 && carry.time < 1.1 ? carry.time - 1.0 : 0.0;
+      scaler = carry.scaler;
+    } else if (!in.isZero()) {  // from a straight leg flown through: the position controller's speed
+      scaler = veh.v_cmd_prev.norm();
+    }
+    Eigen::Vector3d target = from;
+    leash_speed = speed;
+    veh.freeze_ff = true;  // new_wp_destination: the feed-forward is frozen once
+    while (true) {
+      const double nav_dt = navStep(veh, P, rec.dt());
+      if (nav_dt > 0.0 && t < 1.0) {
+        const Eigen::Vector3d pos = c.at(t), vel = c.d1(t);
+        const double vel_len = vel.norm();
+        if (vel_len < 1e-12) {
+          t = 1.0;  // 3.6 and later: a curve with no direction is reached
+        } else {
+          const Eigen::Vector3d u = vel / vel_len;
+          const double track_speed = detail::kinematicLimit(u, speed, P.speed_up, P.speed_dn);
+          const double track_accel = detail::kinematicLimit(u, P.accel, P.accel_z, P.accel_z);
+          const double leash = std::min(detail::kinematicLimit(u, leashLength(speed, P.accel, P.pos_xy_p), 1e300, 1e300),
+                                        detail::kinematicLimit(u, 1e300, P.leash_up, P.leash_dn));
+          const Eigen::Vector3d err = veh.p - pos;
+          const double leash_xy = leashLength(speed, P.accel, P.pos_xy_p), leash_z = err.z() >= 0.0 ? P.leash_up : P.leash_dn;
+          const double slack = std::max(0.0, std::min(leash * (leash_z - std::abs(err.z())) / leash_z,
+                                                       leash * (leash_xy - err.head<2>().norm()) / leash_xy));
+          const double vel_limit = std::min(speed, slack / nav_dt);
+          const double dist = (to - pos).norm();
+          if (stop && dist < track_speed * track_speed / (4.0 * track_accel)) {
+            scaler = std::sqrt(2.0 * P.accel * dist);
+          } else if (scaler < vel_limit) {
+            scaler += P.accel * nav_dt;
+          }
+          scaler = std::clamp(scaler, 0.0, vel_limit);
+          target = pos;
+          t += scaler / vel_len * nav_dt;
+        }
+      }
+      chase(veh, target, speed, P, af, rec.dt(), nav_dt);
+      rec.tick(veh.p, veh.v, phase, step);
+      if (t >= 1.0) break;
+    }
+    carry = {!stop, out, t, scaler};
+    return target;
+  }
   // Hovers at `at` for `seconds`, the vehicle still converging on it.
   void hold(const Eigen::Vector3d& at, double seconds, double speed, FlightPhase phase, int step) {
     const long n = std::lround(seconds / rec.dt());
@@ -278,6 +345,17 @@ struct Flyer {
     }
   }
 };
+
+// The exit tangent of the spline to steps[k] flown from `origin` (Copter::do_spline_wp's segment
+// end type): along the next leg when a waypoint follows without a hold, towards the next point
+// from the origin when a spline follows, else zero (a stop).
+Eigen::Vector3d splineExit(const std::vector<NavStep>& steps, std::size_t k, const Eigen::Vector3d& origin, bool stop_all) {
+  if (stop_all || steps[k].hold_s > 0.0 || k + 1 >= steps.size() || !steps[k + 1].has_position) return Eigen::Vector3d::Zero();
+  const NavStep& next = steps[k + 1];
+  if (next.kind == NavStep::Kind::Waypoint) return next.target - steps[k].target;
+  if (next.kind == NavStep::Kind::SplineWaypoint) return next.target - origin;
+  return Eigen::Vector3d::Zero();
+}
 
 void land(Recorder& rec, const Params& P, int step, const FlightSettings& s) {
   const double alt_low = std::max(P.land_alt_low, 1.0);
@@ -295,6 +373,8 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
   Flyer f{rec, P, s.airframe, {}, P.speed};  // wp_and_spline_init sets the leash from WPNAV_SPEED
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  // where the carrot is
   double speed = P.speed;  // DO_CHANGE_SPEED overwrites WPNAV_SPEED in memory (RTL inherits it)
+  SplineCarry carry;
+  Eigen::Vector3d straight_in = Eigen::Vector3d::Zero();  // the last straight leg, when flown through
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const NavStep& st = steps[k];
     const int ki = static_cast<int>(k);
@@ -303,12 +383,24 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
       const Eigen::Vector3d top(target.x(), target.y(), std::max(st.target.z(), 1.0));
       f.leg(target, top, speed, false, FlightPhase::Takeoff, ki);
       target = top;
+    } else if (st.kind == NavStep::Kind::SplineWaypoint && st.has_position) {
+      const Eigen::Vector3d out = splineExit(steps, k, target, s.stop_at_waypoints);
+      const Eigen::Vector3d in = carry.active ? carry.out : straight_in;
+      const Eigen::Vector3d end = f.spline(target, st.target, in, out, speed, FlightPhase::Mission, ki, carry);
+      rec.reached(ki);
+      f.hold(st.target, st.hold_s, speed, FlightPhase::Mission, ki);
+      target = out.isZero() ? st.target : end;
+      straight_in.setZero();
     } else if (isFlownTo(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : target;
       const bool fast = st.kind != NavStep::Kind::LoiterTime && st.hold_s <= 0.0 && !s.stop_at_waypoints;
       const Eigen::Vector3d carrot = f.leg(target, to, speed, fast, FlightPhase::Mission, ki);
       rec.reached(ki);
       f.hold(to, st.hold_s, speed, FlightPhase::Mission, ki);
+      // A spline next enters along this leg when it was flown through (Copter::do_spline_wp: the
+      // previous command a waypoint without a hold).
+      straight_in = fast && st.kind == NavStep::Kind::Waypoint ? Eigen::Vector3d(to - target) : Eigen::Vector3d::Zero();
+      carry = {};
       target = fast ? carrot : to;  // AC_WPNav::set_wp_destination starts the next leg where the carrot is
     } else if (st.kind == NavStep::Kind::Delay) {
       rec.reached(ki);
@@ -336,6 +428,10 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
       land(rec, P, ki, s);
     }
     if (st.kind == NavStep::Kind::Takeoff) rec.reached(ki);
+    if (!isFlownTo(st)) {  // a spline after these starts from a stop
+      carry = {};
+      straight_in.setZero();
+    }
     rec.completed(ki);
   }
   if (f.late_increases > 0) {

@@ -1,4 +1,4 @@
-// ArduCopter 4.x spline segments (spline_curve.hpp).
+// ArduCopter spline segments and the 4.x target along them (spline_curve.hpp).
 #include "spline_curve.hpp"
 
 #include <algorithm>
@@ -14,19 +14,14 @@ constexpr double kTangential = 0.5;     // share of the acceleration limit along
 
 }  // namespace
 
-SplineCurve::SplineCurve(const Eigen::Vector3d& origin, const Eigen::Vector3d& destination, const Eigen::Vector3d& origin_tangent,
-                         const Eigen::Vector3d& destination_tangent, const SplineLimits& limits, double previous_arrival_max)
-    : destination_(destination), destination_tangent_(destination_tangent), lim_(limits) {
+HermiteSegment::HermiteSegment(const Eigen::Vector3d& origin, const Eigen::Vector3d& destination, Eigen::Vector3d v0,
+                               Eigen::Vector3d v1) {
   const Eigen::Vector3d chord = destination - origin;
-  zero_length_ = chord.squaredNorm() < 1e-12;
-  if (zero_length_) {
+  if (chord.squaredNorm() < 1e-12) {
     for (auto& h : h_) h.setZero();
     h_[0] = destination;
-    time_ = 1.0;
-    reached_ = true;
     return;
   }
-  Eigen::Vector3d v0 = origin_tangent, v1 = destination_tangent;
   const double vel_len = v0.norm() + v1.norm(), pos_len = kSplineFactor * chord.norm();
   if (vel_len > pos_len) {
     v0 *= pos_len / vel_len;
@@ -36,6 +31,20 @@ SplineCurve::SplineCurve(const Eigen::Vector3d& origin, const Eigen::Vector3d& d
   h_[1] = v0;
   h_[2] = -3.0 * origin - 2.0 * v0 + 3.0 * destination - v1;
   h_[3] = 2.0 * origin + v0 - 2.0 * destination + v1;
+}
+
+SplineCurve::SplineCurve(const Eigen::Vector3d& origin, const Eigen::Vector3d& destination, const Eigen::Vector3d& origin_tangent,
+                         const Eigen::Vector3d& destination_tangent, const SplineLimits& limits, double previous_arrival_max)
+    : destination_(destination),
+      destination_tangent_(destination_tangent),
+      curve_(origin, destination, origin_tangent, destination_tangent),
+      lim_(limits) {
+  zero_length_ = (destination - origin).squaredNorm() < 1e-12;
+  if (zero_length_) {
+    time_ = 1.0;
+    reached_ = true;
+    return;
+  }
   // SplineCurve::set_origin_and_destination: the origin limit is computed with the arrival limit
   // the object still holds; the arrival limit is computed into that same variable (an alias), so
   // its stopping-distance clause reads the curvature limit just found and leaves it unchanged.
@@ -43,16 +52,12 @@ SplineCurve::SplineCurve(const Eigen::Vector3d& origin, const Eigen::Vector3d& d
   destination_speed_max_ = destination_tangent.isZero() ? 0.0 : step(1.0, 0.0, 1e300).speed_max;
 }
 
-Eigen::Vector3d SplineCurve::at(double t) const { return h_[0] + t * (h_[1] + t * (h_[2] + t * h_[3])); }
-
 void SplineCurve::limitDestinationSpeed(double speed) { destination_speed_max_ = std::min(destination_speed_max_, speed); }
 
 SplineCurve::Step SplineCurve::step(double t, double distance, double arrival_max) const {
   Step s;
-  s.pos = at(t);
-  const Eigen::Vector3d d1 = h_[1] + 2.0 * t * h_[2] + 3.0 * t * t * h_[3];
-  const Eigen::Vector3d d2 = 2.0 * h_[2] + 6.0 * t * h_[3];
-  const Eigen::Vector3d d3 = 6.0 * h_[3];
+  s.pos = curve_.at(t);
+  const Eigen::Vector3d d1 = curve_.d1(t), d2 = curve_.d2(t), d3 = curve_.d3();
   const double d1n = d1.norm();
   if (d1n > 0.0) {
     s.unit = d1 / d1n;

@@ -1,12 +1,33 @@
 #pragma once
-// Private to mission/src: the path ArduCopter 4.1 and later flies to a NAV_SPLINE_WAYPOINT, our own
-// implementation of its SplineCurve (libraries/AP_Math/SplineCurve.cpp, docs/autopilots.md): a
+// Private to mission/src: the path ArduCopter flies to a NAV_SPLINE_WAYPOINT (HermiteSegment), and
+// how 4.1 and later move the target along it, our own implementation of its SplineCurve (libraries/AP_Math/SplineCurve.cpp, docs/autopilots.md): a
 // cubic Hermite curve from origin to destination whose end tangents come from the neighbouring
 // waypoints, and a target that moves along it at the speed the curvature, the speed limits and the
 // distance left to stop allow, changing speed by at most half the acceleration limit.
 #include <Eigen/Core>
 
 namespace wattswath::mission::detail {
+
+/// The cubic Hermite segment ArduCopter flies to a spline waypoint (3.x AC_WPNav and 4.x
+/// SplineCurve alike): from `origin` to `destination` [m] with end tangents [m per unit of the
+/// curve parameter], both scaled down together when their lengths add to more than 4 x the chord.
+class HermiteSegment {
+ public:
+  /// The segment; a zero chord is a point (every derivative zero).
+  HermiteSegment(const Eigen::Vector3d& origin, const Eigen::Vector3d& destination, Eigen::Vector3d origin_tangent,
+                 Eigen::Vector3d destination_tangent);
+  /// [m] The point at parameter `t` in [0, 1].
+  Eigen::Vector3d at(double t) const { return h_[0] + t * (h_[1] + t * (h_[2] + t * h_[3])); }
+  /// [m] dP/dt at `t`.
+  Eigen::Vector3d d1(double t) const { return h_[1] + 2.0 * t * h_[2] + 3.0 * t * t * h_[3]; }
+  /// [m] d2P/dt2 at `t`.
+  Eigen::Vector3d d2(double t) const { return 2.0 * h_[2] + 6.0 * t * h_[3]; }
+  /// [m] d3P/dt3.
+  Eigen::Vector3d d3() const { return 6.0 * h_[3]; }
+
+ private:
+  Eigen::Vector3d h_[4];  // P(t) = h0 + h1 t + h2 t^2 + h3 t^3
+};
 
 /// Limits of one spline segment, SI units.
 struct SplineLimits {
@@ -51,7 +72,7 @@ class SplineCurve {
   };
   Step step(double t, double distance, double arrival_max) const;
   Eigen::Vector3d destination_, destination_tangent_;
-  Eigen::Vector3d h_[4];  // P(t) = h0 + h1 t + h2 t^2 + h3 t^3
+  HermiteSegment curve_;
   SplineLimits lim_;
   double time_ = 0.0, origin_speed_max_ = 0.0, destination_speed_max_ = 0.0;
   bool reached_ = false, zero_length_ = false;

@@ -113,3 +113,49 @@ TEST(ArduCopterSpline, AStraightLegMeetsASplineOnItsWaypointAtSpeed) {
   const FlownMission straight = flyMission(sequenceMission(localMission(wps)), AutopilotConfig{}, onTarget());
   EXPECT_GT(closestTo(straight, wps[0]), 1.0);
 }
+
+namespace {
+
+AutopilotConfig arduCopter33() {
+  AutopilotConfig ap;
+  ap.firmware = "ArduCopter";
+  ap.version = "3.3";
+  ap.family = familyOf(ap.firmware, ap.version);
+  return ap;
+}
+
+}  // namespace
+
+TEST(ArduCopterLeashSpline, BetweenTwoStopsTheTargetRampsAtWpnavAccelAndBrakesOnTheSquareRootLaw) {
+  // 3.3 defaults: WPNAV_SPEED 5 m/s, WPNAV_ACCEL 1 m/s^2. The target speeds up at 1 m/s^2 (5 s,
+  // 12.5 m), cruises, and within 5^2 / (4 x 1) = 6.25 m of the stop drops to sqrt(2 x 1 x d)
+  // (3.54 m/s at once, then 3.54 s to the point): 5 + 181.25 / 5 + 3.54 = 44.8 s for 200 m on
+  // the chord (both tangents the chord x 0.02), give or take the 0.1 s navigation clock.
+  const Mission m = localMission({{200, 0, 10}}, 3.0, 0.0, true, 82);
+  const FlownMission f = flyMission(sequenceMission(m), arduCopter33());
+  EXPECT_NEAR(f.events[1].reached_s - f.events[0].completed_s, 44.8, 0.7);
+  double off_line = 0.0, v_max = 0.0;
+  for (const auto& s : f.samples) {
+    if (s.t < f.events[0].completed_s || s.t > f.events[1].reached_s) continue;
+    off_line = std::max(off_line, std::abs(s.position.y()));
+    v_max = std::max(v_max, s.velocity.norm());
+  }
+  EXPECT_LT(off_line, 0.01);
+  EXPECT_NEAR(v_max, 5.0, 0.2);
+}
+
+TEST(ArduCopterLeashSpline, ThroughSplineWaypointsItFollowsTheSameCurveAt3xSpeeds) {
+  // The same Hermite path as 4.x (tangents next minus previous), flown by a 3.x target that speeds
+  // up at WPNAV_ACCEL within its leash: it swings out past y = 100 like the curve and never stops.
+  const std::vector<Eigen::Vector3d> wps{{0, 100, 10}, {100, 100, 10}, {100, 0, 10}, {200, 0, 10}};
+  const Mission m = localMission(wps, 0.0, 0.0, true, 82);
+  const FlownMission f = flyMission(sequenceMission(m), arduCopter33());
+  const FlownMission target = flyMission(sequenceMission(m), AutopilotConfig{}, onTarget());
+  double y_max = 0.0, y_max_target = 0.0;
+  for (const auto& s : f.samples) y_max = std::max(y_max, s.position.y());
+  for (const auto& s : target.samples) y_max_target = std::max(y_max_target, s.position.y());
+  EXPECT_GT(y_max_target, 120.0);
+  EXPECT_NEAR(y_max, y_max_target, 3.0);
+  for (const auto& w : wps) EXPECT_LT(closestTo(f, w), 3.0) << w.transpose();
+  EXPECT_GT(minSpeedBetween(f, f.events[1].reached_s, f.events[3].reached_s), 3.0);
+}
