@@ -102,6 +102,8 @@ TEST(CliPredict, ASplineWaypointIsFlownByArduCopterAndRefusedForPx4) {
   // Longer than the 376 m of straight legs (20 m up, 100 m north, 97 m east, 139 m home, 20 m
   // down): the first spline leaves towards the second's destination and swings out.
   EXPECT_GT(j["distance_m"].get<double>(), 380.0);
+  // ... and says how far the curve leaves the straight lines a ground station shows.
+  EXPECT_NE(j["warnings"].dump().find("spline waypoints: the flight swings up to"), std::string::npos) << j["warnings"].dump();
   std::remove(path.c_str());
 }
 

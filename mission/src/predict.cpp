@@ -1,5 +1,6 @@
 #include "wattswath/mission/predict.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -76,6 +77,48 @@ void batteryAlong(const energy::Battery& b, const FlightPieces& fp, const std::v
   out.verdict = verdictText(out, r.endurance_s);
 }
 
+// [m] Distance of `p` from the segment from `a` to `b`.
+double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d d = b - a;
+  const double len2 = d.squaredNorm();
+  const double u = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + u * d)).norm();
+}
+
+// A warning when spline waypoints take the flight well off the straight lines between waypoints
+// (what a ground station's mission distance counts): how far, before which item, and how much
+// longer the curves are.
+std::string splineSwing(const Mission& m, const std::vector<NavStep>& steps, const FlownMission& f) {
+  double worst = 0.0, curves = 0.0, chords = 0.0;
+  int worst_item = -1;
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const NavStep& st = steps[k];
+    if (st.kind == NavStep::Kind::SplineWaypoint && st.has_position) {
+      chords += (st.target - from).norm();
+      const FlightSample* prev = nullptr;
+      for (const FlightSample& s : f.samples) {
+        if (s.step != static_cast<int>(k)) continue;
+        const double d = distanceToSegment(s.position, from, st.target);
+        if (d > worst) worst = d, worst_item = st.item;
+        if (prev) curves += (s.position - prev->position).norm();
+        prev = &s;
+      }
+    }
+    if (st.kind == NavStep::Kind::Takeoff) from = {from.x(), from.y(), st.target.z()};
+    else if (st.has_position && (isFlownTo(st) || st.kind == NavStep::Kind::Land)) from = st.target;
+  }
+  if (worst < 1.0 || worst_item < 0) return {};
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(1);
+  os << "spline waypoints: the flight swings up to " << worst << " m off the straight line between waypoints (on the way to item "
+     << m.items[worst_item].seq << ") and its curves are about " << std::max(0.0, curves - chords)
+     << " m longer than the straight lines a ground station's mission distance counts: check the curves against obstacles "
+        "and no-fly zones (--report draws them)";
+  return os.str();
+}
+
 }  // namespace
 
 MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
@@ -102,6 +145,7 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   FlightSettings fs = s.flight;
   if (s.airframe_from_vehicle) fs.airframe = airframeOfVehicle(v, v.name);
   p.flight = flyMission(steps, autopilot, fs);
+  if (const std::string swing = splineSwing(m, steps, p.flight); !swing.empty()) p.warnings.push_back(swing);
   p.pieces = toPieces(p.flight);
   p.breakdown = model.emptyBreakdown();
   p.piece_energy_j.resize(p.pieces.pieces.size());
