@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "median.hpp"
+#include "waypoint_passage.hpp"
 #include "number_text.hpp"
 #include "wattswath/calibration/replay.hpp"
 #include "wattswath/geometry/frame.hpp"
@@ -305,24 +306,13 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
     cum_e[i] = cum_e[i - 1] + (ok ? 0.5 * (power[i] + power[i - 1]) * (t[i] - t[i - 1]) : 0.0);
     cum_s[i] = cum_s[i - 1] + (pos[i] - pos[i - 1]).norm();
   }
-  std::vector<long> at_index;
+  std::vector<long> at_index;  // the sample closest to each passage (-1: unmatched)
   std::size_t from = 0;
   for (const auto& w : waypoints) {
-    double best = 1e300;
-    std::size_t at = from;
-    for (std::size_t i = from; i < t.size(); ++i) {
-      const double d = (pos[i].head<2>() - w.head<2>()).norm();
-      if (d < best) best = d, at = i;
-      if (best < match_m && d > best + 10.0) break;
-    }
-    if (best <= match_m) {
-      ft.passage_s.push_back(t[at] - t.front());
-      at_index.push_back(static_cast<long>(at));
-      from = at;
-    } else {
-      ft.passage_s.push_back(kNaN);
-      at_index.push_back(-1);
-    }
+    const detail::Passage pass = detail::waypointPassage(t, pos, w, from, match_m);
+    at_index.push_back(pass.index);
+    ft.passage_s.push_back(pass.index >= 0 ? pass.t - t.front() : kNaN);
+    if (pass.index >= 0) from = static_cast<std::size_t>(pass.index);
   }
   double first = kNaN, last = kNaN;
   for (std::size_t k = 0; k < ft.passage_s.size(); ++k) {
@@ -333,8 +323,11 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
     if (k > 0) {
       ft.leg_s.push_back(ft.passage_s[k] - ft.passage_s[k - 1]);
       const bool both = at_index[k] >= 0 && at_index[k - 1] >= 0;
-      ft.leg_energy_j.push_back(both ? cum_e[at_index[k]] - cum_e[at_index[k - 1]] : kNaN);
-      ft.leg_speed_mps.push_back(both && ft.leg_s.back() > 0.0 ? (cum_s[at_index[k]] - cum_s[at_index[k - 1]]) / ft.leg_s.back() : kNaN);
+      const double t0 = t.front() + ft.passage_s[k - 1], t1 = t.front() + ft.passage_s[k];
+      ft.leg_energy_j.push_back(both ? detail::interpolateAt(t, cum_e, t1) - detail::interpolateAt(t, cum_e, t0) : kNaN);
+      ft.leg_speed_mps.push_back(both && ft.leg_s.back() > 0.0
+                                     ? (detail::interpolateAt(t, cum_s, t1) - detail::interpolateAt(t, cum_s, t0)) / ft.leg_s.back()
+                                     : kNaN);
     }
   }
   ft.mission_s = std::isfinite(first) ? last - first : kNaN;

@@ -76,6 +76,37 @@ TEST(MissionCalibration, WaypointTheTrackNeverComesNearIsNotMatched) {
   EXPECT_NEAR(ft.leg_s[2], 20.0, 0.11);  // the matched neighbours still give their leg
 }
 
+// A stop at a waypoint is timed at the middle of the dwell, whatever the sampling: a 1 Hz log's
+// closest sample can be anywhere in a 3 s stop (the old estimator's +-1.5 s per passage made the
+// leg times of a flight with holds up to 30 % noisy), the dwell's entry and exit are interpolated.
+TEST(MissionCalibration, AStopIsTimedAtTheMiddleOfItsDwellWhateverTheSamplingPhase) {
+  // East at 5 m/s to (100, 0), stopped from t = 20 s to 23 s within 0.3 m of it, north at 5 m/s
+  // through (100, 100) at 43 s.
+  auto at = [](double time) -> Eigen::Vector3d {
+    if (time <= 20.0) return {5.0 * time, 0.0, 10.0};
+    if (time <= 23.0) return {100.0 + 0.3 * std::sin(4.0 * time), 0.3 * std::cos(3.0 * time) - 0.3, 10.0};
+    return {100.0, 5.0 * (time - 23.0), 10.0};
+  };
+  const std::vector<Eigen::Vector3d> w = {{100, 0, 10}, {100, 100, 10}};
+  for (double phase : {0.0, 0.25, 0.5, 0.75}) {
+    std::vector<double> t, power;
+    std::vector<Eigen::Vector3d> pos;
+    for (double time = phase; time <= 50.0; time += 1.0) {
+      t.push_back(time);
+      pos.push_back(at(time));
+      power.push_back(200.0);
+    }
+    const FlightTimes ft = flightTimes(t, pos, power, w);
+    ASSERT_EQ(ft.passage_s.size(), 2u);
+    // Into a sphere of 2 m beyond the closest approach at 19.6 s, out of it at 23.4 s.
+    EXPECT_NEAR(ft.passage_s[0] + t.front(), 21.5, 0.15) << "sampling phase " << phase;
+    // The next waypoint is flown through at 43 s: its passage is the closest approach.
+    EXPECT_NEAR(ft.passage_s[1] + t.front(), 43.0, 0.05) << "sampling phase " << phase;
+    ASSERT_EQ(ft.leg_energy_j.size(), 1u);
+    EXPECT_NEAR(ft.leg_energy_j[0], 200.0 * ft.leg_s[0], 1e-6);  // energy between the interpolated passages
+  }
+}
+
 namespace {
 
 // A 100 m square of fast waypoints at 6 m/s, 10 m up, near Pisa, then RTL.

@@ -79,7 +79,7 @@ void speedFigure(HtmlReport& r, const MissionReplayFlight& f, const std::string&
   }
   r.figure({"mission-speed" + suffix, renderSvg(c),
             "Speed along the path (3-D) of the logged flight and of the flight predicted from its mission file. Ticks: "
-            "the closest approach to each waypoint (its number), predicted along the top, measured along the bottom; "
+            "the passage of each waypoint (its number; the middle of a stop there), predicted along the top, measured along the bottom; "
             "where they drift apart the prediction runs ahead or behind."});
 }
 
@@ -138,8 +138,8 @@ void flightSection(HtmlReport& r, const MissionReplayFlight& f, const std::strin
                 "."});
   r.figure(
       {"mission-leg-time" + suffix, renderSvg(legBars(f, "Time per leg", {"time", "s"}, 1.0, false)),
-       "Time of each leg between consecutive waypoint passages (the log is sampled at its own rate, so each passage "
-       "is known to about half a sample interval). Totals: measured " +
+       "Time of each leg between consecutive waypoint passages (each passage the middle of the track's dwell within "
+       "2 m of its closest approach, interpolated between samples, on the log and the prediction alike). Totals: measured " +
            formatMinSec(f.measured_time_s) + " min:s, predicted " + formatMinSec(f.predicted_time_s) + " min:s (" +
            pct(f.predicted_time_s, f.measured_time_s) + ")."});
 }

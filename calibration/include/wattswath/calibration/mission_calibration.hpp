@@ -2,8 +2,9 @@
 /// @file mission_calibration.hpp
 /// Logged flights of known missions against their prediction (mission/predict.hpp): time and
 /// energy of the whole flight, of the take-off, the mission and the return, and the time of every
-/// leg between waypoints, measured the same way on the log and on the predicted trajectory (the
-/// time of closest approach to each waypoint in turn). Calibration fits the autopilot's
+/// leg between waypoints, measured the same way on the log and on the predicted trajectory (each
+/// waypoint passed, in turn, at the middle of the track's dwell near it: the closest approach for a
+/// vehicle flying through, the middle of a stop for one that stops). Calibration fits the autopilot's
 /// flight-behaviour parameters to those times (Nelder-Mead on the simulated flights) and the energy
 /// model's coefficients to the logged power on the logged kinematics (fitModel), and reports the
 /// errors before and after.
@@ -38,7 +39,10 @@ struct FlightTimes {
   double takeoff_s = 0.0;           ///< until the climb reaches 90 % of the first waypoint's height
   double mission_s = 0.0;           ///< first to last waypoint passage
   double return_s = 0.0;            ///< last waypoint passage to the end
-  std::vector<double> passage_s;    ///< closest approach to each waypoint (NaN: not within the match distance)
+  /// [s] when each waypoint is passed: the middle of the time the track spends within 2 m of its
+  /// closest approach (entry and exit interpolated between samples; the closest sample when the
+  /// track starts or ends inside), NaN when it never comes within the match distance
+  std::vector<double> passage_s;
   std::vector<double> leg_s;        ///< between consecutive matched passages (NaN when either is unmatched)
   std::vector<double> leg_energy_j; ///< [J] energy between consecutive passages (NaN when either is unmatched)
   std::vector<double> leg_speed_mps;  ///< [m/s] mean speed along the path between consecutive passages

@@ -320,7 +320,7 @@ struct MissionReplayFlight {
   std::vector<double> predicted_t;           ///< [s] predicted samples since the take-off command
   std::vector<double> predicted_speed;       ///< [m/s] predicted speed along the path (3-D)
   std::vector<std::string> waypoint_labels;  ///< the flown waypoints' numbers, in order
-  std::vector<double> measured_passage_s;    ///< [s] closest approach to each waypoint in the log (NaN: unmatched)
+  std::vector<double> measured_passage_s;    ///< [s] passage of each waypoint in the log (FlightTimes::passage_s; NaN: unmatched)
   std::vector<double> predicted_passage_s;   ///< [s] the same on the prediction
   std::vector<LegComparison> legs;           ///< legs between consecutive waypoints
   double measured_energy_j = 0.0;            ///< [J] whole flight, measured
