@@ -6,12 +6,12 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
-#include <set>
 #include <utility>
 #include <sstream>
 #include <vector>
 
 #include "cli.hpp"
+#include "predict_options.hpp"
 #include "predict_spread.hpp"
 #include "prediction_setup.hpp"
 #include "report_data.hpp"
@@ -30,7 +30,7 @@ namespace en = wattswath::energy;
 namespace ms = wattswath::mission;
 
 struct PredictOptions {
-  std::string mission, vehicle, effects, samples_out, report, report_svg, launch;
+  std::string mission, vehicle, effects, samples_out, report, report_svg, launch, wind;
   double reserve_pct = 25.0;
   double energy_margin_pct = 10.0;
   bool json = false, lenient = false, force = false;
@@ -130,97 +130,6 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap) {
   for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
 }
 
-// Where the vehicle will arm (--launch LAT,LON[,ALT]): the autopilot sets home there.
-struct Launch {
-  double from_home_m = 0.0;         // [m] horizontal distance from the file's home
-  std::optional<double> alt_m;      // [m] the launch point's altitude, as the file's home's (AMSL)
-  double alt_change_m = 0.0;        // [m] the launch altitude minus the file's home altitude
-  int absolute_items = 0;           // items whose heights are absolute (they move with the home's): absoluteItems
-};
-
-// How many items of `m` whose height is flown (the take-off and the steps flown to, from the
-// sequenced `steps`) give it above sea level (MAV_FRAME_GLOBAL), so it moves with the home's altitude.
-int absoluteItems(const ms::Mission& m, const std::vector<ms::NavStep>& steps) {
-  std::set<int> items;  // an item repeated by DO_JUMP counts once
-  for (const auto& st : steps) {
-    const bool flies_height = st.kind == ms::NavStep::Kind::Takeoff || (ms::isFlownTo(st) && st.has_position);
-    if (flies_height && st.item >= 0 && ms::altitudeFrame(m.items[static_cast<std::size_t>(st.item)].frame) == ms::AltitudeFrame::Absolute)
-      items.insert(st.item);
-  }
-  return static_cast<int>(items.size());
-}
-
-// Moves `m`'s home to `launch` ("LAT,LON" [deg], optionally ",ALT" [m, the file's home's reference]):
-// the autopilot sets home where the vehicle arms and returns there; heights given relative to
-// home stay above the new home, absolute ones are measured from its altitude. Throws
-// std::invalid_argument naming --launch for a malformed or implausible value.
-Launch moveHomeTo(ms::Mission& m, const std::string& launch) {
-  const std::string expected = "expected LAT,LON in degrees or LAT,LON,ALT with ALT in metres as the mission's home "
-                               "altitude, e.g. 43.7157,10.4612 or 43.7157,10.4612,35.5";
-  std::vector<std::string> parts;
-  for (std::size_t from = 0;;) {
-    const auto comma = launch.find(',', from);
-    parts.push_back(launch.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
-    if (comma == std::string::npos) break;
-    from = comma + 1;
-  }
-  if (parts.size() < 2 || parts.size() > 3) throw std::invalid_argument("--launch '" + launch + "': " + expected);
-  auto number = [&](const std::string& text) {
-    std::size_t used = 0;
-    double x = std::nan("");
-    try {
-      x = std::stod(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(x)) {
-      throw std::invalid_argument("--launch '" + launch + "': '" + text + "' is not a number; " + expected);
-    }
-    return x;
-  };
-  geometry::GeoPoint at = m.home;
-  at.lat_deg = number(parts[0]);
-  at.lon_deg = number(parts[1]);
-  geometry::validateGeoPoint(at, "--launch");
-  Launch l;
-  l.from_home_m = geometry::geodesicDistance(m.home, at);
-  if (l.from_home_m > 50000.0) {
-    throw std::invalid_argument("--launch '" + launch + "' is " + std::to_string(static_cast<long>(l.from_home_m / 1000.0)) +
-                                " km from the mission's home; expected within 50 km of it");
-  }
-  if (parts.size() == 3) {
-    l.alt_m = number(parts[2]);
-    if (!(*l.alt_m >= -500.0 && *l.alt_m <= 9000.0)) {
-      throw std::invalid_argument("--launch '" + launch + "': altitude " + parts[2] + " m is outside -500..9000 m");
-    }
-    l.alt_change_m = *l.alt_m - m.home.alt_m;
-    m.home.alt_m = *l.alt_m;
-  }
-  m.home.lat_deg = at.lat_deg;
-  m.home.lon_deg = at.lon_deg;
-  m.home_known = true;
-  return l;
-}
-
-// The launch in words.
-std::string launchText(const Launch& l) {
-  std::ostringstream os;
-  os << std::fixed << std::setprecision(1) << l.from_home_m
-     << " m from the mission's home; the autopilot's home is set there and the return flies to it";
-  if (l.alt_m) {
-    os << "; " << std::showpos << l.alt_change_m << std::noshowpos << " m from the home's altitude: ";
-    if (l.absolute_items > 0) {
-      os << l.absolute_items << " item(s) with absolute heights are flown that much lower above the vehicle's home";
-    } else {
-      os << "every height in the mission is relative to home, so none changes";
-    }
-  } else if (l.absolute_items > 0) {
-    os << "; its altitude is taken as the home's (" << l.absolute_items
-       << " item(s) have absolute heights: give --launch LAT,LON,ALT when the ground there is higher or lower)";
-  }
-  return os.str();
-}
-
 std::string samplesCsv(const ms::MissionPrediction& p) {
   std::ostringstream os;
   os.precision(10);
@@ -256,6 +165,10 @@ void registerPredictCommand(CLI::App& app) {
                   "Where the vehicle will arm and take off, LAT,LON [deg] or LAT,LON,ALT (ALT [m] in the home row's "
                   "reference, usually above sea level), when not at the mission file's home: the autopilot sets home there "
                   "and returns to it; without ALT its altitude is taken as the file's home's");
+  cmd->add_option("--wind", o->wind,
+                  "Steady wind SPEED,FROM: SPEED [m/s] blowing from the compass bearing FROM [deg] (0 north, 90 east), "
+                  "as a forecast gives it, e.g. 6,45; the ArduCopter models fly against the drag at air speed and the "
+                  "energy model's drag is taken at air speed (default: still air)");
   cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
   cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
   addReportOptions(cmd, o->report, o->report_svg, o->force);
@@ -266,6 +179,11 @@ void registerPredictCommand(CLI::App& app) {
     const en::Vehicle v = en::loadVehicle(o->vehicle);
     PredictionSetup setup = predictionSetup(v, o->vehicle, o->effects, o->reserve_pct);
     setup.settings.energy_margin = o->energy_margin_pct / 100.0;
+    std::optional<Wind> wind;
+    if (!o->wind.empty()) {
+      wind = parseWind(o->wind);
+      setup.settings.wind = wind->air();
+    }
     const en::EnergyModel& model = setup.model;
     const bool use_calibration = setup.calibrated;
     const ms::AutopilotConfig& ap = setup.autopilot;
@@ -296,6 +214,7 @@ void registerPredictCommand(CLI::App& app) {
       launch->absolute_items = absoluteItems(m, p.flight.steps);
       extra.push_back({"launch", launchText(*launch)});
     }
+    if (wind) extra.push_back({"wind", wind->text()});
     if (dispute) extra.push_back({"calibration", disputeText(*dispute, p, choice)});
     if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
@@ -312,6 +231,11 @@ void registerPredictCommand(CLI::App& app) {
                        {"alt_m", launch->alt_m ? nlohmann::json(*launch->alt_m) : nlohmann::json(nullptr)},
                        {"absolute_items", launch->absolute_items},
                        {"text", launchText(*launch)}};
+      }
+      j["wind"] = nullptr;
+      if (wind) {
+        j["wind"] = {{"speed_mps", wind->speed_mps}, {"from_deg", wind->from_deg}, {"east_mps", wind->air().x()},
+                     {"north_mps", wind->air().y()}, {"text", wind->text()}};
       }
       j["calibration_dispute"] = nullptr;
       if (dispute) {

@@ -358,3 +358,24 @@ TEST(CliPredict, ALaunchAltitudeMovesAbsoluteHeightsAndNotRelativeOnes) {
   std::remove(absolute.c_str());
   std::remove(relative.c_str());
 }
+
+TEST(CliPredict, AWindIsGivenAsAForecastGivesItAndCostsEnergy) {
+  // --wind SPEED,FROM: 6 m/s from the east (90 deg) is air moving west; the drag is taken at air
+  // speed, so the survey costs more than in still air; JSON "wind" is null without it.
+  const std::string base = "predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
+                           sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --json";
+  const json calm = runJson(base);
+  EXPECT_TRUE(calm["wind"].is_null());
+  const json east = runJson(base + " --wind 6,90");
+  EXPECT_NEAR(east["wind"]["east_mps"].get<double>(), -6.0, 1e-9);
+  EXPECT_NEAR(east["wind"]["north_mps"].get<double>(), 0.0, 1e-9);
+  EXPECT_NE(east["wind"]["text"].get<std::string>().find("from 90 deg (E)"), std::string::npos) << east["wind"].dump();
+  EXPECT_GT(east["energy_j"].get<double>(), calm["energy_j"].get<double>());
+  EXPECT_TRUE(east["breakdown"].contains("wind")) << east["breakdown"].dump();
+  // Bad values: clear errors naming --wind.
+  for (const std::string bad : {"6", "6,90,1", "fast,90", "6,east", "50,90", "-1,90", "6,400"}) {
+    const RunResult r = run(cli(base + " --wind " + bad) + " 2>&1");
+    EXPECT_NE(r.status, 0) << bad;
+    EXPECT_NE(r.output.find("--wind"), std::string::npos) << bad << ": " << r.output;
+  }
+}

@@ -28,6 +28,10 @@ void validate(const FlightSettings& s) {
                                 std::to_string(a.drag_quadratic_per_m) + " 1/m, response " + std::to_string(a.response_s) +
                                 " s; expected 0..10 1/s, 0..1 1/m, 0..2 s");
   }
+  if (!(a.wind.allFinite() && a.wind.norm() <= 40.0)) {
+    throw std::invalid_argument("FlightSettings.airframe.wind: (" + std::to_string(a.wind.x()) + ", " + std::to_string(a.wind.y()) +
+                                ") m/s east, north; expected a speed of 0..40 m/s");
+  }
   const TrackingError& e = s.tracking_error;
   if (!(e.horizontal_m >= 0.0 && e.horizontal_m <= 20.0) || !(e.vertical_m >= 0.0 && e.vertical_m <= 20.0)) {
     throw std::invalid_argument("FlightSettings.tracking_error: " + std::to_string(e.horizontal_m) + " m horizontal, " +

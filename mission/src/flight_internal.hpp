@@ -90,6 +90,15 @@ inline double sqrtController(double e, double p, double a) {
   return std::copysign(mag, e);
 }
 
+/// [m/s^2] Drag deceleration of airframe `a` at horizontal ground velocity `vh` [m/s]: c1 v + c2 v^2
+/// against the velocity through the air (`vh` minus the wind).
+inline Eigen::Vector2d airDrag(const Airframe& a, const Eigen::Vector2d& vh) {
+  const Eigen::Vector2d air = vh - a.wind;
+  const double speed = air.norm();
+  if (speed <= 1e-9) return Eigen::Vector2d::Zero();
+  return -air / speed * (a.drag_linear_per_s * speed + a.drag_quadratic_per_m * speed * speed);
+}
+
 /// Direction-scaled limit of a 3-D leg (ArduPilot kinematic_limit): the largest speed (or
 /// acceleration) along unit direction `u` such that its horizontal part stays within `xy` and its
 /// vertical part within `up` (climbing) or `down` (descending).

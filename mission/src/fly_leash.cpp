@@ -197,11 +197,7 @@ void chase(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, const Para
   veh.a.head<2>() += (veh.a_cmd - veh.a.head<2>()) * std::min(1.0, dt / kAttitudeLag);
   const double vz_cmd = std::clamp(sqrtController(carrot.z() - veh.p.z(), P.pos_z_p, P.accel_z), -P.speed_dn, P.speed_up);
   veh.a.z() = std::clamp((vz_cmd - veh.v.z()) / std::max(dt, 0.2), -P.accel_z, P.accel_z);
-  const Eigen::Vector2d vh = veh.v.head<2>();
-  const double v = vh.norm();
-  Eigen::Vector2d drag = Eigen::Vector2d::Zero();
-  if (v > 1e-9) drag = -vh / v * (af.drag_linear_per_s * v + af.drag_quadratic_per_m * v * v);
-  veh.v.head<2>() += (veh.a.head<2>() + drag) * dt;
+  veh.v.head<2>() += (veh.a.head<2>() + detail::airDrag(af, veh.v.head<2>())) * dt;
   veh.v.z() += veh.a.z() * dt;
   veh.p += veh.v * dt;
 }

@@ -98,12 +98,8 @@ class PositionFollower {
   const Eigen::Vector3d& velocity() const { return v_; }
 
  private:
-  // [m/s^2] The airframe's drag deceleration at horizontal velocity `vh`.
-  Eigen::Vector2d drag(const Eigen::Vector2d& vh) const {
-    const double speed = vh.norm();
-    if (speed <= 1e-9) return Eigen::Vector2d::Zero();
-    return -vh / speed * (a_.drag_linear_per_s * speed + a_.drag_quadratic_per_m * speed * speed);
-  }
+  // [m/s^2] The airframe's drag deceleration at horizontal ground velocity `vh` (in the wind).
+  Eigen::Vector2d drag(const Eigen::Vector2d& vh) const { return airDrag(a_, vh); }
 
   // The velocity error as AC_PID_2D::update_all keeps it: low-passed (PSC_VELXY_FLTE), its rate of
   // change low-passed too (PSC_VELXY_FLTD) into deriv_; at the first call taken as it is.

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/mission/files.hpp"
 
 namespace wattswath::mission {
@@ -119,6 +120,26 @@ std::string splineSwing(const Mission& m, const std::vector<NavStep>& steps, con
   return os.str();
 }
 
+// `model` with its drag taken at air speed in `wind` [m/s] (the wind effect, which replaces
+// parasitic_drag with the same drag area); what it cannot take is said in `notes`.
+energy::EnergyModel inWind(const energy::EnergyModel& model, const energy::Vehicle& v, const Eigen::Vector2d& wind,
+                           std::vector<std::string>& notes) {
+  energy::EnergyModel out = model;
+  if (!out.has("wind") && out.has("parasitic_drag")) out = energy::withCandidate(out, "wind", v);
+  if (out.has("wind")) {
+    energy::Effect& w = out.effect("wind");
+    w.setCoefficientValues({w.coefficient("drag_area"), wind.x(), wind.y()});
+  } else {
+    notes.push_back("the energy model has no drag effect (parasitic_drag or wind): the wind changes how the vehicle flies, "
+                    "not the power it draws");
+  }
+  if (out.has("translational_lift")) {
+    notes.push_back("translational lift is taken at ground speed: in wind the rotors see the air speed, which the model "
+                    "does not use there");
+  }
+  return out;
+}
+
 }  // namespace
 
 MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
@@ -144,10 +165,18 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   const std::vector<NavStep> steps = sequenceMission(m, &p.warnings);
   FlightSettings fs = s.flight;
   if (s.airframe_from_vehicle) fs.airframe = airframeOfVehicle(v, v.name);
+  fs.airframe.wind = s.wind;
   p.flight = flyMission(steps, autopilot, fs);
+  const bool windy = s.wind.squaredNorm() > 0.0;
+  if (windy && autopilot.family == AutopilotFamily::PX4) {
+    p.warnings.push_back("the PX4 model flies its trajectory exactly: the wind changes the power it draws, not its speeds "
+                         "or times");
+  }
+  const energy::EnergyModel windy_model = windy ? inWind(model, v, s.wind, p.warnings) : energy::EnergyModel();
+  const energy::EnergyModel& model_used = windy ? windy_model : model;
   if (const std::string swing = splineSwing(m, steps, p.flight); !swing.empty()) p.warnings.push_back(swing);
   p.pieces = toPieces(p.flight);
-  p.breakdown = model.emptyBreakdown();
+  p.breakdown = model_used.emptyBreakdown();
   p.piece_energy_j.resize(p.pieces.pieces.size());
   p.items.resize(steps.size());
   for (std::size_t k = 0; k < steps.size(); ++k) {
@@ -161,8 +190,8 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   }
   for (std::size_t i = 0; i < p.pieces.pieces.size(); ++i) {
     const std::vector<energy::Piece> one{p.pieces.pieces[i]};
-    model.accumulate(one, p.breakdown);
-    const double e = model.energy(one);
+    model_used.accumulate(one, p.breakdown);
+    const double e = model_used.energy(one);
     p.piece_energy_j[i] = e;
     const energy::Piece& pc = p.pieces.pieces[i];
     for (Totals* t : {&p.total, &p.phases[static_cast<int>(p.pieces.phase[i])],

@@ -1,6 +1,8 @@
 // Python bindings of the mission library: mission files (.plan, .waypoints) and their prediction
 // as the vehicle's autopilot flies them (energy, time, phases, items, battery, trajectory arrays).
 #include "bindings.hpp"
+
+#include <utility>
 #include "wattswath/mission/autopilot.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/predict.hpp"
@@ -49,12 +51,14 @@ py::dict trajectoryDict(const ms::FlownMission& f) {
 }
 
 // Predicts `m` on vehicle `v` flown by the autopilot its file describes (ArduCopter 4.5 defaults without one).
+// `wind` [m/s]: where the air moves to (east, north).
 py::dict predict(const ms::Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
-                 double reserve_fraction, double energy_margin) {
+                 double reserve_fraction, double energy_margin, std::pair<double, double> wind) {
   const ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, v.name);
   ms::PredictSettings s;
   s.reserve_fraction = reserve_fraction;
   s.energy_margin = energy_margin;
+  s.wind = {wind.first, wind.second};
   const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, s);
   py::dict phases;
   for (int i = 0; i < ms::kFlightPhaseCount; ++i)
@@ -105,10 +109,13 @@ void bindMission(py::module_& m) {
         "command into a warning. RuntimeError names the item and field.");
   m.def("predict_mission", &predict, py::arg("mission"), py::arg("vehicle"), py::arg("model"),
         py::arg("reserve_fraction") = 0.25, py::arg("energy_margin") = 0.10,
+        py::arg("wind") = std::make_pair(0.0, 0.0),
         "Predicts the mission flown by the vehicle's autopilot model (its file's 'autopilot', else ArduCopter 4.5) "
         "from take-off command to landing: dict energy_j, time_s, distance_m, phases, items, breakdown, battery, "
         "trajectory {t [s], position N x 3 [m], velocity N x 3 [m/s], step, phase}, warnings. The battery verdict "
-        "also checks energy_margin [-] more energy for the prediction's own error.");
+        "also checks energy_margin [-] more energy for the prediction's own error. wind (east, north) [m/s]: a steady "
+        "wind, where the air moves to (ArduCopter models fly against the drag at air speed; the drag power is taken "
+        "at air speed).");
 }
 
 }  // namespace wattswath::python

@@ -55,3 +55,13 @@ def test_trajectory_arrays(prediction):
 def test_bad_mission_names_the_item():
     with pytest.raises(RuntimeError, match="mission_bad_frame.waypoints"):
         ws.read_mission(str(TESTDATA / "bad" / "mission_bad_frame.waypoints"))
+
+
+def test_wind_matches_the_cli():
+    # 6 m/s from the east is air moving west: wind=(-6, 0); the same as `predict --wind 6,90`.
+    vehicle = ws.load_vehicle(IRIS_PLUS)
+    model = ws.build_model(vehicle, ["hover", "kinetic", "parasitic_drag"])
+    p = ws.predict_mission(ws.read_mission(SURVEY), vehicle, model, wind=(-6.0, 0.0))
+    ref = cli_json("predict", SURVEY, "--vehicle", IRIS_PLUS, "--effects", "hover,kinetic,parasitic_drag", "--wind", "6,90")
+    assert p["energy_j"] == pytest.approx(ref["energy_j"], rel=1e-9)
+    assert "wind" in p["breakdown"]["by_effect"] and p["energy_j"] > ws.predict_mission(ws.read_mission(SURVEY), vehicle, model)["energy_j"]

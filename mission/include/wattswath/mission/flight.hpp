@@ -76,13 +76,17 @@ struct FlownMission {
   std::vector<std::string> notes;   ///< what the model assumed (e.g. "RTL speed = WPNAV_SPEED")
 };
 
-/// How the airframe follows the autopilot's acceleration commands (used by the ArduCopter S-curve
-/// model, whose position controller it closes the loop with): the horizontal drag deceleration
-/// c1 v + c2 v^2 that the lean angle must overcome (and that, at ANGLE_MAX, caps the speed), and
-/// the lag of the achieved acceleration behind the commanded one (docs/autopilots.md).
+/// How the airframe follows the autopilot's acceleration commands (used by the ArduCopter models,
+/// whose position controllers close the loop with it): the horizontal drag deceleration
+/// c1 v + c2 v^2 at the speed through the air that the lean angle must overcome (and that, at
+/// ANGLE_MAX, caps the speed), and the lag of the achieved acceleration behind the commanded one
+/// (docs/autopilots.md).
 struct Airframe {
   double drag_linear_per_s = 0.0;     ///< [1/s] c1: rotor (momentum) drag per unit mass and speed
   double drag_quadratic_per_m = 0.0;  ///< [1/m] c2: body drag 0.5 rho CdA / m
+  /// [m/s] the steady wind it flies in, where the air moves to (east, north); |wind| <= 40. The
+  /// drag acts on the velocity relative to the air; the autopilot controls the ground velocity.
+  Eigen::Vector2d wind = Eigen::Vector2d::Zero();
   /// [s] first-order lag of the achieved acceleration behind the command (the attitude loop:
   /// ATC_INPUT_TC 0.15 s shaping plus the rate loop; 0.25 s in ArduCopter 4.x SITL logs)
   double response_s = 0.25;

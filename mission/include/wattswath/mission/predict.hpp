@@ -25,6 +25,10 @@ struct PredictSettings {
   double energy_margin = 0.10;
   /// true: flight.airframe is taken from the vehicle (airframeOfVehicle); false: as given
   bool airframe_from_vehicle = true;
+  /// [m/s] steady wind, where the air moves to (east, north); replaces flight.airframe.wind. The
+  /// ArduCopter models fly against the drag at air speed; the energy model's drag is taken at air
+  /// speed (its parasitic_drag becomes the wind effect with the same drag area)
+  Eigen::Vector2d wind = Eigen::Vector2d::Zero();
 };
 
 /// The airframe of vehicle `v`: its file's `extensions.airframe` object ({"drag_linear_per_s",
