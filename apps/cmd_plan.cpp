@@ -10,10 +10,12 @@
 
 #include "cli.hpp"
 #include "plan_flight.hpp"
+#include "predict_options.hpp"
 #include "plan_limits.hpp"
 #include "plan_fleet.hpp"
 #include "plan_sorties.hpp"
 #include "wattswath/energy/battery.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/path_profile.hpp"
 #include "report_data.hpp"
@@ -51,6 +53,7 @@ struct PlanOpts {
   bool force = false, json = false, no_report = false, no_spiral = false, gpkg = false;
   bool allow_large = false;  // --allow-large: plan beyond kMaxSweepLinesWithoutOverride lines or kMaxAreaVerticesWithoutOverride vertices
   std::string report_svg, report;
+  std::string wind;  // --wind SPEED,FROM (empty: still air)
 };
 
 /// Polyline of one leg for the map [m] (arcs sampled every 10 deg; a turn in place is one point).
@@ -509,6 +512,7 @@ void printMission(const PlanSetup& s, const pl::PlanMission& pm, double margin, 
 std::string reportPath(const PlanOpts& o) { return o.report.empty() ? (fs::path(o.out) / "report.html").string() : o.report; }
 
 void runPlan(const PlanOpts& o) {
+  const std::optional<Wind> wind = o.wind.empty() ? std::nullopt : std::optional<Wind>(parseWind(o.wind));
   const auto vehicle = energy::loadVehicle(o.vehicle);
   PlanSetup s = setUp(o);
   const auto& pr = s.problem;
@@ -539,7 +543,9 @@ void runPlan(const PlanOpts& o) {
   checkCommandableSpeeds(vehicle.max_speed_mps, ps.camera_max_speed, o.vehicle);
   ps.spirals = !o.no_spiral;
   ps.overshoot = o.overshoot;
-  const auto model = energy::marinsModel(vehicle);
+  // In wind the search takes the drag at air speed, so a leg's energy depends on its heading.
+  const auto model = wind ? energy::withWind(energy::marinsModel(vehicle), vehicle, wind->air().x(), wind->air().y()) : energy::marinsModel(vehicle);
+  if (wind) s.notes.push_back("wind: " + wind->text() + "; the sweep direction and speeds are chosen for it");
   const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
   auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
 
@@ -554,6 +560,7 @@ void runPlan(const PlanOpts& o) {
   scoring.home_altitude_amsl_m = s.area.home_alt_m.value_or(frame.origin().alt_m);
   scoring.mission = mo;
   scoring.vehicle = &vehicle;
+  if (wind) scoring.settings.wind = wind->air();
   std::vector<std::string> flight_notes;
   progress("plan: flying the finalists' missions with the vehicle's autopilot model");
   const PlanFlight flight = flyFinalists(r, scoring, o.vehicle, flight_notes);
@@ -625,6 +632,7 @@ void runPlan(const PlanOpts& o) {
     j["mission"] = missionJson(s, pm, o.no_fly_margin, photo_pct);
     j["flight"] = flightJson(flight);
     j["sorties"] = sorties;
+    j["wind"] = windJson(wind);
     printJson(j);
     return;
   }
@@ -679,6 +687,10 @@ void registerPlanCommand(CLI::App& app) {
       ->check(CLI::Range(0.0, 200.0));
   cmd->add_option("--corner-strategy", o->corners, "sharp, rounded or auto (cheapest per corner)")
       ->check(CLI::IsMember({"sharp", "rounded", "auto"}));
+  cmd->add_option("--wind", o->wind,
+                  "Steady wind SPEED,FROM: SPEED [m/s] blowing from the compass bearing FROM [deg] (0 north, 90 east), as a "
+                  "forecast gives it, e.g. 6,45: the search takes the drag at air speed and the finalists are flown in it "
+                  "(default: still air)");
   cmd->add_option("--out", o->out, "output folder for mission.plan, mission.waypoints, path.geojson, legs.csv")->required();
   cmd->add_flag("--force", o->force, "overwrite existing output files");
   cmd->add_flag("--no-spiral", o->no_spiral,

@@ -232,11 +232,7 @@ void registerPredictCommand(CLI::App& app) {
                        {"absolute_items", launch->absolute_items},
                        {"text", launchText(*launch)}};
       }
-      j["wind"] = nullptr;
-      if (wind) {
-        j["wind"] = {{"speed_mps", wind->speed_mps}, {"from_deg", wind->from_deg}, {"east_mps", wind->air().x()},
-                     {"north_mps", wind->air().y()}, {"text", wind->text()}};
-      }
+      j["wind"] = windJson(wind);
       j["calibration_dispute"] = nullptr;
       if (dispute) {
         j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},

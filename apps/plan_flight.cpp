@@ -43,7 +43,9 @@ std::optional<std::string> calibrationNote(const std::vector<mission::NavStep>& 
 planner::FlightScoring withSetup(planner::FlightScoring scoring, const PredictionSetup& setup) {
   scoring.model = &setup.model;
   scoring.autopilot = setup.autopilot;
+  const Eigen::Vector2d wind = scoring.settings.wind;  // the run's, not the vehicle file's
   scoring.settings = setup.settings;
+  scoring.settings.wind = wind;
   scoring.mission.firmware = setup.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
   return scoring;
 }

@@ -115,6 +115,12 @@ std::string Wind::text() const {
   return os.str();
 }
 
+nlohmann::json windJson(const std::optional<Wind>& wind) {
+  if (!wind) return nullptr;
+  return {{"speed_mps", wind->speed_mps}, {"from_deg", wind->from_deg}, {"east_mps", wind->air().x()},
+          {"north_mps", wind->air().y()}, {"text", wind->text()}};
+}
+
 Wind parseWind(const std::string& text) {
   const std::string expected = "expected SPEED,FROM: the speed in m/s and the compass bearing in degrees it blows from "
                                "(0 north, 90 east), e.g. 6,45 for 6 m/s from the north-east";

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <nlohmann/json.hpp>
 
 #include "wattswath/mission/flight.hpp"
 #include "wattswath/mission/mission.hpp"
@@ -43,6 +44,9 @@ struct Wind {
   /// The wind and what the prediction does with it, in words.
   std::string text() const;
 };
+
+/// The JSON of `wind`: {speed_mps, from_deg, east_mps, north_mps, text}, null in still air.
+nlohmann::json windJson(const std::optional<Wind>& wind);
 
 /// Parses --wind SPEED,FROM; throws std::invalid_argument naming --wind for a malformed or
 /// implausible value.

@@ -2,6 +2,7 @@
 // the QGroundControl format check), the plan never costing more than a baseline, clear errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -491,4 +492,38 @@ TEST(CliPlan, GsdSetsTheAltitudeAndTheTriggerIntervalCapsTheSweepSpeed) {
   expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --out " + outDir("gsd3") +
                   " --sensor-mm 13.2,8.8 --focal-mm 8.8 --gsd 2 --overlap 0.7",
               "needs the image width");
+}
+
+TEST(CliPlan, InAWindTheSweepsRunAcrossItAndTheWrittenMissionFliesAsScored) {
+  // A 200 m square near Pisa: in still air either sweep direction costs alike, with 8 m/s of wind
+  // the drag at air speed favours legs across it (2 (v^2 + w^2)^1.5 < (v + w)^3 + |v - w|^3 of drag
+  // power per pair of legs), so a wind from the east gives north-south legs (sweep angle 90 deg) and
+  // one from the north east-west legs (0 deg). `predict` on the written mission with the same wind
+  // gives the plan's flight figures: the mission flies as scored.
+  const std::string area = (std::filesystem::temp_directory_path() / "wattswath_test_plan_wind_square.geojson").string();
+  {
+    const double lat0 = 43.7159, lon0 = 10.4613, dlat = 200.0 / 111195.0, dlon = dlat / std::cos(lat0 * M_PI / 180.0);
+    std::ofstream f(area);
+    f.precision(10);
+    f << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[)"
+      << "[" << lon0 << "," << lat0 << "],[" << lon0 + dlon << "," << lat0 << "],[" << lon0 + dlon << "," << lat0 + dlat << "],["
+      << lon0 << "," << lat0 + dlat << "],[" << lon0 << "," << lat0 << "]]]}}]}";
+  }
+  const std::string out = outDir("wind");
+  const auto calm = planJson(area, out, "--spacing 20");
+  EXPECT_TRUE(calm["wind"].is_null());
+  const auto from_east = planJson(area, out, "--spacing 20 --force --wind 8,90");
+  EXPECT_NEAR(std::fmod(from_east["sweep_angle_deg"].get<double>() + 360.0, 180.0), 90.0, 5.0);
+  EXPECT_NEAR(from_east["wind"]["east_mps"].get<double>(), -8.0, 1e-9);
+  EXPECT_GT(from_east["energy_j"].get<double>(), calm["energy_j"].get<double>());
+  const auto r = run(cliBinary() + " predict " + out + "/mission.plan --vehicle " + iris() + " --wind 8,90 --json 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto flown = nlohmann::json::parse(r.output);
+  EXPECT_NEAR(flown["energy_j"].get<double>(), from_east["flight"]["energy_j"].get<double>(), 1e-6 * flown["energy_j"].get<double>());
+  const auto from_north = planJson(area, out, "--spacing 20 --force --wind 8,0");
+  const double north_angle = std::fmod(from_north["sweep_angle_deg"].get<double>() + 360.0, 180.0);
+  EXPECT_LT(std::min(north_angle, 180.0 - north_angle), 5.0) << north_angle;
+  const auto bad = run(cliBinary() + " plan " + area + " --vehicle " + iris() + " --out " + out + " --spacing 20 --force --wind 8 2>&1");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("--wind"), std::string::npos) << bad.output;
 }

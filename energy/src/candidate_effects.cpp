@@ -168,6 +168,15 @@ EnergyModel withCandidate(const EnergyModel& m, const std::string& name, const V
   return out;
 }
 
+EnergyModel withWind(const EnergyModel& m, const Vehicle& v, double east, double north) {
+  EnergyModel out = !m.has("wind") && m.has("parasitic_drag") ? withCandidate(m, "wind", v) : m;
+  if (out.has("wind")) {
+    Effect& w = out.effect("wind");
+    w.setCoefficientValues({w.coefficient("drag_area"), east, north});
+  }
+  return out;
+}
+
 std::vector<std::string> splitEffectList(const std::string& list) {
   std::vector<std::string> out;
   std::string cur;

@@ -124,12 +124,8 @@ std::string splineSwing(const Mission& m, const std::vector<NavStep>& steps, con
 // parasitic_drag with the same drag area); what it cannot take is said in `notes`.
 energy::EnergyModel inWind(const energy::EnergyModel& model, const energy::Vehicle& v, const Eigen::Vector2d& wind,
                            std::vector<std::string>& notes) {
-  energy::EnergyModel out = model;
-  if (!out.has("wind") && out.has("parasitic_drag")) out = energy::withCandidate(out, "wind", v);
-  if (out.has("wind")) {
-    energy::Effect& w = out.effect("wind");
-    w.setCoefficientValues({w.coefficient("drag_area"), wind.x(), wind.y()});
-  } else {
+  energy::EnergyModel out = energy::withWind(model, v, wind.x(), wind.y());
+  if (!out.has("wind")) {
     notes.push_back("the energy model has no drag effect (parasitic_drag or wind): the wind changes how the vehicle flies, "
                     "not the power it draws");
   }

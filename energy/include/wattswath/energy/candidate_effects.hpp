@@ -126,6 +126,11 @@ EnergyModel buildModel(const Vehicle& v, const std::vector<std::string>& names);
 /// keeps its drag area.
 EnergyModel withCandidate(const EnergyModel& m, const std::string& name, const Vehicle& v);
 
+/// `m` with its drag taken at air speed in a steady wind `east`, `north` [m/s] (where the air moves
+/// to): its `parasitic_drag` becomes the `wind` effect with the same drag area, or its `wind`
+/// effect gets this wind. A model with neither is returned unchanged (check `has("wind")`).
+EnergyModel withWind(const EnergyModel& m, const Vehicle& v, double east, double north);
+
 /// Splits "a,b,c" into names (spaces ignored).
 std::vector<std::string> splitEffectList(const std::string& list);
 
