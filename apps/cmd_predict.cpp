@@ -42,10 +42,11 @@ nlohmann::json totalsJson(const ms::Totals& t) {
 
 std::string minutesSeconds(double s) { return report::formatMinSec(s); }
 
-// Which energy model predicted: its effects and where they come from.
-std::string modelText(const en::EnergyModel& model, bool calibrated) {
+// Which energy model predicted: its effects as the prediction used them (in wind, parasitic_drag
+// is the wind effect) and where they come from.
+std::string modelText(const ms::MissionPrediction& p, bool calibrated) {
   std::string names;
-  for (const auto& e : model.effectNames()) names += (names.empty() ? "" : ", ") + e;
+  for (const auto& e : p.breakdown.effects) names += (names.empty() ? "" : ", ") + e;
   return names + (calibrated ? " (the vehicle file's calibration)" : " (the vehicle's physics)");
 }
 
@@ -219,7 +220,7 @@ void registerPredictCommand(CLI::App& app) {
     if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
     if (!o->report.empty() || !o->report_svg.empty()) {
-      writeReport(missionReport(p, ap, v, modelText(model, use_calibration), extra, *o), o->report, o->report_svg, o->force);
+      writeReport(missionReport(p, ap, v, modelText(p, use_calibration), extra, *o), o->report, o->report_svg, o->force);
     }
     if (o->json) {
       nlohmann::json j = toJson(p, ap, *o);
