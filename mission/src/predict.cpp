@@ -162,8 +162,20 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   FlightSettings fs = s.flight;
   if (s.airframe_from_vehicle) fs.airframe = airframeOfVehicle(v, v.name);
   fs.airframe.wind = s.wind;
-  p.flight = flyMission(steps, autopilot, fs);
   const bool windy = s.wind.squaredNorm() > 0.0;
+  try {
+    p.flight = flyMission(steps, autopilot, fs);
+  } catch (const MissionError&) {
+    throw;
+  } catch (const std::runtime_error& e) {  // the flight ran past FlightSettings::max_time_s
+    if (!windy) throw;
+    std::ostringstream os;
+    os.precision(3);
+    os << e.what() << " in a wind of " << s.wind.norm()
+       << " m/s: the vehicle probably cannot make way against it (its drag at the lean limit caps its air speed); "
+          "check the wind and the vehicle's drag";
+    throw std::runtime_error(os.str());
+  }
   if (windy && autopilot.family == AutopilotFamily::PX4) {
     p.warnings.push_back("the PX4 model flies its trajectory exactly: the wind changes the power it draws, not its speeds "
                          "or times");

@@ -115,6 +115,21 @@ TEST(Wind, PredictTakesTheEnergyModelsDragAtAirSpeed) {
   EXPECT_NEAR(wind_j, expected, 0.02 * expected);
   EXPECT_GT(wind_j, 2.0 * still.breakdown.byEffect("parasitic_drag"));
   EXPECT_GT(blown.total.energy_j, still.total.energy_j);
+  // 35 m/s against a vehicle whose drag at 30 degrees of lean caps its air speed at 9.9 m/s: it
+  // never gets there, and the error says why.
+  PredictSettings storm;
+  storm.airframe_from_vehicle = false;
+  storm.flight.airframe.drag_quadratic_per_m = kDrag;
+  storm.flight.max_time_s = 600.0;
+  storm.wind = {-35.0, 0.0};
+  AutopilotConfig lean30 = ap;
+  lean30.parameters["ANGLE_MAX"] = 3000;
+  try {
+    predictMission(m, v, model, lean30, storm);
+    FAIL() << "a flight against a 35 m/s wind was predicted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot make way against it"), std::string::npos) << e.what();
+  }
   PredictSettings gale;
   gale.wind = {45.0, 0.0};
   try {
