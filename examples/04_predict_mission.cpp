@@ -46,5 +46,12 @@ int main(int argc, char** argv) {
   else
     std::printf("battery: unknown (the vehicle file has none)\n");
   for (const auto& w : p.warnings) std::printf("warning: %s\n", w.c_str());
+
+  // The same mission in a steady 6 m/s wind from the east (the air moving west): the vehicle flies
+  // against its drag at air speed and the energy model's drag is taken at air speed.
+  settings.wind = {-6.0, 0.0};  // [m/s] east, north: where the air moves to
+  const ms::MissionPrediction windy = ms::predictMission(m, v, model, ap, settings);
+  std::printf("in 6 m/s from the east: %.0f s, %.0f J (%+.1f %%)\n", windy.total.time_s, windy.total.energy_j,
+              100.0 * (windy.total.energy_j / p.total.energy_j - 1.0));
   return 0;
 }
