@@ -116,7 +116,9 @@ nlohmann::json toJson(const ms::MissionPrediction& p, const ms::AutopilotConfig&
   return j;
 }
 
-void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap) {
+// The prediction as text: totals and phases, the battery, the facts in `extra` on stdout; notes on stderr.
+void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap,
+               const std::vector<std::pair<std::string, std::string>>& extra) {
   std::cout << std::fixed << std::setprecision(1);
   std::cout << "flown by " << ap.firmware << " " << ap.version << " (" << ms::toString(ap.family) << " model"
             << (ap.from_file ? "" : ", firmware defaults: the vehicle file has no autopilot object") << ")\n";
@@ -128,6 +130,8 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap) {
               << minutesSeconds(t.time_s) << "  " << t.energy_j / 3600.0 << " Wh  " << t.distance_m << " m\n";
   }
   std::cout << "battery: " << (p.battery.known ? p.battery.verdict : "unknown (no battery in the vehicle file)") << "\n";
+  for (const auto& [label, text] : extra) std::cout << label << ": " << text << "\n";
+  std::cout.flush();
   for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
 }
 
@@ -252,8 +256,7 @@ void registerPredictCommand(CLI::App& app) {
       }
       printJson(j);
     } else {
-      printText(p, ap);
-      for (const auto& [label, text] : extra) std::cout << label << ": " << text << "\n";
+      printText(p, ap, extra);
     }
   });
 }
