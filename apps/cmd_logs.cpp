@@ -5,18 +5,21 @@
 #include <limits>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "cli.hpp"
 #include "diagnose_output.hpp"
 #include "log_inputs.hpp"
 #include "log_json.hpp"
+#include "predict_options.hpp"
 #include "replay_mission.hpp"
 #include "report_data.hpp"
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/logs/log_io.hpp"
 #include "wattswath/calibration/plan_prediction.hpp"
 #include "wattswath/calibration/user_effect.hpp"
+#include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/energy/tolerances.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -38,7 +41,7 @@ double loggedDistance(const calibration::PreparedLog& l) {
 
 void registerReplay(CLI::App& app) {
   struct Opts {
-    std::string vehicle, effects = kPaperEffects, samples_out, plan, report, report_svg;
+    std::string vehicle, effects = kPaperEffects, samples_out, plan, report, report_svg, wind;
     std::vector<std::string> logs, missions;
     logs::LogReadOptions read;
     calibration::PlanPredictionSettings plan_settings;
@@ -61,6 +64,9 @@ void registerReplay(CLI::App& app) {
                   "predicted one leg by leg (time, speed along the path, energy), the error split into kinematics and "
                   "physics; the model is the vehicle file's calibration unless --effects is given")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--wind", o->wind,
+                  "The day's steady wind SPEED,FROM (m/s, compass bearing it blows from), when known: the model's drag is "
+                  "taken at air speed on the logged kinematics and in the --mission predictions, which fly in it");
   cmd->add_option("--plan-corner-fraction", o->plan_settings.corner_speed_fraction,
                   "Planned corners: 0 = stop and turn in place, else pass at this share of the leg speed")
       ->check(CLI::Range(0.0, 1.0))
@@ -83,8 +89,10 @@ void registerReplay(CLI::App& app) {
     inputs.push_back(o->vehicle);
     if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, inputs);
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
+    const std::optional<Wind> wind = o->wind.empty() ? std::nullopt : std::optional<Wind>(parseWind(o->wind));
     const auto v = en::loadVehicle(o->vehicle);
-    const auto model = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto still = en::buildModel(v, en::splitEffectList(o->effects));
+    const auto model = wind ? en::withWind(still, v, wind->air().x(), wind->air().y()) : still;
     const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     std::vector<calibration::LogReplay> reps;
     for (const auto& l : logs) reps.push_back(calibration::replay(model, l));
@@ -117,7 +125,8 @@ void registerReplay(CLI::App& app) {
     // The missions are flown as predict flies them (the file's calibration unless --effects).
     MissionReplays missions;
     if (!o->missions.empty()) {
-      const PredictionSetup setup = predictionSetup(v, o->vehicle, model, effects_opt->count() > 0, 25.0);
+      PredictionSetup setup = predictionSetup(v, o->vehicle, model, effects_opt->count() > 0, 25.0);
+      if (wind) setup.settings.wind = wind->air();
       missions = missionReplays(v, setup, o->logs, o->missions, reps, o->read);
     }
     if (!o->report.empty() || !o->report_svg.empty()) {
@@ -147,7 +156,8 @@ void registerReplay(CLI::App& app) {
                  {"residuals", residualsJson(calibration::residualTables(reps))},
                  {"plan_prediction", o->plan.empty() ? json(nullptr) : plans},
                  {"mission_prediction", o->missions.empty() ? json(nullptr) : missions.json},
-                 {"measurement", o->measurement.toJson()}});
+                 {"measurement", o->measurement.toJson()},
+                 {"wind", windJson(wind)}});
       return;
     }
     o->measurement.print();

@@ -379,3 +379,26 @@ TEST(CliPredict, AWindIsGivenAsAForecastGivesItAndCostsEnergy) {
     EXPECT_NE(r.output.find("--wind"), std::string::npos) << bad << ": " << r.output;
   }
 }
+
+TEST(CliPredict, ReplayInTheDaysWindTakesTheDragAtAirSpeedOnBothSides) {
+  // replay --mission --wind: the model on the logged kinematics and the flight predicted from the
+  // mission both take the drag at air speed (the wind effect instead of parasitic_drag), so the
+  // kinematics / physics split compares like with like.
+  const std::string flight = "2017-10-18_1436_energy14";
+  const std::string base = "replay --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " +
+                           sharedData("iris-flights/" + flight + ".csv") + " --mission " +
+                           sharedData("iris-flights/mission__" + flight + ".waypoints") + " --json";
+  const json calm = runJson(base);
+  EXPECT_TRUE(calm["wind"].is_null());
+  const json windy = runJson(base + " --wind 3,90");
+  EXPECT_EQ(windy["effects"], json({"hover", "kinetic", "wind"}));
+  EXPECT_NEAR(windy["wind"]["east_mps"].get<double>(), -3.0, 1e-9);
+  const json& c = calm["mission_prediction"][0];
+  const json& w = windy["mission_prediction"][0];
+  EXPECT_GT(w["predicted_energy_j"].get<double>(), c["predicted_energy_j"].get<double>());
+  EXPECT_GT(w["replay_energy_j"].get<double>(), c["replay_energy_j"].get<double>());
+  EXPECT_EQ(w["measured_energy_j"].get<double>(), c["measured_energy_j"].get<double>());
+  const RunResult bad = run(cli(base + " --wind 3") + " 2>&1");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.output.find("--wind"), std::string::npos) << bad.output;
+}
