@@ -172,8 +172,9 @@ void registerPredictCommand(CLI::App& app) {
                   "and returns to it; without ALT its altitude is taken as the file's home's");
   cmd->add_option("--wind", o->wind,
                   "Steady wind SPEED,FROM: SPEED [m/s] blowing from the compass bearing FROM [deg] (0 north, 90 east), "
-                  "as a forecast gives it, e.g. 6,45; the ArduCopter models fly against the drag at air speed and the "
-                  "energy model's drag is taken at air speed (default: still air)");
+                  "as a forecast gives it, e.g. 6,45; or SPEED alone for any direction (the dearest of 8 is predicted); the "
+                  "ArduCopter models fly against the drag at air speed and the energy model's drag is taken at air speed "
+                  "(default: still air)");
   cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
   cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
   addReportOptions(cmd, o->report, o->report_svg, o->force);
@@ -186,7 +187,7 @@ void registerPredictCommand(CLI::App& app) {
     setup.settings.energy_margin = o->energy_margin_pct / 100.0;
     std::optional<Wind> wind;
     if (!o->wind.empty()) {
-      wind = parseWind(o->wind);
+      wind = parseWind(o->wind, true);
       setup.settings.wind = wind->air();
     }
     const en::EnergyModel& model = setup.model;
@@ -202,6 +203,21 @@ void registerPredictCommand(CLI::App& app) {
     const calibration::MissionKind kind = calibration::missionKind(ms::sequenceMission(m), setup.autopilot);
     const std::optional<KindChoice> choice = kindChoiceOf(kind, setup);
     if (choice) setup.autopilot.parameters[setup.disputed_parameter] = choice->value;
+    // A wind from any direction: the mission is flown from each of kWindDirections, and the dearest
+    // is the prediction (the reserve is checked for it).
+    nlohmann::json wind_directions = nlohmann::json::array();
+    if (wind && wind->any_direction) {
+      double dearest = -1.0;
+      for (int k = 0; k < kWindDirections; ++k) {
+        Wind w = *wind;
+        w.from_deg = 360.0 * k / kWindDirections;
+        setup.settings.wind = w.air();
+        const ms::MissionPrediction pk = ms::predictMission(m, v, model, ap, setup.settings);
+        wind_directions.push_back({{"from_deg", w.from_deg}, {"energy_j", pk.total.energy_j}, {"time_s", pk.total.time_s}});
+        if (pk.total.energy_j > dearest) dearest = pk.total.energy_j, wind->from_deg = w.from_deg;
+      }
+      setup.settings.wind = wind->air();
+    }
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
     ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
     const std::optional<Coverage> coverage = coverageOf(m, kind, v, setup);
@@ -219,7 +235,15 @@ void registerPredictCommand(CLI::App& app) {
       launch->absolute_items = absoluteItems(m, p.flight.steps);
       extra.push_back({"launch", launchText(*launch)});
     }
-    if (wind) extra.push_back({"wind", wind->text()});
+    if (wind) {
+      std::string by_direction;
+      if (!wind_directions.empty()) {
+        double lo = 1e300, hi = 0.0;
+        for (const auto& d : wind_directions) lo = std::min(lo, d["energy_j"].get<double>()), hi = std::max(hi, d["energy_j"].get<double>());
+        by_direction = "; by direction " + report::formatNumber(lo / 3600.0, 1) + "-" + report::formatNumber(hi / 3600.0, 1) + " Wh";
+      }
+      extra.push_back({"wind", wind->text() + by_direction});
+    }
     if (dispute) extra.push_back({"calibration", disputeText(*dispute, p, choice)});
     if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
     if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
@@ -238,6 +262,7 @@ void registerPredictCommand(CLI::App& app) {
                        {"text", launchText(*launch)}};
       }
       j["wind"] = windJson(wind);
+      if (wind) j["wind"]["directions"] = wind_directions;  // each direction flown (empty: the one given)
       j["calibration_dispute"] = nullptr;
       if (dispute) {
         j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},

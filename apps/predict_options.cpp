@@ -108,8 +108,9 @@ Eigen::Vector2d Wind::air() const {
 std::string Wind::text() const {
   static const char* names[] = {"N", "NE", "E", "SE", "S", "SW", "W", "NW"};
   std::ostringstream os;
-  os << std::fixed << std::setprecision(1) << speed_mps << " m/s from " << std::setprecision(0) << from_deg << " deg ("
-     << names[static_cast<int>(std::lround(from_deg / 45.0)) % 8]
+  os << std::fixed << std::setprecision(1) << speed_mps << " m/s from ";
+  if (any_direction) os << "any direction; flown from the dearest of " << kWindDirections << " directions, ";
+  os << std::setprecision(0) << from_deg << " deg (" << names[static_cast<int>(std::lround(from_deg / 45.0)) % 8]
      << "): the vehicle flies against its drag at air speed (lean-limited upwind) and the energy model's drag is taken at "
         "air speed; a steady wind, no gusts";
   return os.str();
@@ -117,21 +118,24 @@ std::string Wind::text() const {
 
 nlohmann::json windJson(const std::optional<Wind>& wind) {
   if (!wind) return nullptr;
-  return {{"speed_mps", wind->speed_mps}, {"from_deg", wind->from_deg}, {"east_mps", wind->air().x()},
-          {"north_mps", wind->air().y()}, {"text", wind->text()}};
+  return {{"speed_mps", wind->speed_mps}, {"from_deg", wind->from_deg}, {"any_direction", wind->any_direction},
+          {"east_mps", wind->air().x()}, {"north_mps", wind->air().y()}, {"text", wind->text()}};
 }
 
-Wind parseWind(const std::string& text) {
-  const std::string expected = "expected SPEED,FROM: the speed in m/s and the compass bearing in degrees it blows from "
-                               "(0 north, 90 east), e.g. 6,45 for 6 m/s from the north-east";
+Wind parseWind(const std::string& text, bool any_direction_allowed) {
+  const std::string expected = std::string("expected SPEED,FROM: the speed in m/s and the compass bearing in degrees it blows "
+                                           "from (0 north, 90 east), e.g. 6,45 for 6 m/s from the north-east") +
+                               (any_direction_allowed ? ", or SPEED alone for a wind from any direction"
+                                                      : " (SPEED alone, any direction, is for predict)");
   const std::vector<std::string> parts = commaParts(text);
-  if (parts.size() != 2) throw std::invalid_argument("--wind '" + text + "': " + expected);
-  Wind w{optionNumber("--wind", text, parts[0], expected), optionNumber("--wind", text, parts[1], expected)};
+  const bool any = parts.size() == 1 && any_direction_allowed;
+  if (parts.size() != 2 && !any) throw std::invalid_argument("--wind '" + text + "': " + expected);
+  Wind w{optionNumber("--wind", text, parts[0], expected), any ? 0.0 : optionNumber("--wind", text, parts[1], expected), any};
   if (!(w.speed_mps >= 0.0 && w.speed_mps <= 40.0)) {
     throw std::invalid_argument("--wind '" + text + "': speed " + parts[0] + " m/s is outside 0..40 m/s");
   }
   if (!(w.from_deg >= 0.0 && w.from_deg <= 360.0)) {
-    throw std::invalid_argument("--wind '" + text + "': direction " + parts[1] + " deg is outside 0..360");
+    throw std::invalid_argument("--wind '" + text + "': direction " + parts.back() + " deg is outside 0..360");
   }
   return w;
 }

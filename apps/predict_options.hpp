@@ -34,11 +34,16 @@ Launch moveHomeTo(mission::Mission& m, const std::string& launch);
 /// The launch in words.
 std::string launchText(const Launch& l);
 
+/// Directions `predict --wind SPEED` (any direction) flies: every 45 degrees.
+constexpr int kWindDirections = 8;
+
 /// The wind of --wind SPEED,FROM: SPEED [m/s] blowing from the compass bearing FROM [deg], as a
-/// forecast or METAR gives it.
+/// forecast or METAR gives it; or SPEED alone when the direction is not known (predict only).
 struct Wind {
   double speed_mps = 0.0;  ///< [m/s] 0..40
   double from_deg = 0.0;   ///< [deg] compass bearing it blows from, 0..360 (0 north, 90 east)
+  /// SPEED alone: the direction is not known, and from_deg is the dearest of kWindDirections
+  bool any_direction = false;
   /// [m/s] where the air moves to, east and north (PredictSettings::wind)
   Eigen::Vector2d air() const;
   /// The wind and what the prediction does with it, in words.
@@ -48,8 +53,8 @@ struct Wind {
 /// The JSON of `wind`: {speed_mps, from_deg, east_mps, north_mps, text}, null in still air.
 nlohmann::json windJson(const std::optional<Wind>& wind);
 
-/// Parses --wind SPEED,FROM; throws std::invalid_argument naming --wind for a malformed or
-/// implausible value.
-Wind parseWind(const std::string& text);
+/// Parses --wind SPEED,FROM, or SPEED alone when `any_direction_allowed`; throws
+/// std::invalid_argument naming --wind for a malformed or implausible value.
+Wind parseWind(const std::string& text, bool any_direction_allowed = false);
 
 }  // namespace wattswath::apps

@@ -2,6 +2,7 @@
 // lenient reading, a calibration written and read back, leg-by-leg comparison.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -373,7 +374,17 @@ TEST(CliPredict, AWindIsGivenAsAForecastGivesItAndCostsEnergy) {
   EXPECT_GT(east["energy_j"].get<double>(), calm["energy_j"].get<double>());
   EXPECT_TRUE(east["breakdown"].contains("wind")) << east["breakdown"].dump();
   // Bad values: clear errors naming --wind.
-  for (const std::string bad : {"6", "6,90,1", "fast,90", "6,east", "50,90", "-1,90", "6,400"}) {
+  // SPEED alone: a wind from any direction; the prediction is the dearest of eight directions.
+  const json any = runJson(base + " --wind 6");
+  EXPECT_TRUE(any["wind"]["any_direction"].get<bool>());
+  ASSERT_EQ(any["wind"]["directions"].size(), 8u);
+  double dearest = 0.0;
+  for (const auto& d : any["wind"]["directions"]) dearest = std::max(dearest, d["energy_j"].get<double>());
+  EXPECT_NEAR(any["energy_j"].get<double>(), dearest, 1e-9 * dearest);
+  EXPECT_GE(any["energy_j"].get<double>(), east["energy_j"].get<double>() - 1e-6);
+  EXPECT_NE(any["wind"]["text"].get<std::string>().find("any direction"), std::string::npos);
+  EXPECT_TRUE(east["wind"]["directions"].empty());
+  for (const std::string bad : {"6,90,1", "fast,90", "6,east", "50,90", "-1,90", "6,400", "fast"}) {
     const RunResult r = run(cli(base + " --wind " + bad) + " 2>&1");
     EXPECT_NE(r.status, 0) << bad;
     EXPECT_NE(r.output.find("--wind"), std::string::npos) << bad << ": " << r.output;
