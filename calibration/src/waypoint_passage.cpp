@@ -39,15 +39,13 @@ double crossing(const std::vector<double>& t, const std::vector<Eigen::Vector3d>
 Passage waypointPassage(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos, const Eigen::Vector3d& w,
                         std::size_t from, double match_m) {
   Passage p;
-  const long n = static_cast<long>(t.size());
+  const long n = static_cast<long>(t.size()), first = static_cast<long>(from);
   double best = 1e300;
-  long at = static_cast<long>(from);
-  std::vector<double> d(t.size(), 1e300);
-  long last = n - 1;
-  for (long i = static_cast<long>(from); i < n; ++i) {
-    d[i] = (pos[i] - w).head<2>().norm();
-    if (d[i] < best) best = d[i], at = i;
-    if (best < match_m && d[i] > best + 10.0) {
+  long at = first, last = n - 1;
+  for (long i = first; i < n; ++i) {
+    const double dh = (pos[i] - w).head<2>().norm();
+    if (dh < best) best = dh, at = i;
+    if (best < match_m && dh > best + 10.0) {
       last = i;
       break;
     }
@@ -55,16 +53,17 @@ Passage waypointPassage(const std::vector<double>& t, const std::vector<Eigen::V
   if (!(best <= match_m)) return p;
   p.index = at;
   p.closest_m = best;
-  // The dwell in three dimensions, so a take-off climb below a waypoint is not counted as at it.
-  for (long i = static_cast<long>(from); i <= last; ++i) d[i] = (pos[i] - w).norm();
-  double closest = d[at];
-  for (long j = std::max(static_cast<long>(from), at - 1); j < std::min(at + 1, n - 1); ++j)
+  // The dwell in three dimensions, so a take-off climb below a waypoint is not counted as at it;
+  // distances only for the samples the walk out of the dwell visits.
+  auto d = [&](long i) { return (pos[i] - w).norm(); };
+  double closest = d(at);
+  for (long j = std::max(first, at - 1); j < std::min(at + 1, n - 1); ++j)
     closest = std::min(closest, segmentDistance(pos[j], pos[j + 1], w));
   const double radius = closest + kDwellMargin;
   long a = at, b = at;
-  while (a > static_cast<long>(from) && d[a - 1] <= radius) --a;
-  while (b < last && d[b + 1] <= radius) ++b;
-  if (a == static_cast<long>(from) || b == n - 1) {  // the dwell's start or end is not in the track: the closest sample
+  while (a > first && d(a - 1) <= radius) --a;
+  while (b < last && d(b + 1) <= radius) ++b;
+  if (a == first || b == n - 1) {  // the dwell's start or end is not in the track: the closest sample
     p.t = t[at];
     return p;
   }
