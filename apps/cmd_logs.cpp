@@ -89,7 +89,7 @@ void registerReplay(CLI::App& app) {
     inputs.push_back(o->vehicle);
     if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, inputs);
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
-    const std::optional<Wind> wind = o->wind.empty() ? std::nullopt : std::optional<Wind>(parseWind(o->wind));
+    const std::optional<Wind> wind = windOption(o->wind);
     const auto v = en::loadVehicle(o->vehicle);
     const auto still = en::buildModel(v, en::splitEffectList(o->effects));
     const auto model = wind ? en::withWind(still, v, wind->air().x(), wind->air().y()) : still;

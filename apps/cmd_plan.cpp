@@ -512,7 +512,7 @@ void printMission(const PlanSetup& s, const pl::PlanMission& pm, double margin, 
 std::string reportPath(const PlanOpts& o) { return o.report.empty() ? (fs::path(o.out) / "report.html").string() : o.report; }
 
 void runPlan(const PlanOpts& o) {
-  const std::optional<Wind> wind = o.wind.empty() ? std::nullopt : std::optional<Wind>(parseWind(o.wind));
+  const std::optional<Wind> wind = windOption(o.wind);
   const auto vehicle = energy::loadVehicle(o.vehicle);
   PlanSetup s = setUp(o);
   const auto& pr = s.problem;
@@ -544,7 +544,8 @@ void runPlan(const PlanOpts& o) {
   ps.spirals = !o.no_spiral;
   ps.overshoot = o.overshoot;
   // In wind the search takes the drag at air speed, so a leg's energy depends on its heading.
-  const auto model = wind ? energy::withWind(energy::marinsModel(vehicle), vehicle, wind->air().x(), wind->air().y()) : energy::marinsModel(vehicle);
+  const auto marins = energy::marinsModel(vehicle);
+  const auto model = wind ? energy::withWind(marins, vehicle, wind->air().x(), wind->air().y()) : marins;
   if (wind) s.notes.push_back("wind: " + wind->text() + "; the sweep direction and speeds are chosen for it");
   const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
   auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });

@@ -185,11 +185,8 @@ void registerPredictCommand(CLI::App& app) {
     const en::Vehicle v = en::loadVehicle(o->vehicle);
     PredictionSetup setup = predictionSetup(v, o->vehicle, o->effects, o->reserve_pct);
     setup.settings.energy_margin = o->energy_margin_pct / 100.0;
-    std::optional<Wind> wind;
-    if (!o->wind.empty()) {
-      wind = parseWind(o->wind, true);
-      setup.settings.wind = wind->air();
-    }
+    std::optional<Wind> wind = windOption(o->wind, true);
+    if (wind) setup.settings.wind = wind->air();
     const en::EnergyModel& model = setup.model;
     const bool use_calibration = setup.calibrated;
     const ms::AutopilotConfig& ap = setup.autopilot;
@@ -206,20 +203,23 @@ void registerPredictCommand(CLI::App& app) {
     // A wind from any direction: the mission is flown from each of kWindDirections, and the dearest
     // is the prediction (the reserve is checked for it).
     nlohmann::json wind_directions = nlohmann::json::array();
+    std::optional<ms::MissionPrediction> dearest_wind;  // the dearest direction's prediction
     if (wind && wind->any_direction) {
-      double dearest = -1.0;
       for (int k = 0; k < kWindDirections; ++k) {
         Wind w = *wind;
         w.from_deg = 360.0 * k / kWindDirections;
         setup.settings.wind = w.air();
-        const ms::MissionPrediction pk = ms::predictMission(m, v, model, ap, setup.settings);
+        ms::MissionPrediction pk = ms::predictMission(m, v, model, ap, setup.settings);
         wind_directions.push_back({{"from_deg", w.from_deg}, {"energy_j", pk.total.energy_j}, {"time_s", pk.total.time_s}});
-        if (pk.total.energy_j > dearest) dearest = pk.total.energy_j, wind->from_deg = w.from_deg;
+        if (!dearest_wind || pk.total.energy_j > dearest_wind->total.energy_j) {
+          dearest_wind = std::move(pk);
+          wind->from_deg = w.from_deg;
+        }
       }
       setup.settings.wind = wind->air();
     }
     const std::optional<Dispute> dispute = disputeOf(m, v, setup);
-    ms::MissionPrediction p = ms::predictMission(m, v, model, ap, setup.settings);
+    ms::MissionPrediction p = dearest_wind ? std::move(*dearest_wind) : ms::predictMission(m, v, model, ap, setup.settings);
     const std::optional<Coverage> coverage = coverageOf(m, kind, v, setup);
     // The reserve is also checked for the dearer of the flights the calibration stands for, and for
     // the behaviour before the calibration when the mission is outside what it flew.

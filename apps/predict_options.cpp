@@ -140,4 +140,9 @@ Wind parseWind(const std::string& text, bool any_direction_allowed) {
   return w;
 }
 
+std::optional<Wind> windOption(const std::string& text, bool any_direction_allowed) {
+  if (text.empty()) return std::nullopt;
+  return parseWind(text, any_direction_allowed);
+}
+
 }  // namespace wattswath::apps

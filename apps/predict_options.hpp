@@ -57,4 +57,7 @@ nlohmann::json windJson(const std::optional<Wind>& wind);
 /// std::invalid_argument naming --wind for a malformed or implausible value.
 Wind parseWind(const std::string& text, bool any_direction_allowed = false);
 
+/// parseWind of an option's value, std::nullopt (still air) when it was not given (empty).
+std::optional<Wind> windOption(const std::string& text, bool any_direction_allowed = false);
+
 }  // namespace wattswath::apps

@@ -116,11 +116,9 @@ void counters(benchmark::State& state, const mission::MissionPrediction& p) {
   state.counters["pieces"] = static_cast<double>(p.pieces.pieces.size());
 }
 
-// predictMission end to end; range(0) family, range(1) dt in ms.
-void BM_Predict(benchmark::State& state) {
-  const int family = static_cast<int>(state.range(0));
+// predictMission of the survey by `family` with settings `s`, timed, with its totals as counters.
+void predictLoop(benchmark::State& state, int family, const mission::PredictSettings& s) {
   const mission::AutopilotConfig ap = autopilot(family);
-  const mission::PredictSettings s = settings(state.range(1) / 1000.0);
   mission::MissionPrediction p;
   for (auto _ : state) {
     p = mission::predictMission(theSurvey(), vehicle(), model(), ap, s);
@@ -132,21 +130,18 @@ void BM_Predict(benchmark::State& state) {
   counters(state, p);
 }
 
+// predictMission end to end; range(0) family, range(1) dt in ms.
+void BM_Predict(benchmark::State& state) {
+  predictLoop(state, static_cast<int>(state.range(0)), settings(state.range(1) / 1000.0));
+}
+
 // predictMission at dt 0.01 s in a 6 m/s wind from the north-east (range(0) family) against the
 // same in still air (BM_Predict with dt_ms 10): the drag at air speed has no closed form over a
 // piece, so the energy stage takes quadrature, and the flight models chase the drag at air speed.
 void BM_PredictInWind(benchmark::State& state) {
-  const int family = static_cast<int>(state.range(0));
-  const mission::AutopilotConfig ap = autopilot(family);
   mission::PredictSettings s = settings(0.01);
   s.wind = {-6.0 * std::sqrt(0.5), -6.0 * std::sqrt(0.5)};  // from 45 deg: the air moves south-west
-  mission::MissionPrediction p;
-  for (auto _ : state) {
-    p = mission::predictMission(theSurvey(), vehicle(), model(), ap, s);
-    benchmark::DoNotOptimize(p.pieces.pieces.data());
-  }
-  state.SetLabel(familyLabel(family));
-  counters(state, p);
+  predictLoop(state, static_cast<int>(state.range(0)), s);
 }
 
 // Stage 1: the mission items sequenced into navigation steps (DO commands, local metres).
