@@ -194,10 +194,10 @@ void drawEvents(SvgWriter& svg, const std::vector<XEvent>& events, const Scale& 
   svg.close();
 }
 
-}  // namespace
-
-std::string renderSvg(const LineChart& c) {
-  const std::string xtitle = axisTitle(c.x, "x"), ytitle = axisTitle(c.y, "y");
+/// The data ranges of a line chart's two axes: series and their bands, markers, shaded ranges,
+/// events and the reference line; a unit range when there is no data; one range for both axes when
+/// the chart has a diagonal.
+std::pair<Range, Range> lineChartRanges(const LineChart& c) {
   Range xr, yr;
   for (std::size_t i = 0; i < c.series.size(); ++i) {
     const auto& s = c.series[i];
@@ -227,9 +227,11 @@ std::string renderSvg(const LineChart& c) {
     const double lo = std::min(xr.lo, yr.lo), hi = std::max(xr.hi, yr.hi);
     xr = yr = {lo, hi};
   }
-  const Ticks xt = axisTicks(c.x, xr.lo, xr.hi), yt = axisTicks(c.y, yr.lo, yr.hi);
+  return {xr, yr};
+}
 
-  // Legend: series with names, then distinct shaded-range labels.
+/// The legend of a line chart: series with names, then distinct shaded-range labels.
+std::vector<LegendItem> lineChartLegend(const LineChart& c) {
   std::vector<LegendItem> items;
   for (std::size_t i = 0; i < c.series.size(); ++i) {
     const auto& s = c.series[i];
@@ -243,137 +245,199 @@ std::string renderSvg(const LineChart& c) {
     seen[r.label] = true;
     items.push_back({r.label, r.colour, "", LegendKind::Swatch});
   }
+  return items;
+}
+
+/// Where a line chart's plot box sits in its figure [px], and the legend rows below it.
+struct PlotFrame {
+  double px0 = 0, px1 = 0, py0 = 0, py1 = 0;  ///< [px] the plot box
+  double events_bottom = 0;                   ///< [px] room for event ticks under the box
+  double height = 0;                          ///< [px] the whole figure, legend included
+  std::vector<std::vector<LegendItem>> rows;  ///< the legend, row by row
+};
+
+/// Lays out a line chart: room for the y tick labels, the title, event ticks outside the box (they
+/// never hide data) and the legend.
+PlotFrame lineChartFrame(const LineChart& c, const Ticks& yt, const std::vector<LegendItem>& items) {
   std::size_t ylabel_chars = 0;
   for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
   const double left = 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
-  // Event ticks sit outside the plot (above it, or between it and the x tick labels): they never hide data.
   const auto onEdge = [&](bool bottomEdge) {
     return std::any_of(c.events.begin(), c.events.end(), [&](const XEvent& e) { return e.bottom == bottomEdge; });
   };
-  const double eventsTop = onEdge(false) ? 16.0 : 0.0, eventsBottom = onEdge(true) ? 16.0 : 0.0;
-  const double right = 18.0, top = (c.title.empty() ? 12.0 : 32.0) + eventsTop, bottom = 46.0 + eventsBottom;
-  const auto rows = legendRows(items, c.width - left - right);
-  const double height = c.height + kLegendRow * static_cast<double>(rows.size()) + (rows.empty() ? 0.0 : 6.0);
-  const double px0 = left, px1 = c.width - right, py0 = top, py1 = c.height - bottom;
-  if (px1 - px0 < 50 || py1 - py0 < 50) throw std::invalid_argument("chart: figure too small for its axes");
-  const Scale sx{xt.lo, xt.hi, px0, px1, c.x.log}, sy{yt.lo, yt.hi, py1, py0, c.y.log};
+  const double eventsTop = onEdge(false) ? 16.0 : 0.0;
+  PlotFrame f;
+  f.events_bottom = onEdge(true) ? 16.0 : 0.0;
+  const double right = 18.0, top = (c.title.empty() ? 12.0 : 32.0) + eventsTop, bottom = 46.0 + f.events_bottom;
+  f.rows = legendRows(items, c.width - left - right);
+  f.height = c.height + kLegendRow * static_cast<double>(f.rows.size()) + (f.rows.empty() ? 0.0 : 6.0);
+  f.px0 = left;
+  f.px1 = c.width - right;
+  f.py0 = top;
+  f.py1 = c.height - bottom;
+  if (f.px1 - f.px0 < 50 || f.py1 - f.py0 < 50) throw std::invalid_argument("chart: figure too small for its axes");
+  return f;
+}
 
-  SvgWriter svg(c.width, height);
-  svg.rect(0, 0, c.width, height, {{"fill", "#ffffff"}});
-  if (!c.title.empty()) svg.text(px0, 20, c.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
-
-  // Shaded ranges under everything.
+/// Shaded x ranges, drawn under everything else.
+void drawShaded(SvgWriter& svg, const LineChart& c, const Scale& sx, const PlotFrame& f) {
   for (const auto& r : c.shaded) {
     if (!sx.valid(r.x0) || !sx.valid(r.x1)) continue;
-    const double a = std::clamp(sx(std::min(r.x0, r.x1)), px0, px1), b = std::clamp(sx(std::max(r.x0, r.x1)), px0, px1);
+    const double a = std::clamp(sx(std::min(r.x0, r.x1)), f.px0, f.px1);
+    const double b = std::clamp(sx(std::max(r.x0, r.x1)), f.px0, f.px1);
     if (b <= a) continue;
-    svg.open("rect", {{"x", svgNum(a)}, {"y", svgNum(py0)}, {"width", svgNum(b - a)}, {"height", svgNum(py1 - py0)},
+    svg.open("rect", {{"x", svgNum(a)}, {"y", svgNum(f.py0)}, {"width", svgNum(b - a)}, {"height", svgNum(f.py1 - f.py0)},
                       {"fill", r.colour.empty() ? "#999999" : r.colour}, {"fill-opacity", "0.16"}});
     svg.title(r.label + ": " + formatNumber(r.x0, 2) + " to " + formatNumber(r.x1, 2) + " " + c.x.unit);
     svg.close();
   }
-  // Grid and ticks.
+}
+
+/// Grid, tick labels and the two axis titles.
+void drawAxes(SvgWriter& svg, const LineChart& c, const Ticks& xt, const Ticks& yt, const Scale& sx, const Scale& sy,
+              const PlotFrame& f) {
   svg.open("g", {{"class", "grid"}, {"stroke", kGrid}, {"stroke-width", "1"}});
-  for (const double v : xt.values) svg.line(sx(v), py0, sx(v), py1);
-  for (const double v : yt.values) svg.line(px0, sy(v), px1, sy(v));
+  for (const double v : xt.values) svg.line(sx(v), f.py0, sx(v), f.py1);
+  for (const double v : yt.values) svg.line(f.px0, sy(v), f.px1, sy(v));
   svg.close();
   svg.open("g", {{"class", "ticks"}, {"fill", kInk}, {"font-size", "11"}});
   for (std::size_t i = 0; i < xt.values.size(); ++i) {
-    svg.text(sx(xt.values[i]), py1 + 15 + eventsBottom, xt.labels[i], {{"text-anchor", "middle"}});
+    svg.text(sx(xt.values[i]), f.py1 + 15 + f.events_bottom, xt.labels[i], {{"text-anchor", "middle"}});
   }
   for (std::size_t i = 0; i < yt.values.size(); ++i) {
-    svg.text(px0 - 5, sy(yt.values[i]) + 4, yt.labels[i], {{"text-anchor", "end"}});
+    svg.text(f.px0 - 5, sy(yt.values[i]) + 4, yt.labels[i], {{"text-anchor", "end"}});
   }
   svg.close();
-  svg.text((px0 + px1) / 2, py1 + 34 + eventsBottom, xtitle, {{"text-anchor", "middle"}, {"fill", kInk}});
-  svg.text(0, 0, ytitle,
+  svg.text((f.px0 + f.px1) / 2, f.py1 + 34 + f.events_bottom, axisTitle(c.x, "x"),
+           {{"text-anchor", "middle"}, {"fill", kInk}});
+  svg.text(0, 0, axisTitle(c.y, "y"),
            {{"text-anchor", "middle"}, {"fill", kInk},
-            {"transform", "translate(14," + svgNum((py0 + py1) / 2) + ") rotate(-90)"}});
+            {"transform", "translate(14," + svgNum((f.py0 + f.py1) / 2) + ") rotate(-90)"}});
+}
 
-  // Reference lines.
+/// The horizontal reference line and the y = x diagonal, where the chart asks for them.
+void drawReferenceLines(SvgWriter& svg, const LineChart& c, const Ticks& xt, const Ticks& yt, const Scale& sx,
+                        const Scale& sy, const PlotFrame& f) {
   if (c.y_ref && sy.valid(*c.y_ref) && *c.y_ref >= std::min(yt.lo, yt.hi) && *c.y_ref <= std::max(yt.lo, yt.hi)) {
-    svg.line(px0, sy(*c.y_ref), px1, sy(*c.y_ref), {{"stroke", "#666666"}, {"stroke-width", "1"}});
+    svg.line(f.px0, sy(*c.y_ref), f.px1, sy(*c.y_ref), {{"stroke", "#666666"}, {"stroke-width", "1"}});
   }
-  if (c.diagonal) {
-    const double lo = std::max(xt.lo, yt.lo), hi = std::min(xt.hi, yt.hi);
-    if (hi > lo && sx.valid(lo) && sy.valid(lo)) {
-      svg.open("line", {{"x1", svgNum(sx(lo))}, {"y1", svgNum(sy(lo))}, {"x2", svgNum(sx(hi))}, {"y2", svgNum(sy(hi))},
-                        {"stroke", "#555555"}, {"stroke-width", "1.2"}, {"stroke-dasharray", "5 4"}});
-      svg.title("y = x");
-      svg.close();
-    }
+  if (!c.diagonal) return;
+  const double lo = std::max(xt.lo, yt.lo), hi = std::min(xt.hi, yt.hi);
+  if (hi > lo && sx.valid(lo) && sy.valid(lo)) {
+    svg.open("line", {{"x1", svgNum(sx(lo))}, {"y1", svgNum(sy(lo))}, {"x2", svgNum(sx(hi))}, {"y2", svgNum(sy(hi))},
+                      {"stroke", "#555555"}, {"stroke-width", "1.2"}, {"stroke-dasharray", "5 4"}});
+    svg.title("y = x");
+    svg.close();
   }
+}
 
-  // Series: bands, then lines, then points.
-  for (std::size_t i = 0; i < c.series.size(); ++i) {
-    const auto& s = c.series[i];
-    const std::string colour = s.colour.empty() ? seriesColour(i) : s.colour;
-    svg.open("g", {{"class", "series"}});
-    if (!s.name.empty()) svg.title(s.name);
-    if (!s.y_low.empty()) {
-      std::vector<std::pair<double, double>> up, lowv;
-      for (std::size_t k = 0; k < s.x.size(); ++k) {
-        if (!sx.valid(s.x[k]) || !sy.valid(s.y_low[k]) || !sy.valid(s.y_high[k])) continue;
-        const double x = std::clamp(sx(s.x[k]), px0, px1);
-        up.push_back({x, std::clamp(sy(s.y_high[k]), py0, py1)});
-        lowv.push_back({x, std::clamp(sy(s.y_low[k]), py0, py1)});
-      }
-      std::reverse(lowv.begin(), lowv.end());
-      up.insert(up.end(), lowv.begin(), lowv.end());
-      if (up.size() >= 3) svg.leaf("polygon", {{"points", svgPoints(up)}, {"fill", colour}, {"fill-opacity", "0.18"}, {"stroke", "none"}});
+/// A series' band between y_low and y_high, as one filled polygon.
+void drawBand(SvgWriter& svg, const Series& s, const std::string& colour, const Scale& sx, const Scale& sy,
+              const PlotFrame& f) {
+  std::vector<std::pair<double, double>> up, lowv;
+  for (std::size_t k = 0; k < s.x.size(); ++k) {
+    if (!sx.valid(s.x[k]) || !sy.valid(s.y_low[k]) || !sy.valid(s.y_high[k])) continue;
+    const double x = std::clamp(sx(s.x[k]), f.px0, f.px1);
+    up.push_back({x, std::clamp(sy(s.y_high[k]), f.py0, f.py1)});
+    lowv.push_back({x, std::clamp(sy(s.y_low[k]), f.py0, f.py1)});
+  }
+  std::reverse(lowv.begin(), lowv.end());
+  up.insert(up.end(), lowv.begin(), lowv.end());
+  if (up.size() >= 3) svg.leaf("polygon", {{"points", svgPoints(up)}, {"fill", colour}, {"fill-opacity", "0.18"}, {"stroke", "none"}});
+}
+
+/// A series' line (or steps), clipped to the plot box, with gaps at values the axes cannot show.
+void drawLine(SvgWriter& svg, const Series& s, const std::string& colour, const Scale& sx, const Scale& sy,
+              const PlotFrame& f) {
+  std::vector<std::pair<double, double>> px;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < s.x.size(); ++k) {
+    const bool ok = sx.valid(s.x[k]) && sy.valid(s.y[k]);
+    const double X = ok ? sx(s.x[k]) : nan, Y = ok ? sy(s.y[k]) : nan;
+    px.push_back({X, Y});
+    if (s.style == SeriesStyle::Steps && k + 1 < s.x.size()) {
+      const bool ok2 = ok && sx.valid(s.x[k + 1]);
+      px.push_back({ok2 ? sx(s.x[k + 1]) : nan, Y});
     }
-    if (s.style != SeriesStyle::Points) {
-      std::vector<std::pair<double, double>> px;
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      for (std::size_t k = 0; k < s.x.size(); ++k) {
-        const bool ok = sx.valid(s.x[k]) && sy.valid(s.y[k]);
-        const double X = ok ? sx(s.x[k]) : nan, Y = ok ? sy(s.y[k]) : nan;
-        px.push_back({X, Y});
-        if (s.style == SeriesStyle::Steps && k + 1 < s.x.size()) {
-          const bool ok2 = ok && sx.valid(s.x[k + 1]);
-          px.push_back({ok2 ? sx(s.x[k + 1]) : nan, Y});
-        }
-      }
-      const std::string d = clippedPathData(px, px0, py0, px1, py1);
-      if (!d.empty()) {
-        Attrs a = {{"d", d}, {"fill", "none"}, {"stroke", colour}, {"stroke-width", svgNum(s.width)},
-                   {"stroke-linejoin", "round"}};
-        if (!s.dash.empty()) a.push_back({"stroke-dasharray", s.dash});
-        svg.leaf("path", a);
-      }
-    }
-    if (s.style == SeriesStyle::Points || s.style == SeriesStyle::LineAndPoints) {
-      svg.open("g", {{"fill", colour}, {"fill-opacity", s.style == SeriesStyle::Points ? "0.55" : "1"}});
-      for (std::size_t k = 0; k < s.x.size(); ++k) {
-        if (!sx.valid(s.x[k]) || !sy.valid(s.y[k])) continue;
-        const double X = sx(s.x[k]), Y = sy(s.y[k]);
-        if (X < px0 - 0.5 || X > px1 + 0.5 || Y < py0 - 0.5 || Y > py1 + 0.5) continue;
-        svg.leaf("circle", {{"cx", svgNum(X)}, {"cy", svgNum(Y)}, {"r", "2.6"}});
-      }
-      svg.close();
+  }
+  const std::string d = clippedPathData(px, f.px0, f.py0, f.px1, f.py1);
+  if (d.empty()) return;
+  Attrs a = {{"d", d}, {"fill", "none"}, {"stroke", colour}, {"stroke-width", svgNum(s.width)}, {"stroke-linejoin", "round"}};
+  if (!s.dash.empty()) a.push_back({"stroke-dasharray", s.dash});
+  svg.leaf("path", a);
+}
+
+/// True when the pixel (X, Y) lies in the plot box (half a pixel of tolerance).
+bool inBox(const PlotFrame& f, double X, double Y) {
+  return !(X < f.px0 - 0.5 || X > f.px1 + 0.5 || Y < f.py0 - 0.5 || Y > f.py1 + 0.5);
+}
+
+/// One series: its band, then its line, then its points.
+void drawSeries(SvgWriter& svg, const Series& s, const std::string& colour, const Scale& sx, const Scale& sy,
+                const PlotFrame& f) {
+  svg.open("g", {{"class", "series"}});
+  if (!s.name.empty()) svg.title(s.name);
+  if (!s.y_low.empty()) drawBand(svg, s, colour, sx, sy, f);
+  if (s.style != SeriesStyle::Points) drawLine(svg, s, colour, sx, sy, f);
+  if (s.style == SeriesStyle::Points || s.style == SeriesStyle::LineAndPoints) {
+    svg.open("g", {{"fill", colour}, {"fill-opacity", s.style == SeriesStyle::Points ? "0.55" : "1"}});
+    for (std::size_t k = 0; k < s.x.size(); ++k) {
+      if (!sx.valid(s.x[k]) || !sy.valid(s.y[k])) continue;
+      const double X = sx(s.x[k]), Y = sy(s.y[k]);
+      if (inBox(f, X, Y)) svg.leaf("circle", {{"cx", svgNum(X)}, {"cy", svgNum(Y)}, {"r", "2.6"}});
     }
     svg.close();
   }
-  // Markers on top.
+  svg.close();
+}
+
+/// Labelled markers, drawn on top of the series.
+void drawMarkers(SvgWriter& svg, const LineChart& c, const Scale& sx, const Scale& sy, const PlotFrame& f) {
   for (const auto& m : c.markers) {
     if (!sx.valid(m.x) || !sy.valid(m.y)) continue;
     const double X = sx(m.x), Y = sy(m.y);
-    if (X < px0 - 0.5 || X > px1 + 0.5 || Y < py0 - 0.5 || Y > py1 + 0.5) continue;
+    if (!inBox(f, X, Y)) continue;
     svg.open("g", {{"class", "marker"}});
     svg.title(m.label + " (" + formatNumber(m.x, 2) + " " + c.x.unit + ", " + formatNumber(m.y, 2) + " " + c.y.unit + ")");
     svg.leaf("circle", {{"cx", svgNum(X)}, {"cy", svgNum(Y)}, {"r", "6"}, {"fill", "none"}, {"stroke", m.colour}, {"stroke-width", "2"}});
-    const bool leftSide = X > (px0 + px1) / 2;
+    const bool leftSide = X > (f.px0 + f.px1) / 2;
     svg.text(X + (leftSide ? -9 : 9), Y - 8, m.label, {{"fill", m.colour}, {"text-anchor", leftSide ? "end" : "start"}, {"font-weight", "bold"}});
     svg.close();
   }
-  drawEvents(svg, c.events, sx, px0, py0, px1, py1);
-  svg.rect(px0, py0, px1 - px0, py1 - py0, {{"fill", "none"}, {"stroke", "#888888"}, {"stroke-width", "1"}});
-  drawLegend(svg, rows, px0, c.height - 4);
+}
+
+}  // namespace
+
+std::string renderSvg(const LineChart& c) {
+  axisTitle(c.x, "x");  // both axes need a label and a unit, checked before anything is laid out
+  axisTitle(c.y, "y");
+  const auto [xr, yr] = lineChartRanges(c);
+  const Ticks xt = axisTicks(c.x, xr.lo, xr.hi), yt = axisTicks(c.y, yr.lo, yr.hi);
+  const PlotFrame f = lineChartFrame(c, yt, lineChartLegend(c));
+  const Scale sx{xt.lo, xt.hi, f.px0, f.px1, c.x.log}, sy{yt.lo, yt.hi, f.py1, f.py0, c.y.log};
+
+  SvgWriter svg(c.width, f.height);
+  svg.rect(0, 0, c.width, f.height, {{"fill", "#ffffff"}});
+  if (!c.title.empty()) svg.text(f.px0, 20, c.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
+  drawShaded(svg, c, sx, f);
+  drawAxes(svg, c, xt, yt, sx, sy, f);
+  drawReferenceLines(svg, c, xt, yt, sx, sy, f);
+  for (std::size_t i = 0; i < c.series.size(); ++i) {
+    const auto& s = c.series[i];
+    drawSeries(svg, s, s.colour.empty() ? seriesColour(i) : s.colour, sx, sy, f);
+  }
+  drawMarkers(svg, c, sx, sy, f);
+  drawEvents(svg, c.events, sx, f.px0, f.py0, f.px1, f.py1);
+  svg.rect(f.px0, f.py0, f.px1 - f.px0, f.py1 - f.py0, {{"fill", "none"}, {"stroke", "#888888"}, {"stroke-width", "1"}});
+  drawLegend(svg, f.rows, f.px0, c.height - 4);
   return svg.str();
 }
 
-std::string renderSvg(const BarChart& c) {
-  const std::string ytitle = axisTitle(c.y, "value");
+namespace {
+
+/// Checks a bar chart's shape: a linear value axis, one value row per series, one value per category.
+void checkBarChart(const BarChart& c) {
+  axisTitle(c.y, "value");
   if (c.y.log) throw std::invalid_argument("bar chart: a logarithmic value axis is not supported");
   if (c.values.size() != c.series.size()) {
     throw std::invalid_argument("bar chart '" + c.title + "': " + std::to_string(c.values.size()) + " value rows for " +
@@ -386,12 +450,15 @@ std::string renderSvg(const BarChart& c) {
                                   std::to_string(c.categories.size()) + " categories");
     }
   }
-  const std::size_t nc = c.categories.size(), ns = c.series.size();
+}
+
+/// The value range a bar chart shows: zero, every bar, and every stack's positive and negative sums.
+Range barValueRange(const BarChart& c) {
   Range r;
   r.add(0.0, false);
-  for (std::size_t k = 0; k < nc; ++k) {
+  for (std::size_t k = 0; k < c.categories.size(); ++k) {
     double pos = 0.0, neg = 0.0;
-    for (std::size_t s = 0; s < ns; ++s) {
+    for (std::size_t s = 0; s < c.series.size(); ++s) {
       const double v = c.values[s][k];
       if (!std::isfinite(v)) continue;
       if (c.stacked) {
@@ -403,73 +470,101 @@ std::string renderSvg(const BarChart& c) {
     r.add(pos, false);
     r.add(neg, false);
   }
-  const Ticks yt = axisTicks(c.y, r.lo, r.hi * (c.stacked ? 1.06 : 1.0));
-  auto colourOf = [&](std::size_t s) { return s < c.colours.size() && !c.colours[s].empty() ? c.colours[s] : seriesColour(s); };
+  return r;
+}
+
+/// The colour of bar series `s`: the chart's own, else the palette's.
+std::string barColour(const BarChart& c, std::size_t s) {
+  return s < c.colours.size() && !c.colours[s].empty() ? c.colours[s] : seriesColour(s);
+}
+
+/// Lays out a bar chart: room for the value tick labels, the title, the category label and the legend.
+PlotFrame barChartFrame(const BarChart& c, const Ticks& yt) {
   std::vector<LegendItem> items;
-  for (std::size_t s = 0; s < ns; ++s) items.push_back({c.series[s], colourOf(s), "", LegendKind::Swatch});
+  for (std::size_t s = 0; s < c.series.size(); ++s) items.push_back({c.series[s], barColour(c, s), "", LegendKind::Swatch});
   std::size_t ylabel_chars = 0;
   for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
   const double left = 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
   const double right = 18.0, top = c.title.empty() ? 12.0 : 32.0, bottom = c.category_label.empty() ? 30.0 : 46.0;
-  const auto rows = legendRows(items, c.width - left - right);
-  const double height = c.height + kLegendRow * static_cast<double>(rows.size()) + (rows.empty() ? 0.0 : 6.0);
-  const double px0 = left, px1 = c.width - right, py0 = top, py1 = c.height - bottom;
-  if (px1 - px0 < 50 || py1 - py0 < 50) throw std::invalid_argument("bar chart: figure too small for its axes");
-  const Scale sy{yt.lo, yt.hi, py1, py0, false};
+  PlotFrame f;
+  f.rows = legendRows(items, c.width - left - right);
+  f.height = c.height + kLegendRow * static_cast<double>(f.rows.size()) + (f.rows.empty() ? 0.0 : 6.0);
+  f.px0 = left;
+  f.px1 = c.width - right;
+  f.py0 = top;
+  f.py1 = c.height - bottom;
+  if (f.px1 - f.px0 < 50 || f.py1 - f.py0 < 50) throw std::invalid_argument("bar chart: figure too small for its axes");
+  return f;
+}
 
-  SvgWriter svg(c.width, height);
-  svg.rect(0, 0, c.width, height, {{"fill", "#ffffff"}});
-  if (!c.title.empty()) svg.text(px0, 20, c.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
+/// Grid, value tick labels, the value axis title and the category label.
+void drawBarAxes(SvgWriter& svg, const BarChart& c, const Ticks& yt, const Scale& sy, const PlotFrame& f) {
   svg.open("g", {{"class", "grid"}, {"stroke", kGrid}});
-  for (const double v : yt.values) svg.line(px0, sy(v), px1, sy(v));
+  for (const double v : yt.values) svg.line(f.px0, sy(v), f.px1, sy(v));
   svg.close();
   svg.open("g", {{"class", "ticks"}, {"fill", kInk}, {"font-size", "11"}});
-  for (std::size_t i = 0; i < yt.values.size(); ++i) svg.text(px0 - 5, sy(yt.values[i]) + 4, yt.labels[i], {{"text-anchor", "end"}});
+  for (std::size_t i = 0; i < yt.values.size(); ++i) svg.text(f.px0 - 5, sy(yt.values[i]) + 4, yt.labels[i], {{"text-anchor", "end"}});
   svg.close();
-  svg.text(0, 0, ytitle,
-           {{"text-anchor", "middle"}, {"fill", kInk}, {"transform", "translate(14," + svgNum((py0 + py1) / 2) + ") rotate(-90)"}});
-  if (!c.category_label.empty()) svg.text((px0 + px1) / 2, py1 + 36, c.category_label, {{"text-anchor", "middle"}, {"fill", kInk}});
+  svg.text(0, 0, axisTitle(c.y, "value"),
+           {{"text-anchor", "middle"}, {"fill", kInk}, {"transform", "translate(14," + svgNum((f.py0 + f.py1) / 2) + ") rotate(-90)"}});
+  if (!c.category_label.empty()) {
+    svg.text((f.px0 + f.px1) / 2, f.py1 + 36, c.category_label, {{"text-anchor", "middle"}, {"fill", kInk}});
+  }
+}
 
-  const double band = nc ? (px1 - px0) / static_cast<double>(nc) : 0.0;
+/// Category `k`: its label (shrunk, down to 8 px, to keep a gap to its neighbours), its bars side
+/// by side or stacked, and a stack's total above it.
+void drawCategory(SvgWriter& svg, const BarChart& c, std::size_t k, const Scale& sy, const PlotFrame& f) {
+  const std::size_t nc = c.categories.size(), ns = c.series.size();
+  const double band = (f.px1 - f.px0) / static_cast<double>(nc);
   const double group = 0.76 * band;
   const double barw = c.stacked || ns == 0 ? group : group / static_cast<double>(ns);
-  for (std::size_t k = 0; k < nc; ++k) {
-    const double gx = px0 + band * static_cast<double>(k) + (band - group) / 2;
-    // Category labels shrink (down to 8 px) to keep a gap to their neighbours.
-    const double fs = std::min(12.0, std::max(8.0, (band - 5.0) / std::max<std::size_t>(1, c.categories[k].size()) / 0.62));
-    svg.text(px0 + band * (static_cast<double>(k) + 0.5), py1 + 16, c.categories[k],
-             {{"text-anchor", "middle"}, {"fill", kInk}, {"font-size", svgNum(fs)}});
-    double pos = 0.0, neg = 0.0;
-    for (std::size_t s = 0; s < ns; ++s) {
-      const double v = c.values[s][k];
-      if (!std::isfinite(v) || v == 0.0) continue;
-      double a, b, x;
-      if (c.stacked) {
-        double& base = v >= 0 ? pos : neg;
-        a = base;
-        b = base + v;
-        base = b;
-        x = gx;
-      } else {
-        a = 0.0;
-        b = v;
-        x = gx + barw * static_cast<double>(s);
-      }
-      const double y0 = std::clamp(sy(std::max(a, b)), py0, py1), y1 = std::clamp(sy(std::min(a, b)), py0, py1);
-      svg.open("rect", {{"x", svgNum(x)}, {"y", svgNum(y0)}, {"width", svgNum(std::max(1.0, barw - 1.0))},
-                        {"height", svgNum(std::max(0.0, y1 - y0))}, {"fill", colourOf(s)}, {"stroke", "#ffffff"},
-                        {"stroke-width", "0.5"}});
-      svg.title(c.series[s] + ", " + c.categories[k] + ": " + formatSignificant(v) + " " + c.y.unit);
-      svg.close();
+  const double gx = f.px0 + band * static_cast<double>(k) + (band - group) / 2;
+  const double fs = std::min(12.0, std::max(8.0, (band - 5.0) / std::max<std::size_t>(1, c.categories[k].size()) / 0.62));
+  svg.text(f.px0 + band * (static_cast<double>(k) + 0.5), f.py1 + 16, c.categories[k],
+           {{"text-anchor", "middle"}, {"fill", kInk}, {"font-size", svgNum(fs)}});
+  double pos = 0.0, neg = 0.0;
+  for (std::size_t s = 0; s < ns; ++s) {
+    const double v = c.values[s][k];
+    if (!std::isfinite(v) || v == 0.0) continue;
+    double a = 0.0, b = v, x = gx + barw * static_cast<double>(s);
+    if (c.stacked) {
+      double& base = v >= 0 ? pos : neg;
+      a = base;
+      b = base + v;
+      base = b;
+      x = gx;
     }
-    if (c.stacked && ns > 1 && pos > 0.0) {
-      svg.text(gx + group / 2, std::clamp(sy(pos), py0, py1) - 4, formatSignificant(pos),
-               {{"text-anchor", "middle"}, {"font-size", "10"}, {"fill", kInk}});
-    }
+    const double y0 = std::clamp(sy(std::max(a, b)), f.py0, f.py1), y1 = std::clamp(sy(std::min(a, b)), f.py0, f.py1);
+    svg.open("rect", {{"x", svgNum(x)}, {"y", svgNum(y0)}, {"width", svgNum(std::max(1.0, barw - 1.0))},
+                      {"height", svgNum(std::max(0.0, y1 - y0))}, {"fill", barColour(c, s)}, {"stroke", "#ffffff"},
+                      {"stroke-width", "0.5"}});
+    svg.title(c.series[s] + ", " + c.categories[k] + ": " + formatSignificant(v) + " " + c.y.unit);
+    svg.close();
   }
-  if (sy.valid(0.0) && yt.lo <= 0.0 && yt.hi >= 0.0) svg.line(px0, sy(0.0), px1, sy(0.0), {{"stroke", "#444444"}});
-  svg.rect(px0, py0, px1 - px0, py1 - py0, {{"fill", "none"}, {"stroke", "#888888"}});
-  drawLegend(svg, rows, px0, c.height - 4);
+  if (c.stacked && ns > 1 && pos > 0.0) {
+    svg.text(gx + group / 2, std::clamp(sy(pos), f.py0, f.py1) - 4, formatSignificant(pos),
+             {{"text-anchor", "middle"}, {"font-size", "10"}, {"fill", kInk}});
+  }
+}
+
+}  // namespace
+
+std::string renderSvg(const BarChart& c) {
+  checkBarChart(c);
+  const Range r = barValueRange(c);
+  const Ticks yt = axisTicks(c.y, r.lo, r.hi * (c.stacked ? 1.06 : 1.0));
+  const PlotFrame f = barChartFrame(c, yt);
+  const Scale sy{yt.lo, yt.hi, f.py1, f.py0, false};
+
+  SvgWriter svg(c.width, f.height);
+  svg.rect(0, 0, c.width, f.height, {{"fill", "#ffffff"}});
+  if (!c.title.empty()) svg.text(f.px0, 20, c.title, {{"font-size", "14"}, {"font-weight", "bold"}, {"fill", kInk}});
+  drawBarAxes(svg, c, yt, sy, f);
+  for (std::size_t k = 0; k < c.categories.size(); ++k) drawCategory(svg, c, k, sy, f);
+  if (sy.valid(0.0) && yt.lo <= 0.0 && yt.hi >= 0.0) svg.line(f.px0, sy(0.0), f.px1, sy(0.0), {{"stroke", "#444444"}});
+  svg.rect(f.px0, f.py0, f.px1 - f.px0, f.py1 - f.py0, {{"fill", "none"}, {"stroke", "#888888"}});
+  drawLegend(svg, f.rows, f.px0, c.height - 4);
   return svg.str();
 }
 
