@@ -256,26 +256,43 @@ struct PlotFrame {
   std::vector<std::vector<LegendItem>> rows;  ///< the legend, row by row
 };
 
+/// The left margin that fits the y tick labels, the axis title and a gap [px].
+double leftMargin(const Ticks& yt) {
+  std::size_t ylabel_chars = 0;
+  for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
+  return 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
+}
+
+/// Margins around a plot box [px].
+struct Margins {
+  double left, right, top, bottom;
+};
+
+/// Lays out a figure `width` x `height` [px] (the legend's rows are added below `height`) with the
+/// plot box inside margins `m`; `what` names the chart in the error when the box would be too small.
+PlotFrame layoutFrame(double width, double height, const Margins& m, const std::vector<LegendItem>& items, const char* what) {
+  PlotFrame f;
+  f.rows = legendRows(items, width - m.left - m.right);
+  f.height = height + kLegendRow * static_cast<double>(f.rows.size()) + (f.rows.empty() ? 0.0 : 6.0);
+  f.px0 = m.left;
+  f.px1 = width - m.right;
+  f.py0 = m.top;
+  f.py1 = height - m.bottom;
+  if (f.px1 - f.px0 < 50 || f.py1 - f.py0 < 50) throw std::invalid_argument(std::string(what) + ": figure too small for its axes");
+  return f;
+}
+
 /// Lays out a line chart: room for the y tick labels, the title, event ticks outside the box (they
 /// never hide data) and the legend.
 PlotFrame lineChartFrame(const LineChart& c, const Ticks& yt, const std::vector<LegendItem>& items) {
-  std::size_t ylabel_chars = 0;
-  for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
-  const double left = 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
   const auto onEdge = [&](bool bottomEdge) {
     return std::any_of(c.events.begin(), c.events.end(), [&](const XEvent& e) { return e.bottom == bottomEdge; });
   };
-  const double eventsTop = onEdge(false) ? 16.0 : 0.0;
-  PlotFrame f;
-  f.events_bottom = onEdge(true) ? 16.0 : 0.0;
-  const double right = 18.0, top = (c.title.empty() ? 12.0 : 32.0) + eventsTop, bottom = 46.0 + f.events_bottom;
-  f.rows = legendRows(items, c.width - left - right);
-  f.height = c.height + kLegendRow * static_cast<double>(f.rows.size()) + (f.rows.empty() ? 0.0 : 6.0);
-  f.px0 = left;
-  f.px1 = c.width - right;
-  f.py0 = top;
-  f.py1 = c.height - bottom;
-  if (f.px1 - f.px0 < 50 || f.py1 - f.py0 < 50) throw std::invalid_argument("chart: figure too small for its axes");
+  const double events_top = onEdge(false) ? 16.0 : 0.0, events_bottom = onEdge(true) ? 16.0 : 0.0;
+  PlotFrame f = layoutFrame(c.width, c.height, {leftMargin(yt), 18.0, (c.title.empty() ? 12.0 : 32.0) + events_top,
+                                                46.0 + events_bottom},
+                            items, "chart");
+  f.events_bottom = events_bottom;
   return f;
 }
 
@@ -482,19 +499,9 @@ std::string barColour(const BarChart& c, std::size_t s) {
 PlotFrame barChartFrame(const BarChart& c, const Ticks& yt) {
   std::vector<LegendItem> items;
   for (std::size_t s = 0; s < c.series.size(); ++s) items.push_back({c.series[s], barColour(c, s), "", LegendKind::Swatch});
-  std::size_t ylabel_chars = 0;
-  for (const auto& l : yt.labels) ylabel_chars = std::max(ylabel_chars, l.size());
-  const double left = 30.0 + kCharWidth * static_cast<double>(ylabel_chars) + 8.0;
-  const double right = 18.0, top = c.title.empty() ? 12.0 : 32.0, bottom = c.category_label.empty() ? 30.0 : 46.0;
-  PlotFrame f;
-  f.rows = legendRows(items, c.width - left - right);
-  f.height = c.height + kLegendRow * static_cast<double>(f.rows.size()) + (f.rows.empty() ? 0.0 : 6.0);
-  f.px0 = left;
-  f.px1 = c.width - right;
-  f.py0 = top;
-  f.py1 = c.height - bottom;
-  if (f.px1 - f.px0 < 50 || f.py1 - f.py0 < 50) throw std::invalid_argument("bar chart: figure too small for its axes");
-  return f;
+  return layoutFrame(c.width, c.height,
+                     {leftMargin(yt), 18.0, c.title.empty() ? 12.0 : 32.0, c.category_label.empty() ? 30.0 : 46.0}, items,
+                     "bar chart");
 }
 
 /// Grid, value tick labels, the value axis title and the category label.
