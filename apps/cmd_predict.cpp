@@ -147,6 +147,185 @@ std::string samplesCsv(const ms::MissionPrediction& p) {
   return os.str();
 }
 
+// A wind from any direction (predict --wind SPEED): the mission flown from each of kWindDirections.
+struct AnyDirection {
+  nlohmann::json directions = nlohmann::json::array();  // {from_deg, energy_j, time_s} of each direction flown
+  std::optional<ms::MissionPrediction> dearest;          // the dearest direction's prediction
+};
+
+// Flies `m` in `wind` from each of kWindDirections; sets wind.from_deg to the dearest direction and
+// setup's wind to it.
+AnyDirection flyEveryDirection(const ms::Mission& m, const en::Vehicle& v, PredictionSetup& setup, Wind& wind) {
+  AnyDirection r;
+  for (int k = 0; k < kWindDirections; ++k) {
+    Wind w = wind;
+    w.from_deg = 360.0 * k / kWindDirections;
+    setup.settings.wind = w.air();
+    ms::MissionPrediction pk = ms::predictMission(m, v, setup.model, setup.autopilot, setup.settings);
+    r.directions.push_back({{"from_deg", w.from_deg}, {"energy_j", pk.total.energy_j}, {"time_s", pk.total.time_s}});
+    if (!r.dearest || pk.total.energy_j > r.dearest->total.energy_j) {
+      r.dearest = std::move(pk);
+      wind.from_deg = w.from_deg;
+    }
+  }
+  setup.settings.wind = wind.air();
+  return r;
+}
+
+// Everything one predict run found: the prediction and what it was checked against.
+struct PredictRun {
+  ms::Mission mission;
+  std::optional<Launch> launch;
+  std::optional<Wind> wind;
+  AnyDirection any_direction;
+  std::optional<KindChoice> choice;
+  std::optional<Dispute> dispute;
+  std::optional<Coverage> coverage;
+  ms::MissionPrediction prediction;
+  std::vector<std::pair<std::string, std::string>> extra;  // facts for the text, the report and the JSON
+};
+
+// Predicts the mission of `o` with `setup`: the calibration's flights of the mission's kind decide a
+// disputed parameter, a wind from any direction is flown from each direction, and the reserve is
+// also checked for the dearer of the flights the calibration stands for and for the behaviour before
+// the calibration when the mission is outside what it flew (predict_spread.hpp).
+PredictRun runPrediction(const PredictOptions& o, const en::Vehicle& v, PredictionSetup& setup) {
+  PredictRun r;
+  r.wind = windOption(o.wind, true);
+  if (r.wind) setup.settings.wind = r.wind->air();
+  ms::ReadOptions ro;
+  ro.lenient = o.lenient;
+  r.mission = ms::readMission(o.mission, ro);
+  const ms::Mission& m = r.mission;
+  if (!o.launch.empty()) r.launch = moveHomeTo(r.mission, o.launch);
+  const calibration::MissionKind kind = calibration::missionKind(ms::sequenceMission(m), setup.autopilot);
+  r.choice = kindChoiceOf(kind, setup);
+  if (r.choice) setup.autopilot.parameters[setup.disputed_parameter] = r.choice->value;
+  if (r.wind && r.wind->any_direction) r.any_direction = flyEveryDirection(m, v, setup, *r.wind);
+  r.dispute = disputeOf(m, v, setup);
+  r.prediction = r.any_direction.dearest ? std::move(*r.any_direction.dearest)
+                                         : ms::predictMission(m, v, setup.model, setup.autopilot, setup.settings);
+  r.coverage = coverageOf(m, kind, v, setup);
+  double dearest = r.dispute ? r.dispute->energy_hi_j : 0.0;
+  if (r.coverage) dearest = std::max(dearest, r.coverage->energy_j);
+  const double wider = std::clamp(dearest / r.prediction.total.energy_j - 1.0, 0.0, 1.0);
+  if (wider > setup.settings.energy_margin) {
+    setup.settings.energy_margin = wider;
+    r.prediction = ms::predictMission(m, v, setup.model, setup.autopilot, setup.settings);
+  }
+  return r;
+}
+
+// The facts a run adds to the text and the report: launch, wind, calibration dispute and coverage.
+void addFacts(PredictRun& r) {
+  const ms::MissionPrediction& p = r.prediction;
+  if (r.launch) {
+    r.launch->absolute_items = absoluteItems(r.mission, p.flight.steps);
+    r.extra.push_back({"launch", launchText(*r.launch)});
+  }
+  if (r.wind) {
+    std::string by_direction;
+    if (!r.any_direction.directions.empty()) {
+      double lo = 1e300, hi = 0.0;
+      for (const auto& d : r.any_direction.directions) {
+        lo = std::min(lo, d["energy_j"].get<double>());
+        hi = std::max(hi, d["energy_j"].get<double>());
+      }
+      by_direction = "; by direction " + report::formatNumber(lo / 3600.0, 1) + "-" + report::formatNumber(hi / 3600.0, 1) + " Wh";
+    }
+    r.extra.push_back({"wind", r.wind->text() + by_direction});
+  }
+  if (r.dispute) r.extra.push_back({"calibration", disputeText(*r.dispute, p, r.choice)});
+  if (r.coverage) r.extra.push_back({"calibration coverage", coverageText(*r.coverage, p)});
+}
+
+// The JSON of a run: the prediction (toJson) with launch, wind, calibration_dispute and
+// calibration_coverage, each null when it does not apply.
+nlohmann::json runJson(const PredictRun& r, const ms::AutopilotConfig& ap, const PredictOptions& o) {
+  const ms::MissionPrediction& p = r.prediction;
+  nlohmann::json j = toJson(p, ap, o);
+  j["launch"] = nullptr;
+  if (r.launch) {
+    j["launch"] = {{"lat_deg", r.mission.home.lat_deg},
+                   {"lon_deg", r.mission.home.lon_deg},
+                   {"from_mission_home_m", r.launch->from_home_m},
+                   {"alt_m", r.launch->alt_m ? nlohmann::json(*r.launch->alt_m) : nlohmann::json(nullptr)},
+                   {"absolute_items", r.launch->absolute_items},
+                   {"text", launchText(*r.launch)}};
+  }
+  j["wind"] = windJson(r.wind);
+  if (r.wind) j["wind"]["directions"] = r.any_direction.directions;  // each direction flown (empty: the one given)
+  j["calibration_dispute"] = nullptr;
+  if (r.dispute) {
+    const Dispute& d = *r.dispute;
+    j["calibration_dispute"] = {{"parameter", d.parameter}, {"values", {d.lo, d.hi}},
+                                {"energy_j", {d.energy_lo_j, d.energy_hi_j}},
+                                {"time_s", {d.time_lo_s, d.time_hi_s}},
+                                {"chosen", r.choice ? nlohmann::json{{"value", r.choice->value}, {"flights", r.choice->flights}}
+                                                    : nlohmann::json(nullptr)},
+                                {"text", disputeText(d, p, r.choice)}};
+  }
+  // null: uncalibrated, or the mission is of the kind the calibration flew (or the file predates the check).
+  j["calibration_coverage"] = nullptr;
+  if (r.coverage) {
+    j["calibration_coverage"] = {{"outside", r.coverage->reasons},
+                                 {"behaviour_before", {{"energy_j", r.coverage->energy_j}, {"time_s", r.coverage->time_s}}},
+                                 {"text", coverageText(*r.coverage, p)}};
+  }
+  return j;
+}
+
+// The options of `predict`.
+void addPredictOptions(CLI::App* cmd, PredictOptions& o) {
+  cmd->add_option("MISSION", o.mission, "QGroundControl .plan or QGC WPL 110 .waypoints file")->required();
+  addVehicleOption(cmd, o.vehicle);
+  cmd->add_option("--effects", o.effects,
+                  "Comma-separated effects of the energy model (default: the vehicle file's calibration when it has one, "
+                  "else hover,kinetic,parasitic_drag from its physics)");
+  cmd->add_option("--reserve", o.reserve_pct, "Usable charge to keep on landing [%]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  cmd->add_option("--energy-margin", o.energy_margin_pct,
+                  "Extra energy the reserve verdict also checks, for the prediction's own error [%] (uncalibrated "
+                  "predictions of real flights were off by up to 8 %: docs/validation.md; 0: none)")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
+  cmd->add_option("--launch", o.launch,
+                  "Where the vehicle will arm and take off, LAT,LON [deg] or LAT,LON,ALT (ALT [m] in the home row's "
+                  "reference, usually above sea level), when not at the mission file's home: the autopilot sets home there "
+                  "and returns to it; without ALT its altitude is taken as the file's home's");
+  cmd->add_option("--wind", o.wind,
+                  "Steady wind SPEED,FROM: SPEED [m/s] blowing from the compass bearing FROM [deg] (0 north, 90 east), "
+                  "as a forecast gives it, e.g. 6,45; or SPEED alone for any direction (the dearest of 8 is predicted); the "
+                  "ArduCopter models fly against the drag at air speed and the energy model's drag is taken at air speed "
+                  "(default: still air)");
+  cmd->add_option("--samples-out", o.samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
+  cmd->add_flag("--lenient", o.lenient, "Skip unsupported mission commands with a warning instead of an error");
+  addReportOptions(cmd, o.report, o.report_svg, o.force);
+  addJsonFlag(cmd, o.json);
+}
+
+// Runs `predict` with options `o`: checks the outputs can be written, predicts, writes the samples
+// and the report, prints JSON or text.
+void runPredict(const PredictOptions& o) {
+  if (!o.samples_out.empty()) checkWritable(o.samples_out, o.force, {o.mission, o.vehicle});
+  checkReportWritable(o.report, o.report_svg, o.force, {o.mission, o.vehicle, o.samples_out});
+  const en::Vehicle v = en::loadVehicle(o.vehicle);
+  PredictionSetup setup = predictionSetup(v, o.vehicle, o.effects, o.reserve_pct);
+  setup.settings.energy_margin = o.energy_margin_pct / 100.0;
+  PredictRun r = runPrediction(o, v, setup);
+  addFacts(r);
+  const ms::AutopilotConfig& ap = setup.autopilot;
+  if (!o.samples_out.empty()) writeTextFileAtomic(o.samples_out, samplesCsv(r.prediction));
+  if (!o.report.empty() || !o.report_svg.empty()) {
+    writeReport(missionReport(r.prediction, ap, v, modelText(r.prediction, setup.calibrated), r.extra, o), o.report,
+                o.report_svg, o.force);
+  }
+  if (o.json) {
+    printJson(runJson(r, ap, o));
+  } else {
+    printText(r.prediction, ap, r.extra);
+  }
+}
+
 }  // namespace
 
 void registerPredictCommand(CLI::App& app) {
@@ -155,135 +334,8 @@ void registerPredictCommand(CLI::App& app) {
       "predict",
       "Energy, time and battery of a mission file (.plan or .waypoints) as the vehicle's autopilot flies it: "
       "take-off to landing, by phase and by item");
-  cmd->add_option("MISSION", o->mission, "QGroundControl .plan or QGC WPL 110 .waypoints file")->required();
-  addVehicleOption(cmd, o->vehicle);
-  cmd->add_option("--effects", o->effects,
-                  "Comma-separated effects of the energy model (default: the vehicle file's calibration when it has one, "
-                  "else hover,kinetic,parasitic_drag from its physics)");
-  cmd->add_option("--reserve", o->reserve_pct, "Usable charge to keep on landing [%]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
-  cmd->add_option("--energy-margin", o->energy_margin_pct,
-                  "Extra energy the reserve verdict also checks, for the prediction's own error [%] (uncalibrated "
-                  "predictions of real flights were off by up to 8 %: docs/validation.md; 0: none)")
-      ->check(CLI::Range(0.0, 100.0))
-      ->capture_default_str();
-  cmd->add_option("--launch", o->launch,
-                  "Where the vehicle will arm and take off, LAT,LON [deg] or LAT,LON,ALT (ALT [m] in the home row's "
-                  "reference, usually above sea level), when not at the mission file's home: the autopilot sets home there "
-                  "and returns to it; without ALT its altitude is taken as the file's home's");
-  cmd->add_option("--wind", o->wind,
-                  "Steady wind SPEED,FROM: SPEED [m/s] blowing from the compass bearing FROM [deg] (0 north, 90 east), "
-                  "as a forecast gives it, e.g. 6,45; or SPEED alone for any direction (the dearest of 8 is predicted); the "
-                  "ArduCopter models fly against the drag at air speed and the energy model's drag is taken at air speed "
-                  "(default: still air)");
-  cmd->add_option("--samples-out", o->samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
-  cmd->add_flag("--lenient", o->lenient, "Skip unsupported mission commands with a warning instead of an error");
-  addReportOptions(cmd, o->report, o->report_svg, o->force);
-  addJsonFlag(cmd, o->json);
-  cmd->callback([o] {
-    if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, {o->mission, o->vehicle});
-    checkReportWritable(o->report, o->report_svg, o->force, {o->mission, o->vehicle, o->samples_out});
-    const en::Vehicle v = en::loadVehicle(o->vehicle);
-    PredictionSetup setup = predictionSetup(v, o->vehicle, o->effects, o->reserve_pct);
-    setup.settings.energy_margin = o->energy_margin_pct / 100.0;
-    std::optional<Wind> wind = windOption(o->wind, true);
-    if (wind) setup.settings.wind = wind->air();
-    const en::EnergyModel& model = setup.model;
-    const bool use_calibration = setup.calibrated;
-    const ms::AutopilotConfig& ap = setup.autopilot;
-    ms::ReadOptions ro;
-    ro.lenient = o->lenient;
-    ms::Mission m = ms::readMission(o->mission, ro);
-    std::optional<Launch> launch;
-    if (!o->launch.empty()) launch = moveHomeTo(m, o->launch);
-    // What the mission asks of the vehicle, for the calibration's flights of its kind to decide a
-    // disputed parameter (predict_spread.hpp, KindChoice) and for the coverage check.
-    const calibration::MissionKind kind = calibration::missionKind(ms::sequenceMission(m), setup.autopilot);
-    const std::optional<KindChoice> choice = kindChoiceOf(kind, setup);
-    if (choice) setup.autopilot.parameters[setup.disputed_parameter] = choice->value;
-    // A wind from any direction: the mission is flown from each of kWindDirections, and the dearest
-    // is the prediction (the reserve is checked for it).
-    nlohmann::json wind_directions = nlohmann::json::array();
-    std::optional<ms::MissionPrediction> dearest_wind;  // the dearest direction's prediction
-    if (wind && wind->any_direction) {
-      for (int k = 0; k < kWindDirections; ++k) {
-        Wind w = *wind;
-        w.from_deg = 360.0 * k / kWindDirections;
-        setup.settings.wind = w.air();
-        ms::MissionPrediction pk = ms::predictMission(m, v, model, ap, setup.settings);
-        wind_directions.push_back({{"from_deg", w.from_deg}, {"energy_j", pk.total.energy_j}, {"time_s", pk.total.time_s}});
-        if (!dearest_wind || pk.total.energy_j > dearest_wind->total.energy_j) {
-          dearest_wind = std::move(pk);
-          wind->from_deg = w.from_deg;
-        }
-      }
-      setup.settings.wind = wind->air();
-    }
-    const std::optional<Dispute> dispute = disputeOf(m, v, setup);
-    ms::MissionPrediction p = dearest_wind ? std::move(*dearest_wind) : ms::predictMission(m, v, model, ap, setup.settings);
-    const std::optional<Coverage> coverage = coverageOf(m, kind, v, setup);
-    // The reserve is also checked for the dearer of the flights the calibration stands for, and for
-    // the behaviour before the calibration when the mission is outside what it flew.
-    double dearest = dispute ? dispute->energy_hi_j : 0.0;
-    if (coverage) dearest = std::max(dearest, coverage->energy_j);
-    const double wider = std::clamp(dearest / p.total.energy_j - 1.0, 0.0, 1.0);
-    if (wider > setup.settings.energy_margin) {
-      setup.settings.energy_margin = wider;
-      p = ms::predictMission(m, v, model, ap, setup.settings);
-    }
-    std::vector<std::pair<std::string, std::string>> extra;  // facts for the text, the report and the JSON
-    if (launch) {
-      launch->absolute_items = absoluteItems(m, p.flight.steps);
-      extra.push_back({"launch", launchText(*launch)});
-    }
-    if (wind) {
-      std::string by_direction;
-      if (!wind_directions.empty()) {
-        double lo = 1e300, hi = 0.0;
-        for (const auto& d : wind_directions) lo = std::min(lo, d["energy_j"].get<double>()), hi = std::max(hi, d["energy_j"].get<double>());
-        by_direction = "; by direction " + report::formatNumber(lo / 3600.0, 1) + "-" + report::formatNumber(hi / 3600.0, 1) + " Wh";
-      }
-      extra.push_back({"wind", wind->text() + by_direction});
-    }
-    if (dispute) extra.push_back({"calibration", disputeText(*dispute, p, choice)});
-    if (coverage) extra.push_back({"calibration coverage", coverageText(*coverage, p)});
-    if (!o->samples_out.empty()) writeTextFileAtomic(o->samples_out, samplesCsv(p));
-    if (!o->report.empty() || !o->report_svg.empty()) {
-      writeReport(missionReport(p, ap, v, modelText(p, use_calibration), extra, *o), o->report, o->report_svg, o->force);
-    }
-    if (o->json) {
-      nlohmann::json j = toJson(p, ap, *o);
-      j["launch"] = nullptr;
-      if (launch) {
-        j["launch"] = {{"lat_deg", m.home.lat_deg},
-                       {"lon_deg", m.home.lon_deg},
-                       {"from_mission_home_m", launch->from_home_m},
-                       {"alt_m", launch->alt_m ? nlohmann::json(*launch->alt_m) : nlohmann::json(nullptr)},
-                       {"absolute_items", launch->absolute_items},
-                       {"text", launchText(*launch)}};
-      }
-      j["wind"] = windJson(wind);
-      if (wind) j["wind"]["directions"] = wind_directions;  // each direction flown (empty: the one given)
-      j["calibration_dispute"] = nullptr;
-      if (dispute) {
-        j["calibration_dispute"] = {{"parameter", dispute->parameter}, {"values", {dispute->lo, dispute->hi}},
-                                    {"energy_j", {dispute->energy_lo_j, dispute->energy_hi_j}},
-                                    {"time_s", {dispute->time_lo_s, dispute->time_hi_s}},
-                                    {"chosen", choice ? nlohmann::json{{"value", choice->value}, {"flights", choice->flights}}
-                                                      : nlohmann::json(nullptr)},
-                                    {"text", disputeText(*dispute, p, choice)}};
-      }
-      // null: uncalibrated, or the mission is of the kind the calibration flew (or the file predates the check).
-      j["calibration_coverage"] = nullptr;
-      if (coverage) {
-        j["calibration_coverage"] = {{"outside", coverage->reasons},
-                                     {"behaviour_before", {{"energy_j", coverage->energy_j}, {"time_s", coverage->time_s}}},
-                                     {"text", coverageText(*coverage, p)}};
-      }
-      printJson(j);
-    } else {
-      printText(p, ap, extra);
-    }
-  });
+  addPredictOptions(cmd, *o);
+  cmd->callback([o] { runPredict(*o); });
 }
 
 }  // namespace wattswath::apps
