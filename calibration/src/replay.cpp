@@ -56,6 +56,156 @@ std::vector<LegSpan> legsFromBoundaries(const std::vector<int>& starts, const st
   return legs;
 }
 
+// Copies the log's samples into `P` (positions, voltages, currents, measured power) and returns
+// their times [s]; a sample without power is an error naming it.
+std::vector<double> copySamples(const FlightLog& log, PreparedLog& P) {
+  const auto& S = log.samples;
+  const int n = static_cast<int>(S.size());
+  P.source = log.source;
+  P.states.resize(n);
+  P.measured.resize(n);
+  P.weight.resize(n);
+  P.phase.resize(n);
+  P.position.resize(n);
+  P.voltage.resize(n);
+  P.current.resize(n);
+  std::vector<double> t(n);
+  for (int i = 0; i < n; ++i) {
+    t[i] = S[i].t;
+    P.position[i] = S[i].position;
+    P.voltage[i] = S[i].voltage;
+    P.current[i] = S[i].current;
+    P.measured[i] = std::isfinite(S[i].power) ? S[i].power : S[i].voltage * S[i].current;
+    if (!std::isfinite(P.measured[i])) {
+      throw std::invalid_argument(log.source + ": sample " + std::to_string(i) + " (t = " + std::to_string(t[i]) +
+                                  " s) has no power (power_w or voltage_v * current_a)");
+    }
+  }
+  for (int i = 0; i < n; ++i) {  // each sample stands for half the time to each neighbour
+    const double prev = i > 0 ? t[i] - t[i - 1] : 0.0;
+    const double next = i + 1 < n ? t[i + 1] - t[i] : 0.0;
+    P.weight[i] = 0.5 * (prev + next);
+  }
+  return t;
+}
+
+// The heading of each sample [rad]: the logged yaw when every sample has one, else the track
+// (held while the vehicle is slower than `stop_speed` [m/s]).
+std::vector<double> headings(const std::vector<LogSample>& S, double stop_speed) {
+  const bool have_yaw = std::all_of(S.begin(), S.end(), [](const LogSample& x) { return std::isfinite(x.yaw); });
+  std::vector<double> heading(S.size());
+  double last_track = 0.0;
+  for (size_t i = 0; i < S.size(); ++i) {
+    if (S[i].velocity.head<2>().norm() > stop_speed) last_track = std::atan2(S[i].velocity.y(), S[i].velocity.x());
+    heading[i] = have_yaw ? S[i].yaw : last_track;
+  }
+  return heading;
+}
+
+// The flight phase of an airborne state: climbing or descending, at rest (hover, or a turn on the
+// spot), turning along a track, accelerating, braking or cruising.
+Phase airbornePhase(const MotionState& m, const SegmentSettings& set) {
+  const double vz = m.velocity.z(), hs = m.velocity.head<2>().norm();
+  if (vz > set.vertical_speed) return Phase::Climb;
+  if (vz < -set.vertical_speed) return Phase::Descent;
+  if (hs < set.stop_speed) return std::abs(m.yaw_rate) > set.turn_rate ? Phase::Turn : Phase::Hover;
+  const Eigen::Vector2d vh = m.velocity.head<2>(), ah = m.acceleration.head<2>();
+  const double along = vh.dot(ah) / hs;
+  const double track_rate = std::abs(vh.x() * ah.y() - vh.y() * ah.x()) / (hs * hs);
+  if (track_rate > set.turn_rate) return Phase::Turn;
+  if (along > set.acceleration) return Phase::Accelerate;
+  if (along < -set.acceleration) return Phase::Brake;
+  return Phase::Cruise;
+}
+
+// Fills the motion states and phases of `P`. On the ground: near the lowest height, at rest and
+// drawing well under the median power (motors idle).
+void classifySamples(const std::vector<LogSample>& S, const std::vector<double>& t, const SegmentSettings& set,
+                     PreparedLog& P) {
+  const int n = static_cast<int>(S.size());
+  const std::vector<double> heading = headings(S, set.stop_speed);
+  const std::vector<double> uw = unwrap(heading);
+  const int half = static_cast<int>(set.yaw_rate_window);
+  double zmin = S[0].position.z();
+  for (const auto& x : S) zmin = std::min(zmin, x.position.z());
+  const double pmed = median(P.measured);
+  for (int i = 0; i < n; ++i) {
+    MotionState& m = P.states[i];
+    m.t = t[i];
+    m.velocity = S[i].velocity;
+    m.acceleration = S[i].acceleration;
+    m.heading = heading[i];
+    m.yaw_rate = logs::detail::localSlope(n, i, half, [&](int j) { return t[j]; }, [&](int j) { return uw[j]; });
+    m.airborne = !(S[i].position.z() - zmin < set.ground_height && S[i].velocity.head<2>().norm() < set.stop_speed &&
+                   std::abs(S[i].velocity.z()) < set.vertical_speed && P.measured[i] < set.ground_power_fraction * pmed);
+    P.phase[i] = m.airborne ? airbornePhase(m, set) : Phase::Ground;
+  }
+}
+
+// Leg starts at the waypoints: for each in turn, the first local minimum of the distance to it
+// within 3 m of the closest approach after the previous one (a later pass may come closer).
+std::vector<int> legStartsAtWaypoints(const std::vector<Eigen::Vector3d>& position,
+                                      const std::vector<Eigen::Vector3d>& waypoints) {
+  const int n = static_cast<int>(position.size());
+  std::vector<int> starts = {0};
+  int from = 0;
+  for (const auto& w : waypoints) {
+    std::vector<double> d(n, 0.0);
+    double dmin = 1e300;
+    for (int i = from; i < n; ++i) {
+      d[i] = (position[i] - w).norm();
+      dmin = std::min(dmin, d[i]);
+    }
+    int pick = -1;
+    for (int i = from; i < n && pick < 0; ++i) {
+      const bool local_min = (i == from || d[i] <= d[i - 1]) && (i + 1 == n || d[i] <= d[i + 1]);
+      if (local_min && d[i] <= dmin + 3.0) pick = i;
+    }
+    if (pick > starts.back()) starts.push_back(pick);
+    from = std::max(pick, from);
+  }
+  return starts;
+}
+
+// Splits the moving run of samples i..j at marked slow-downs: local minima of the horizontal speed
+// `hs` [m/s] below leg_slowdown times the fastest speed since the last split and up to the run's end.
+// The suffix maxima make a day-long moving run cost linear time, not a scan per local minimum.
+void splitAtSlowdowns(const std::vector<double>& hs, int i, int j, double leg_slowdown, std::vector<int>& starts) {
+  std::vector<double> after_max(static_cast<size_t>(j - i + 1));
+  after_max.back() = hs[j];
+  for (int k = j - 1; k >= i; --k) after_max[k - i] = std::max(hs[k], after_max[k - i + 1]);
+  double before_max = std::max(hs[i], hs[i + 1]);
+  for (int k = i + 2; k <= j - 2; ++k) {
+    before_max = std::max(before_max, hs[k]);
+    bool local_min = true;
+    for (int q = k - 2; q <= k + 2; ++q) local_min = local_min && hs[k] <= hs[q];
+    if (!local_min) continue;
+    if (hs[k] < leg_slowdown * std::min(before_max, after_max[k - i])) {
+      starts.push_back(k);
+      before_max = hs[k];
+    }
+  }
+}
+
+// Leg starts without waypoints: stopped runs are legs of their own; moving runs split at marked
+// slow-downs.
+std::vector<int> legStartsFromSpeed(const std::vector<LogSample>& S, const SegmentSettings& set) {
+  const int n = static_cast<int>(S.size());
+  std::vector<double> hs(n);
+  for (int i = 0; i < n; ++i) hs[i] = S[i].velocity.head<2>().norm();
+  std::vector<int> starts = {0};
+  int i = 0;
+  while (i < n) {
+    const bool stopped = hs[i] < set.stop_speed;
+    int j = i;
+    while (j + 1 < n && (hs[j + 1] < set.stop_speed) == stopped) ++j;
+    if (i > 0) starts.push_back(i);
+    if (!stopped && j - i >= 4) splitAtSlowdowns(hs, i, j, set.leg_slowdown, starts);
+    i = j + 1;
+  }
+  return starts;
+}
+
 }  // namespace
 
 void validate(const SegmentSettings& s) {
@@ -71,134 +221,13 @@ void validate(const SegmentSettings& s) {
 
 PreparedLog prepareLog(const FlightLog& log, const SegmentSettings& set, const std::vector<Eigen::Vector3d>& waypoints) {
   validate(set);
-  const auto& S = log.samples;
-  const int n = static_cast<int>(S.size());
+  const int n = static_cast<int>(log.samples.size());
   if (n < 2) throw std::invalid_argument(log.source + ": a log needs at least 2 samples to replay");
   PreparedLog P;
-  P.source = log.source;
-  P.states.resize(n);
-  P.measured.resize(n);
-  P.weight.resize(n);
-  P.phase.resize(n);
-  P.position.resize(n);
-  P.voltage.resize(n);
-  P.current.resize(n);
-  std::vector<double> t(n), hs(n);
-  for (int i = 0; i < n; ++i) {
-    t[i] = S[i].t;
-    P.position[i] = S[i].position;
-    P.voltage[i] = S[i].voltage;
-    P.current[i] = S[i].current;
-    P.measured[i] = std::isfinite(S[i].power) ? S[i].power : S[i].voltage * S[i].current;
-    if (!std::isfinite(P.measured[i])) {
-      throw std::invalid_argument(log.source + ": sample " + std::to_string(i) + " (t = " + std::to_string(t[i]) +
-                                  " s) has no power (power_w or voltage_v * current_a)");
-    }
-    hs[i] = S[i].velocity.head<2>().norm();
-  }
-  for (int i = 0; i < n; ++i) {
-    const double prev = i > 0 ? t[i] - t[i - 1] : 0.0;
-    const double next = i + 1 < n ? t[i + 1] - t[i] : 0.0;
-    P.weight[i] = 0.5 * (prev + next);
-  }
-  // Heading: the logged yaw when present, else the track; yaw rate from the unwrapped heading.
-  const bool have_yaw = std::all_of(S.begin(), S.end(), [](const LogSample& x) { return std::isfinite(x.yaw); });
-  std::vector<double> heading(n);
-  double last_track = 0.0;
-  for (int i = 0; i < n; ++i) {
-    if (hs[i] > set.stop_speed) last_track = std::atan2(S[i].velocity.y(), S[i].velocity.x());
-    heading[i] = have_yaw ? S[i].yaw : last_track;
-  }
-  const std::vector<double> uw = unwrap(heading);
-  const int half = static_cast<int>(set.yaw_rate_window);
-  // Ground: near the lowest height, at rest and drawing well under the median power (motors idle).
-  double zmin = S[0].position.z();
-  for (const auto& x : S) zmin = std::min(zmin, x.position.z());
-  const double pmed = median(P.measured);
-  for (int i = 0; i < n; ++i) {
-    MotionState& m = P.states[i];
-    m.t = t[i];
-    m.velocity = S[i].velocity;
-    m.acceleration = S[i].acceleration;
-    m.heading = heading[i];
-    m.yaw_rate = logs::detail::localSlope(n, i, half, [&](int j) { return t[j]; }, [&](int j) { return uw[j]; });
-    const double vz = S[i].velocity.z();
-    m.airborne = !(S[i].position.z() - zmin < set.ground_height && hs[i] < set.stop_speed &&
-                   std::abs(vz) < set.vertical_speed && P.measured[i] < set.ground_power_fraction * pmed);
-    Phase ph;
-    const Eigen::Vector2d vh = S[i].velocity.head<2>(), ah = S[i].acceleration.head<2>();
-    if (!m.airborne) {
-      ph = Phase::Ground;
-    } else if (vz > set.vertical_speed) {
-      ph = Phase::Climb;
-    } else if (vz < -set.vertical_speed) {
-      ph = Phase::Descent;
-    } else if (hs[i] < set.stop_speed) {
-      ph = std::abs(m.yaw_rate) > set.turn_rate ? Phase::Turn : Phase::Hover;
-    } else {
-      const double along = vh.dot(ah) / hs[i];
-      const double track_rate = std::abs(vh.x() * ah.y() - vh.y() * ah.x()) / (hs[i] * hs[i]);
-      if (track_rate > set.turn_rate) {
-        ph = Phase::Turn;
-      } else if (along > set.acceleration) {
-        ph = Phase::Accelerate;
-      } else if (along < -set.acceleration) {
-        ph = Phase::Brake;
-      } else {
-        ph = Phase::Cruise;
-      }
-    }
-    P.phase[i] = ph;
-  }
-  // Legs.
-  std::vector<int> starts = {0};
-  if (!waypoints.empty()) {
-    int from = 0;
-    for (const auto& w : waypoints) {
-      std::vector<double> d(n, 0.0);
-      double dmin = 1e300;
-      for (int i = from; i < n; ++i) {
-        d[i] = (P.position[i] - w).norm();
-        dmin = std::min(dmin, d[i]);
-      }
-      // First local minimum within 3 m of the closest approach (a later pass may come closer).
-      int pick = -1;
-      for (int i = from; i < n && pick < 0; ++i) {
-        const bool local_min = (i == from || d[i] <= d[i - 1]) && (i + 1 == n || d[i] <= d[i + 1]);
-        if (local_min && d[i] <= dmin + 3.0) pick = i;
-      }
-      if (pick > starts.back()) starts.push_back(pick);
-      from = std::max(pick, from);
-    }
-  } else {
-    // Stopped runs are legs of their own; moving runs split at marked slow-downs.
-    int i = 0;
-    while (i < n) {
-      const bool stopped = hs[i] < set.stop_speed;
-      int j = i;
-      while (j + 1 < n && (hs[j + 1] < set.stop_speed) == stopped) ++j;
-      if (i > 0) starts.push_back(i);
-      if (!stopped && j - i >= 4) {
-        // The fastest speed since the last split (running) and up to the run's end (suffix
-        // maxima), so a day-long moving run costs linear time, not a scan per local minimum.
-        std::vector<double> after_max(static_cast<size_t>(j - i + 1));
-        after_max.back() = hs[j];
-        for (int k = j - 1; k >= i; --k) after_max[k - i] = std::max(hs[k], after_max[k - i + 1]);
-        double before_max = std::max(hs[i], hs[i + 1]);
-        for (int k = i + 2; k <= j - 2; ++k) {
-          before_max = std::max(before_max, hs[k]);
-          bool local_min = true;
-          for (int q = k - 2; q <= k + 2; ++q) local_min = local_min && hs[k] <= hs[q];
-          if (!local_min) continue;
-          if (hs[k] < set.leg_slowdown * std::min(before_max, after_max[k - i])) {
-            starts.push_back(k);
-            before_max = hs[k];
-          }
-        }
-      }
-      i = j + 1;
-    }
-  }
+  const std::vector<double> t = copySamples(log, P);
+  classifySamples(log.samples, t, set, P);
+  const std::vector<int> starts =
+      waypoints.empty() ? legStartsFromSpeed(log.samples, set) : legStartsAtWaypoints(P.position, waypoints);
   P.legs = legsFromBoundaries(starts, P.position, P.states, t, set.stop_speed);
   P.leg.assign(n, 0);
   for (size_t k = 0; k < P.legs.size(); ++k)
