@@ -47,18 +47,18 @@ void changes(const ulog::Log& L, const std::string& topic, const std::string& fi
     if (k == 0 || v[k] != v[k - 1]) raw.events.push_back({t[k], kind, text(static_cast<int>(v[k]))});
 }
 
-}  // namespace
+// The value of the ULog info key `k`, empty when the log has none.
+std::string infoValue(const ulog::Log& L, const std::string& k) {
+  const auto it = L.info().find(k);
+  return it == L.info().end() ? std::string() : it->second;
+}
 
-FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& opt) {
-  const auto L = ulog::Log::parse(std::move(bytes), source, opt.lenient);
-  Raw raw;
-  raw.format = "ulog";
-  raw.warnings = L.warnings();
-  const auto& info = L.info();
-  auto infoOr = [&](const std::string& k) { auto it = info.find(k); return it == info.end() ? std::string() : it->second; };
-  raw.firmware = "PX4 " + px4Version(infoOr("ver_sw_release"));
-  if (!infoOr("ver_sw_branch").empty()) raw.firmware += ", branch " + infoOr("ver_sw_branch");
-  if (!infoOr("ver_sw").empty()) raw.firmware += ", git " + infoOr("ver_sw").substr(0, 12);
+// Firmware (ver_sw_release, branch, git hash) and the file's facts: ULog version, start time,
+// appended data, skipped gaps and dropouts.
+void readFirmwareAndFacts(const ulog::Log& L, Raw& raw) {
+  raw.firmware = "PX4 " + px4Version(infoValue(L, "ver_sw_release"));
+  if (!infoValue(L, "ver_sw_branch").empty()) raw.firmware += ", branch " + infoValue(L, "ver_sw_branch");
+  if (!infoValue(L, "ver_sw").empty()) raw.firmware += ", git " + infoValue(L, "ver_sw").substr(0, 12);
   raw.meta["ulog_version"] = std::to_string(L.version());
   raw.meta["ulog_start_s"] = num(static_cast<double>(L.startTimeUs()) * 1e-6, 10);
   if (L.appendedData()) raw.meta["appended_data"] = "yes";
@@ -70,18 +70,23 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
     raw.meta["gaps"] = std::to_string(L.gaps().size()) + " skipped: " + g;
   }
   if (L.dropouts().first) raw.meta["dropouts"] = std::to_string(L.dropouts().first) + " totalling " + num(L.dropouts().second) + " s";
+}
 
-  // Vehicle: system type from vehicle_status, board from ver_hw.
+// The vehicle: system type from vehicle_status, board from ver_hw, the system name.
+void readVehicle(const ulog::Log& L, Raw& raw) {
   raw.vehicle.clear();
   if (!L.instances("vehicle_status").empty() && L.hasField("vehicle_status", "system_type")) {
     const auto st = L.column("vehicle_status", 0, "system_type");
     if (!st.empty()) raw.vehicle = mavTypeName(static_cast<int>(st.back()));
   }
   if (raw.vehicle.empty()) raw.vehicle = "unknown";
-  if (!infoOr("ver_hw").empty()) raw.vehicle += ", board " + infoOr("ver_hw");
-  if (!infoOr("sys_name").empty()) raw.vehicle += ", " + infoOr("sys_name");
+  if (!infoValue(L, "ver_hw").empty()) raw.vehicle += ", board " + infoValue(L, "ver_hw");
+  if (!infoValue(L, "sys_name").empty()) raw.vehicle += ", " + infoValue(L, "sys_name");
+}
 
-  // Battery.
+// The battery: the first battery_status instance with a voltage (or the one asked for); samples not
+// connected or without voltage are left out, a current of -1 (not measured) is read as NaN.
+void readBattery(const ulog::Log& L, const std::string& source, const LogReadOptions& opt, Raw& raw) {
   raw.meta["battery_candidates"] = "battery_status (voltage_v, current_a)";
   bool chosen = false;
   for (int inst : L.instances("battery_status")) {
@@ -117,8 +122,11 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
   }
   if (!chosen && !raw.battery_others.empty())
     throw std::runtime_error(source + ": no usable battery_status instance (found: " + raw.battery_others.front() + ")");
+}
 
-  // Position: vehicle_local_position instance 0.
+// The position: vehicle_local_position instance 0, NED turned to ENU; samples with xy_valid or
+// z_valid false are left out.
+void readPosition(const ulog::Log& L, const std::string& source, const LogReadOptions& opt, Raw& raw) {
   raw.meta["position_candidates"] = "vehicle_local_position (x, y, z, vx, vy, vz)";
   const std::string lp = "vehicle_local_position";
   if (!opt.position_source.empty() && opt.position_source != lp)
@@ -159,8 +167,10 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
       if (!la.empty()) raw.meta["ekf_origin"] = num(la.back(), 10) + ", " + num(lo.back(), 10) + ", " + num(al.back(), 6) + " m";
     }
   }
+}
 
-  // Landed state, modes, arming, mission progress, logged strings.
+// Landed state, modes, arming, mission progress and logged strings, as events in time order.
+void readEvents(const ulog::Log& L, Raw& raw) {
   const std::string ld = "vehicle_land_detected";
   if (!L.instances(ld).empty() && L.hasField(ld, "landed")) {
     const auto t = L.times(ld, 0);
@@ -182,6 +192,20 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
   }
   for (const auto& s : L.strings()) raw.events.push_back({s.t, "message", s.text});
   std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
+}
+
+}  // namespace
+
+FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& opt) {
+  const auto L = ulog::Log::parse(std::move(bytes), source, opt.lenient);
+  Raw raw;
+  raw.format = "ulog";
+  raw.warnings = L.warnings();
+  readFirmwareAndFacts(L, raw);
+  readVehicle(L, raw);
+  readBattery(L, source, opt, raw);
+  readPosition(L, source, opt, raw);
+  readEvents(L, raw);
   return assemble(std::move(raw), source, opt);
 }
 
