@@ -124,7 +124,11 @@ HtmlReport validationReport(const ValidationReportData& d) {
   return r;
 }
 
-void addValidation(HtmlReport& r, const ValidationReportData& d) {
+namespace {
+
+// Checks the data's shape: per-sample arrays of one length, 2..100 residual bins, log starts in
+// order, one name per log. Returns the first sample of each log.
+std::vector<std::size_t> checkValidationData(const ValidationReportData& d) {
   const std::size_t n = d.t.size();
   checkSameSize(d.measured_power, n, "measured_power");
   checkSameSize(d.modelled_power, n, "modelled_power");
@@ -134,7 +138,6 @@ void addValidation(HtmlReport& r, const ValidationReportData& d) {
   if (d.residual_bins < 2 || d.residual_bins > 100) {
     throw std::invalid_argument("validation report: residual_bins = " + std::to_string(d.residual_bins) + ", expected 2..100");
   }
-  const bool haveBoth = n > 0 && d.measured_power.size() == n && d.modelled_power.size() == n;
   std::vector<std::size_t> starts = d.log_start.empty() ? std::vector<std::size_t>{0} : d.log_start;
   for (std::size_t k = 0; k < starts.size(); ++k) {
     if (starts[k] > n || (k > 0 && starts[k] < starts[k - 1])) {
@@ -146,8 +149,15 @@ void addValidation(HtmlReport& r, const ValidationReportData& d) {
     throw std::invalid_argument("validation report: " + std::to_string(d.log_names.size()) + " log_names for " +
                                 std::to_string(starts.size()) + " logs");
   }
-  if (n > 0) r.heading("Power over time");
-  for (std::size_t k = 0; k < starts.size() && n > 0; ++k) {
+  return starts;
+}
+
+// One figure per log: measured and modelled power over time on the phases of flight.
+void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::vector<std::size_t>& starts) {
+  const std::size_t n = d.t.size();
+  if (n == 0) return;
+  r.heading("Power over time");
+  for (std::size_t k = 0; k < starts.size(); ++k) {
     const std::size_t a = starts[k], b = k + 1 < starts.size() ? starts[k + 1] : n;
     if (a == b) continue;
     auto slice = [a, b](const std::vector<double>& v) {
@@ -172,91 +182,112 @@ void addValidation(HtmlReport& r, const ValidationReportData& d) {
               "Measured and modelled power" + (name.empty() ? std::string() : " of " + name) +
                   "; the background shows the phase of flight."});
   }
-  if (haveBoth) {
-    std::vector<double> res(n);
-    double se = 0.0, bias = 0.0;
-    int k = 0;
+}
+
+// The residual (measured - modelled) in words and binned by speed, climb rate and heading.
+void addResiduals(HtmlReport& r, const ValidationReportData& d, std::size_t logs) {
+  const std::size_t n = d.t.size();
+  std::vector<double> res(n);
+  double se = 0.0, bias = 0.0;
+  int k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    res[i] = d.measured_power[i] - d.modelled_power[i];
+    if (std::isfinite(res[i])) {
+      se += res[i] * res[i];
+      bias += res[i];
+      ++k;
+    }
+  }
+  r.heading("Residuals");
+  if (k > 0) {
+    r.paragraph("Sample residual (measured - modelled): RMS " + formatNumber(std::sqrt(se / k), 1) + " W, mean " +
+                formatNumber(bias / k, 1) + " W over " + std::to_string(k) + " samples" +
+                (logs > 1 ? " of " + std::to_string(logs) + " logs" : std::string()) +
+                ". A binned mean away from zero "
+                "that changes with a quantity points to an effect the model lacks.");
+  }
+  if (!d.speed.empty()) {
+    r.figure({"validation-residual-speed", residualChart(d.speed, res, {"horizontal speed", "m/s"}, d.residual_bins), ""});
+  }
+  if (!d.climb_rate.empty()) {
+    r.figure({"validation-residual-climb", residualChart(d.climb_rate, res, {"climb rate", "m/s"}, d.residual_bins), ""});
+  }
+  if (!d.heading.empty()) {
+    std::vector<double> deg(n);
     for (std::size_t i = 0; i < n; ++i) {
-      res[i] = d.measured_power[i] - d.modelled_power[i];
-      if (std::isfinite(res[i])) {
-        se += res[i] * res[i];
-        bias += res[i];
-        ++k;
-      }
+      deg[i] = std::isfinite(d.heading[i]) ? std::fmod(std::fmod(d.heading[i] * kDeg, 360.0) + 360.0, 360.0) : d.heading[i];
     }
-    r.heading("Residuals");
-    if (k > 0) {
-      r.paragraph("Sample residual (measured - modelled): RMS " + formatNumber(std::sqrt(se / k), 1) + " W, mean " +
-                  formatNumber(bias / k, 1) + " W over " + std::to_string(k) + " samples" +
-                  (starts.size() > 1 ? " of " + std::to_string(starts.size()) + " logs" : std::string()) +
-                  ". A binned mean away from zero "
-                  "that changes with a quantity points to an effect the model lacks.");
-    }
-    if (!d.speed.empty()) {
-      r.figure({"validation-residual-speed", residualChart(d.speed, res, {"horizontal speed", "m/s"}, d.residual_bins), ""});
-    }
-    if (!d.climb_rate.empty()) {
-      r.figure({"validation-residual-climb", residualChart(d.climb_rate, res, {"climb rate", "m/s"}, d.residual_bins), ""});
-    }
-    if (!d.heading.empty()) {
-      std::vector<double> deg(n);
-      for (std::size_t i = 0; i < n; ++i) {
-        deg[i] = std::isfinite(d.heading[i]) ? std::fmod(std::fmod(d.heading[i] * kDeg, 360.0) + 360.0, 360.0) : d.heading[i];
-      }
-      Axis a{"track heading (0 = east, CCW)", "deg"};
-      a.min = 0.0;
-      a.max = 360.0;
-      r.figure({"validation-residual-heading", residualChart(deg, res, a, d.residual_bins), ""});
-    }
+    Axis a{"track heading (0 = east, CCW)", "deg"};
+    a.min = 0.0;
+    a.max = 360.0;
+    r.figure({"validation-residual-heading", residualChart(deg, res, a, d.residual_bins), ""});
   }
+}
+
+// Leg energies: measured against modelled on the diagonal, and as a table.
+void addLegEnergies(HtmlReport& r, const ValidationReportData& d) {
+  r.heading("Leg energies");
+  LineChart c;
+  c.title = "Leg energy: measured against modelled";
+  c.x = {"modelled energy", "kJ"};
+  c.y = {"measured energy", "kJ"};
+  c.diagonal = true;
+  c.width = 520;
+  c.height = 480;
+  Series s;
+  s.name = "legs";
+  s.style = SeriesStyle::Points;
+  for (const auto& l : d.legs) {
+    s.x.push_back(l.modelled / 1000.0);
+    s.y.push_back(l.measured / 1000.0);
+  }
+  c.series.push_back(s);
+  r.figure({"validation-legs", renderSvg(c), "Points on the dashed diagonal are legs the model gets exactly right."});
+  Table t{"Leg energies", {"leg", "measured [kJ]", "modelled [kJ]", "error [%]"}, {}, {false, true, true, true}, true};
+  for (const auto& l : d.legs) {
+    t.rows.push_back({l.label, kJ(l.measured), kJ(l.modelled),
+                      l.measured != 0.0 ? formatNumber(100.0 * (l.modelled - l.measured) / l.measured, 1) : "-"});
+  }
+  r.table(t);
+}
+
+// The error as effects are added, one bar per step.
+void addStaircase(HtmlReport& r, const ValidationReportData& d) {
+  r.heading("Error staircase");
+  BarChart b;
+  b.title = "Error as effects are added";
+  for (const auto& s : d.staircase) b.categories.push_back(s.label);
+  b.series = {d.error_label};
+  b.values = {{}};
+  for (const auto& s : d.staircase) b.values[0].push_back(s.error);
+  b.y = {d.error_label, d.error_unit};
+  b.colours = {seriesColour(0)};
+  b.height = 320;
+  r.figure({"validation-staircase", renderSvg(b), "Each bar is the model after one more step; lower is better."});
+}
+
+// The diagnosis: each candidate effect, its held-out improvement and whether it was kept.
+void addDiagnosis(HtmlReport& r, const ValidationReportData& d) {
+  r.heading("Diagnosis");
+  Table t{d.diagnosis_caption, {"effect", "held-out error reduction [%]", "fitted values", "physical meaning", "kept"}, {},
+          {false, true, false, false, false}, false};
+  for (const auto& row : d.diagnosis) {
+    t.rows.push_back({row.effect, formatNumber(row.improvement_pct, 1), row.fitted, row.meaning, row.accepted ? "yes" : "no"});
+  }
+  r.table(t);
+}
+
+}  // namespace
+
+void addValidation(HtmlReport& r, const ValidationReportData& d) {
+  const std::vector<std::size_t> starts = checkValidationData(d);
+  const std::size_t n = d.t.size();
+  addPowerFigures(r, d, starts);
+  if (n > 0 && d.measured_power.size() == n && d.modelled_power.size() == n) addResiduals(r, d, starts.size());
   addSignalCurves(r, d);
-  if (!d.legs.empty()) {
-    r.heading("Leg energies");
-    LineChart c;
-    c.title = "Leg energy: measured against modelled";
-    c.x = {"modelled energy", "kJ"};
-    c.y = {"measured energy", "kJ"};
-    c.diagonal = true;
-    c.width = 520;
-    c.height = 480;
-    Series s;
-    s.name = "legs";
-    s.style = SeriesStyle::Points;
-    for (const auto& l : d.legs) {
-      s.x.push_back(l.modelled / 1000.0);
-      s.y.push_back(l.measured / 1000.0);
-    }
-    c.series.push_back(s);
-    r.figure({"validation-legs", renderSvg(c), "Points on the dashed diagonal are legs the model gets exactly right."});
-    Table t{"Leg energies", {"leg", "measured [kJ]", "modelled [kJ]", "error [%]"}, {}, {false, true, true, true}, true};
-    for (const auto& l : d.legs) {
-      t.rows.push_back({l.label, kJ(l.measured), kJ(l.modelled),
-                        l.measured != 0.0 ? formatNumber(100.0 * (l.modelled - l.measured) / l.measured, 1) : "-"});
-    }
-    r.table(t);
-  }
-  if (!d.staircase.empty()) {
-    r.heading("Error staircase");
-    BarChart b;
-    b.title = "Error as effects are added";
-    for (const auto& s : d.staircase) b.categories.push_back(s.label);
-    b.series = {d.error_label};
-    b.values = {{}};
-    for (const auto& s : d.staircase) b.values[0].push_back(s.error);
-    b.y = {d.error_label, d.error_unit};
-    b.colours = {seriesColour(0)};
-    b.height = 320;
-    r.figure({"validation-staircase", renderSvg(b), "Each bar is the model after one more step; lower is better."});
-  }
-  if (!d.diagnosis.empty()) {
-    r.heading("Diagnosis");
-    Table t{d.diagnosis_caption, {"effect", "held-out error reduction [%]", "fitted values", "physical meaning", "kept"}, {},
-            {false, true, false, false, false}, false};
-    for (const auto& row : d.diagnosis) {
-      t.rows.push_back({row.effect, formatNumber(row.improvement_pct, 1), row.fitted, row.meaning, row.accepted ? "yes" : "no"});
-    }
-    r.table(t);
-  }
+  if (!d.legs.empty()) addLegEnergies(r, d);
+  if (!d.staircase.empty()) addStaircase(r, d);
+  if (!d.diagnosis.empty()) addDiagnosis(r, d);
 }
 
 std::string validationReportHtml(const ValidationReportData& d) { return validationReport(d).html(); }
