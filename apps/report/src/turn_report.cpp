@@ -23,125 +23,119 @@ std::vector<double> distinctSorted(std::vector<double> v) {
   return v;
 }
 
-}  // namespace
+/// The largest relative spread (max - min) / min over the angles at one leg length, for each strategy.
+struct AngleSpread {
+  double sharp = 0.0, rounded = 0.0;
+};
 
-HtmlReport turnReport(const TurnReportData& d) {
-  HtmlReport r(d.title);
-  addFacts(r, d.facts);
-  std::vector<double> betas;
-  for (const auto& row : d.rows) betas.push_back(row.beta);
-  betas = distinctSorted(betas);
-  // The energy of two long branches hardly depends on the angle between them, so the lines of all
-  // angles lie on top of each other; then only one angle is drawn (the user's, else the middle one)
-  // and the caption gives the spread of the others. The saving chart keeps every angle.
-  double spread_sharp = 0.0, spread_rounded = 0.0;  // largest (max - min) / min over angles, per leg length
-  {
-    std::map<double, std::array<double, 4>> by_length;  // min/max sharp, min/max rounded
-    for (const auto& row : d.rows) {
-      auto [it, fresh] = by_length.try_emplace(row.leg_length, std::array<double, 4>{row.sharp_energy, row.sharp_energy,
-                                                                                      row.rounded_energy, row.rounded_energy});
-      auto& m = it->second;
-      m[0] = std::min(m[0], row.sharp_energy);
-      m[1] = std::max(m[1], row.sharp_energy);
-      m[2] = std::min(m[2], row.rounded_energy);
-      m[3] = std::max(m[3], row.rounded_energy);
-    }
-    for (const auto& [length, m] : by_length) {
-      if (m[0] > 0.0) spread_sharp = std::max(spread_sharp, (m[1] - m[0]) / m[0]);
-      if (m[2] > 0.0) spread_rounded = std::max(spread_rounded, (m[3] - m[2]) / m[2]);
-    }
+/// How much each strategy's energy changes with the angle: the energy of two long branches hardly
+/// depends on the angle between them, so then the lines of all angles lie on top of each other.
+AngleSpread angleSpread(const std::vector<TurnRow>& rows) {
+  std::map<double, std::array<double, 4>> by_length;  // min/max sharp, min/max rounded
+  for (const auto& row : rows) {
+    auto [it, fresh] = by_length.try_emplace(row.leg_length, std::array<double, 4>{row.sharp_energy, row.sharp_energy,
+                                                                                    row.rounded_energy, row.rounded_energy});
+    auto& m = it->second;
+    m[0] = std::min(m[0], row.sharp_energy);
+    m[1] = std::max(m[1], row.sharp_energy);
+    m[2] = std::min(m[2], row.rounded_energy);
+    m[3] = std::max(m[3], row.rounded_energy);
   }
-  const double spread = std::max(spread_sharp, spread_rounded);
-  const bool one_angle = betas.size() > 1 && spread <= d.overlap_tolerance;
-  std::size_t drawn = betas.size() / 2;
-  if (d.focus_beta) {
-    for (std::size_t i = 0; i < betas.size(); ++i)
-      if (std::abs(betas[i] - *d.focus_beta) < 1e-9) drawn = i;
+  AngleSpread s;
+  for (const auto& [length, m] : by_length) {
+    if (m[0] > 0.0) s.sharp = std::max(s.sharp, (m[1] - m[0]) / m[0]);
+    if (m[2] > 0.0) s.rounded = std::max(s.rounded, (m[3] - m[2]) / m[2]);
   }
-  LineChart e, s;
-  e.title = one_angle && !betas.empty()
-                ? "Energy against leg length at " + formatNumber(betas[drawn] * kDeg, 0) +
-                      " deg: sharp stop (solid) and rounded (dashed)"
-                : "Energy against leg length: sharp stop (solid) and rounded (dashed)";
-  e.x = {"leg length (each branch)", "m"};
-  e.y = {"energy", "kJ"};
-  s.title = "Saving of the rounded turn";
-  s.x = e.x;
-  s.y = {"saving (E_sharp - E_rounded) / E_sharp", "%"};
-  s.y_ref = 0.0;
-  s.height = 320;
-  Series paper;
-  paper.name = "paper (Table V)";
-  paper.style = SeriesStyle::Points;
-  paper.colour = "#000000";
-  for (std::size_t i = 0; i < betas.size(); ++i) {
-    std::vector<const TurnRow*> rows;
-    for (const auto& row : d.rows) {
-      if (std::abs(row.beta - betas[i]) < 1e-9) rows.push_back(&row);
-    }
-    std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->leg_length < b->leg_length; });
-    const std::string angle = formatNumber(betas[i] * kDeg, 0) + " deg";
-    Series sharp, round, saving;
-    sharp.name = "sharp, " + angle;
-    round.name = "rounded, " + angle;
-    saving.name = angle;
-    sharp.colour = round.colour = saving.colour = seriesColour(i);
-    round.dash = "6 3";
-    sharp.style = round.style = saving.style = SeriesStyle::LineAndPoints;
-    for (const auto* row : rows) {
-      sharp.x.push_back(row->leg_length);
-      sharp.y.push_back(row->sharp_energy / 1000.0);
-      round.x.push_back(row->leg_length);
-      round.y.push_back(row->rounded_energy / 1000.0);
-      saving.x.push_back(row->leg_length);
-      saving.y.push_back(row->sharp_energy > 0 ? 100.0 * (row->sharp_energy - row->rounded_energy) / row->sharp_energy
-                                               : std::numeric_limits<double>::quiet_NaN());
-      if (row->paper_saving_pct) {
-        paper.x.push_back(row->leg_length);
-        paper.y.push_back(*row->paper_saving_pct);
-      }
-    }
-    if (!one_angle || i == drawn) {
-      e.series.push_back(sharp);
-      e.series.push_back(round);
-    }
-    s.series.push_back(saving);
-  }
-  if (!paper.x.empty()) s.series.push_back(paper);
-  double lmin = std::numeric_limits<double>::infinity(), lmax = 0.0;
+  return s;
+}
+
+/// The saving of the rounded turn over the sharp stop [%], NaN when the sharp stop costs nothing.
+double savingPct(const TurnRow& row) {
+  return row.sharp_energy > 0 ? 100.0 * (row.sharp_energy - row.rounded_energy) / row.sharp_energy
+                              : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The two figures and what goes into them.
+struct TurnCharts {
+  LineChart energy, saving;
+  Series paper;  ///< Table V's savings, as points on the saving chart
+};
+
+/// Adds the angle `betas[i]`: its sharp and rounded energies against leg length (when `draw_energy`)
+/// and its saving; the paper's savings at that angle join `c.paper`.
+void addAngle(TurnCharts& c, const TurnReportData& d, const std::vector<double>& betas, std::size_t i, bool draw_energy) {
+  std::vector<const TurnRow*> rows;
   for (const auto& row : d.rows) {
+    if (std::abs(row.beta - betas[i]) < 1e-9) rows.push_back(&row);
+  }
+  std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->leg_length < b->leg_length; });
+  const std::string angle = formatNumber(betas[i] * kDeg, 0) + " deg";
+  Series sharp, round, saving;
+  sharp.name = "sharp, " + angle;
+  round.name = "rounded, " + angle;
+  saving.name = angle;
+  sharp.colour = round.colour = saving.colour = seriesColour(i);
+  round.dash = "6 3";
+  sharp.style = round.style = saving.style = SeriesStyle::LineAndPoints;
+  for (const auto* row : rows) {
+    sharp.x.push_back(row->leg_length);
+    sharp.y.push_back(row->sharp_energy / 1000.0);
+    round.x.push_back(row->leg_length);
+    round.y.push_back(row->rounded_energy / 1000.0);
+    saving.x.push_back(row->leg_length);
+    saving.y.push_back(savingPct(*row));
+    if (row->paper_saving_pct) {
+      c.paper.x.push_back(row->leg_length);
+      c.paper.y.push_back(*row->paper_saving_pct);
+    }
+  }
+  if (draw_energy) {
+    c.energy.series.push_back(sharp);
+    c.energy.series.push_back(round);
+  }
+  c.saving.series.push_back(saving);
+}
+
+/// Log axes where the data span more than a factor 20: Table V spans decades of leg length, and
+/// short legs' energies stay readable next to long ones'.
+void chooseLogAxes(TurnCharts& c, const std::vector<TurnRow>& rows) {
+  double lmin = std::numeric_limits<double>::infinity(), lmax = 0.0;
+  double emin = std::numeric_limits<double>::infinity(), emax = 0.0;
+  for (const auto& row : rows) {
     if (row.leg_length > 0.0) lmin = std::min(lmin, row.leg_length);
     lmax = std::max(lmax, row.leg_length);
-  }
-  e.x.log = s.x.log = lmin > 0.0 && lmax / lmin > 20.0;  // Table V spans decades of leg length
-  double emin = std::numeric_limits<double>::infinity(), emax = 0.0;
-  for (const auto& row : d.rows) {
     for (const double v : {row.sharp_energy, row.rounded_energy}) {
       emin = std::min(emin, v);
       emax = std::max(emax, v);
     }
   }
-  e.y.log = emin > 0.0 && emax / emin > 20.0;  // short legs stay readable next to long ones
-  if (!d.rows.empty()) {
-    std::string caption = "Two equal branches meeting at interior angle beta (Marins et al. Sec. V-B).";
-    if (one_angle) {
-      std::string others;
-      for (std::size_t i = 0; i < betas.size(); ++i) {
-        if (i == drawn) continue;
-        others += (others.empty() ? "" : ", ") + formatNumber(betas[i] * kDeg, 0);
-      }
-      caption += " The other angles (" + others + " deg) lie within " + formatNumber(100.0 * spread, 1) +
-                 " % of these lines and would hide them; the table lists every one.";
-    } else if (betas.size() > 1 && std::min(spread_sharp, spread_rounded) <= d.overlap_tolerance) {
-      const bool sharp = spread_sharp <= spread_rounded;
-      caption += std::string(" The ") + (sharp ? "sharp-stop" : "rounded") + " lines of all angles lie within " +
-                 formatNumber(100.0 * (sharp ? spread_sharp : spread_rounded), 1) +
-                 " % of each other, so they overlap; the table lists every one.";
+  c.energy.x.log = c.saving.x.log = lmin > 0.0 && lmax / lmin > 20.0;
+  c.energy.y.log = emin > 0.0 && emax / emin > 20.0;
+}
+
+/// The energy figure's caption: the geometry, and which lines overlap and are left out or said to.
+std::string energyCaption(const TurnReportData& d, const std::vector<double>& betas, std::size_t drawn, bool one_angle,
+                          const AngleSpread& sp) {
+  std::string caption = "Two equal branches meeting at interior angle beta (Marins et al. Sec. V-B).";
+  if (one_angle) {
+    std::string others;
+    for (std::size_t i = 0; i < betas.size(); ++i) {
+      if (i == drawn) continue;
+      others += (others.empty() ? "" : ", ") + formatNumber(betas[i] * kDeg, 0);
     }
-    r.heading("Energy of the two corner strategies");
-    r.figure({"turns-energy", renderSvg(e), caption});
-    r.figure({"turns-saving", renderSvg(s), "Positive: the rounded, constant-speed turn uses less energy."});
+    caption += " The other angles (" + others + " deg) lie within " + formatNumber(100.0 * std::max(sp.sharp, sp.rounded), 1) +
+               " % of these lines and would hide them; the table lists every one.";
+  } else if (betas.size() > 1 && std::min(sp.sharp, sp.rounded) <= d.overlap_tolerance) {
+    const bool sharp = sp.sharp <= sp.rounded;
+    caption += std::string(" The ") + (sharp ? "sharp-stop" : "rounded") + " lines of all angles lie within " +
+               formatNumber(100.0 * (sharp ? sp.sharp : sp.rounded), 1) +
+               " % of each other, so they overlap; the table lists every one.";
   }
+  return caption;
+}
+
+/// Every row as the table of Marins et al. Table V's shape.
+Table turnTable(const TurnReportData& d) {
   Table t{"Turn strategies (shape of Marins et al. Table V)",
           {"angle [deg]", "leg [m]", "sharp speed [m/s]", "E sharp [kJ]", "rounded speed [m/s]", "E rounded [kJ]", "saving [%]", "paper saving [%]"},
           {},
@@ -150,10 +144,53 @@ HtmlReport turnReport(const TurnReportData& d) {
   for (const auto& row : d.rows) {
     t.rows.push_back({formatNumber(row.beta * kDeg, 0), formatNumber(row.leg_length, 0), formatNumber(row.sharp_speed, 2),
                       kJ(row.sharp_energy), formatNumber(row.rounded_speed, 2), kJ(row.rounded_energy),
-                      row.sharp_energy > 0 ? formatNumber(100.0 * (row.sharp_energy - row.rounded_energy) / row.sharp_energy, 1) : "-",
+                      row.sharp_energy > 0 ? formatNumber(savingPct(row), 1) : "-",
                       row.paper_saving_pct ? formatNumber(*row.paper_saving_pct, 1) : "-"});
   }
-  r.table(t);
+  return t;
+}
+
+}  // namespace
+
+HtmlReport turnReport(const TurnReportData& d) {
+  HtmlReport r(d.title);
+  addFacts(r, d.facts);
+  std::vector<double> betas;
+  for (const auto& row : d.rows) betas.push_back(row.beta);
+  betas = distinctSorted(betas);
+  // When the lines of all angles lie on top of each other only one angle is drawn (the user's, else
+  // the middle one) and the caption gives the spread of the others. The saving chart keeps every angle.
+  const AngleSpread sp = angleSpread(d.rows);
+  const bool one_angle = betas.size() > 1 && std::max(sp.sharp, sp.rounded) <= d.overlap_tolerance;
+  std::size_t drawn = betas.size() / 2;
+  if (d.focus_beta) {
+    for (std::size_t i = 0; i < betas.size(); ++i)
+      if (std::abs(betas[i] - *d.focus_beta) < 1e-9) drawn = i;
+  }
+  TurnCharts c;
+  c.energy.title = one_angle && !betas.empty()
+                       ? "Energy against leg length at " + formatNumber(betas[drawn] * kDeg, 0) +
+                             " deg: sharp stop (solid) and rounded (dashed)"
+                       : "Energy against leg length: sharp stop (solid) and rounded (dashed)";
+  c.energy.x = {"leg length (each branch)", "m"};
+  c.energy.y = {"energy", "kJ"};
+  c.saving.title = "Saving of the rounded turn";
+  c.saving.x = c.energy.x;
+  c.saving.y = {"saving (E_sharp - E_rounded) / E_sharp", "%"};
+  c.saving.y_ref = 0.0;
+  c.saving.height = 320;
+  c.paper.name = "paper (Table V)";
+  c.paper.style = SeriesStyle::Points;
+  c.paper.colour = "#000000";
+  for (std::size_t i = 0; i < betas.size(); ++i) addAngle(c, d, betas, i, !one_angle || i == drawn);
+  if (!c.paper.x.empty()) c.saving.series.push_back(c.paper);
+  chooseLogAxes(c, d.rows);
+  if (!d.rows.empty()) {
+    r.heading("Energy of the two corner strategies");
+    r.figure({"turns-energy", renderSvg(c.energy), energyCaption(d, betas, drawn, one_angle, sp)});
+    r.figure({"turns-saving", renderSvg(c.saving), "Positive: the rounded, constant-speed turn uses less energy."});
+  }
+  r.table(turnTable(d));
   return r;
 }
 
