@@ -224,6 +224,101 @@ double RouteScorer::legCruise(double length, double v_in, double v_out, double c
   return c;
 }
 
+namespace {
+
+// The speed cap of each segment [m/s]: the vehicle's, and the camera's on sweeps.
+std::vector<double> segmentCaps(const Route& route, const SpeedSettings& st) {
+  std::vector<double> caps(route.roles.size());
+  for (size_t i = 0; i < caps.size(); ++i) {
+    caps[i] = st.max_speed;
+    if (route.roles[i] == LegRole::Sweep && st.camera_max_speed > 0.0) caps[i] = std::min(caps[i], st.camera_max_speed);
+  }
+  return caps;
+}
+
+// The deflection at vertex k [rad], signed.
+double deflection(const Route& route, size_t k) {
+  return wrapAngle(heading(route.points[k], route.points[k + 1]) - heading(route.points[k - 1], route.points[k]));
+}
+
+constexpr std::array<double, 2> kChainFraction{1.0, 0.5};  // the chains' tangents, fractions of the widest that fit
+
+// Speeds of chains of arcs (every corner rounded, tangents a fraction kChainFraction of the widest
+// that fits) [m/s]: the largest speeds the arcs and the straight room between them allow from rest to
+// rest (forward pass under the acceleration, backward pass under the braking limit). Offered as arc
+// options at each corner, so a run of close corners (a lap of a round spiral) need not stop: the
+// narrower chain leaves room to speed up, the widest then holds the speed reached.
+std::array<std::vector<double>, 2> chainSpeeds(const Route& route, const std::vector<double>& len,
+                                               const std::vector<double>& caps, const SpeedSettings& st) {
+  const size_t n = route.points.size();
+  std::array<std::vector<double>, 2> chain_v;
+  for (auto& c : chain_v) c.assign(n, 0.0);
+  if (!st.arc_chains || st.fixed_speed > 0.0 || st.corners == CornerStrategy::Sharp) return chain_v;
+  for (size_t f = 0; f < kChainFraction.size(); ++f) {
+    std::vector<double> t(n, 0.0);
+    auto& v = chain_v[f];
+    for (size_t k = 1; k + 1 < n; ++k) {
+      const double theta = deflection(route, k);
+      t[k] = kChainFraction[f] * std::min({route.max_tangent[k], 0.5 * len[k - 1], 0.5 * len[k]});
+      if (std::abs(theta) < kStraight) {
+        t[k] = 0.0;
+        v[k] = std::min(caps[k - 1], caps[k]);
+      } else if (t[k] > energy::tol::kLength) {
+        v[k] = std::min({std::sqrt(st.lateral_acceleration * t[k] / std::tan(0.5 * std::abs(theta))), caps[k - 1], caps[k]});
+      } else {
+        t[k] = 0.0;
+      }
+    }
+    for (size_t k = 1; k < n; ++k) {
+      const double room = std::max(0.0, len[k - 1] - t[k - 1] - t[k]);
+      v[k] = std::min(v[k], std::sqrt(v[k - 1] * v[k - 1] + 2.0 * st.limits.acceleration * room));
+    }
+    for (size_t k = n - 1; k-- > 1;) {
+      const double room = std::max(0.0, len[k] - t[k] - t[k + 1]);
+      v[k] = std::min(v[k], std::sqrt(v[k + 1] * v[k + 1] + 2.0 * st.limits.deceleration * room));
+    }
+  }
+  return chain_v;
+}
+
+// The arc options at vertex k (out[1..]; out[0], the stop, is set by the caller): the widest arc that
+// fits (half of each adjacent segment at most) at its largest speed and at the two chain speeds, and
+// one half as wide at its largest and at the narrower chain's speed. The chain speeds let a run of
+// arcs start and end where the straight room is too short to reach an arc's largest speed; the
+// narrower arc leaves room to change speed between arcs. Straight on: one option, no corner.
+void arcOptions(const Route& route, size_t k, const std::vector<double>& len, const std::vector<double>& caps,
+                const std::array<std::vector<double>, 2>& chain_v, const SpeedSettings& st, const energy::EnergyModel& model,
+                std::array<Option, kOptions>& out) {
+  const double theta = deflection(route, k);
+  const double vcap = std::min(caps[k - 1], caps[k]);
+  const double t_max = std::min({route.max_tangent[k], 0.5 * len[k - 1], 0.5 * len[k]});
+  // (tangent fraction, speed: >= 0 a fraction of the arc's largest, -1 / -2 the speed of the
+  // widest / narrower chain)
+  static constexpr std::array<std::pair<double, double>, kOptions - 1> kArcs{
+      {{1.0, 1.0}, {1.0, -1.0}, {1.0, -2.0}, {0.5, 1.0}, {0.5, -2.0}}};
+  for (int o = 1; o < kOptions; ++o) {
+    Option rnd;
+    rnd.rounded = true;
+    if (std::abs(theta) < kStraight) {
+      rnd.v = vcap;  // straight on: no corner, only a junction between roles
+      out[o] = rnd;
+      return;
+    }
+    rnd.t = kArcs[static_cast<size_t>(o - 1)].first * t_max;
+    if (rnd.t <= energy::tol::kLength) return;
+    rnd.r = rnd.t / std::tan(0.5 * std::abs(theta));
+    const double fraction = kArcs[static_cast<size_t>(o - 1)].second;
+    if (!st.arc_chains && (fraction < 0.0 || o > 1)) return;  // the widest arc at its largest speed only
+    const double v_arc = std::min(std::sqrt(st.lateral_acceleration * rnd.r), vcap);
+    rnd.v = fraction < 0.0 ? std::min(chain_v[fraction < -1.5 ? 1 : 0][k], v_arc) : fraction * v_arc;
+    if (rnd.v <= kMinCruise) continue;
+    rnd.energy = model.energy({energy::arc(rnd.r, theta, rnd.v)});
+    out[o] = rnd;
+  }
+}
+
+}  // namespace
+
 RouteScorer::Solved RouteScorer::solve(const Route& route) {
   const size_t n = route.points.size();
   if (n < 2 || route.roles.size() != n - 1 || route.max_tangent.size() != n)
@@ -231,87 +326,15 @@ RouteScorer::Solved RouteScorer::solve(const Route& route) {
                                 " roles, " + std::to_string(route.max_tangent.size()) +
                                 " tangents (expected at least 2 points, one role per segment, one tangent per point)");
   Solved s;
-  s.caps.resize(n - 1);
+  s.caps = segmentCaps(route, settings_);
   std::vector<double> len(n - 1);
-  for (size_t i = 0; i + 1 < n; ++i) {
-    len[i] = (route.points[i + 1] - route.points[i]).norm();
-    double cap = settings_.max_speed;
-    if (route.roles[i] == LegRole::Sweep && settings_.camera_max_speed > 0.0)
-      cap = std::min(cap, settings_.camera_max_speed);
-    s.caps[i] = cap;
-  }
+  for (size_t i = 0; i + 1 < n; ++i) len[i] = (route.points[i + 1] - route.points[i]).norm();
   s.options.assign(n, {});
-  // Speeds of chains of arcs (every corner rounded, tangents a fraction of the widest that fits):
-  // the largest speeds the arcs and the straight room between them allow from rest to rest
-  // (forward pass under the acceleration, backward pass under the braking limit). Offered as arc
-  // options at each corner, so a run of close corners (a lap of a round spiral) need not stop:
-  // the narrower chain leaves room to speed up, the widest then holds the speed reached.
-  std::array<std::vector<double>, 2> chain_v;
-  static constexpr std::array<double, 2> kChainFraction{1.0, 0.5};
-  for (auto& c : chain_v) c.assign(n, 0.0);
-  if (settings_.arc_chains && settings_.fixed_speed <= 0.0 && settings_.corners != CornerStrategy::Sharp) {
-    for (size_t f = 0; f < kChainFraction.size(); ++f) {
-      std::vector<double> t(n, 0.0);
-      auto& v = chain_v[f];
-      for (size_t k = 1; k + 1 < n; ++k) {
-        const double theta =
-            wrapAngle(heading(route.points[k], route.points[k + 1]) - heading(route.points[k - 1], route.points[k]));
-        t[k] = kChainFraction[f] * std::min({route.max_tangent[k], 0.5 * len[k - 1], 0.5 * len[k]});
-        if (std::abs(theta) < kStraight) {
-          t[k] = 0.0;
-          v[k] = std::min(s.caps[k - 1], s.caps[k]);
-        } else if (t[k] > energy::tol::kLength) {
-          v[k] = std::min({std::sqrt(settings_.lateral_acceleration * t[k] / std::tan(0.5 * std::abs(theta))),
-                           s.caps[k - 1], s.caps[k]});
-        } else {
-          t[k] = 0.0;
-        }
-      }
-      for (size_t k = 1; k < n; ++k) {
-        const double room = std::max(0.0, len[k - 1] - t[k - 1] - t[k]);
-        v[k] = std::min(v[k], std::sqrt(v[k - 1] * v[k - 1] + 2.0 * settings_.limits.acceleration * room));
-      }
-      for (size_t k = n - 1; k-- > 1;) {
-        const double room = std::max(0.0, len[k] - t[k] - t[k + 1]);
-        v[k] = std::min(v[k], std::sqrt(v[k + 1] * v[k + 1] + 2.0 * settings_.limits.deceleration * room));
-      }
-    }
-  }
+  const std::array<std::vector<double>, 2> chain_v = chainSpeeds(route, len, s.caps, settings_);
   for (size_t k = 1; k + 1 < n; ++k) {
-    const double theta = wrapAngle(heading(route.points[k], route.points[k + 1]) - heading(route.points[k - 1], route.points[k]));
-    Option sharp;
-    sharp.energy = turnEnergy(theta);
-    s.options[k][0] = sharp;
-    const double vcap = std::min(s.caps[k - 1], s.caps[k]);
+    s.options[k][0].energy = turnEnergy(deflection(route, k));  // the stop
     if (settings_.fixed_speed > 0.0 || settings_.corners == CornerStrategy::Sharp) continue;
-    // Arcs: the widest that fits (half of each adjacent segment at most) at its largest speed and
-    // at the two chain speeds, and one half as wide at its largest and at the narrower chain's
-    // speed. The chain speeds let a run of arcs start and end where the straight room is too short
-    // to reach an arc's largest speed; the narrower arc leaves room to change speed between arcs.
-    const double t_max = std::min({route.max_tangent[k], 0.5 * len[k - 1], 0.5 * len[k]});
-    // (tangent fraction, speed: >= 0 a fraction of the arc's largest, -1 / -2 the speed of the
-    // widest / narrower chain)
-    static constexpr std::array<std::pair<double, double>, kOptions - 1> kArcs{
-        {{1.0, 1.0}, {1.0, -1.0}, {1.0, -2.0}, {0.5, 1.0}, {0.5, -2.0}}};
-    for (int o = 1; o < kOptions; ++o) {
-      Option rnd;
-      rnd.rounded = true;
-      if (std::abs(theta) < kStraight) {
-        rnd.v = vcap;  // straight on: no corner, only a junction between roles
-        s.options[k][o] = rnd;
-        break;
-      }
-      rnd.t = kArcs[static_cast<size_t>(o - 1)].first * t_max;
-      if (rnd.t <= energy::tol::kLength) break;
-      rnd.r = rnd.t / std::tan(0.5 * std::abs(theta));
-      const double fraction = kArcs[static_cast<size_t>(o - 1)].second;
-      if (!settings_.arc_chains && (fraction < 0.0 || o > 1)) break;  // the widest arc at its largest speed only
-      const double v_arc = std::min(std::sqrt(settings_.lateral_acceleration * rnd.r), vcap);
-      rnd.v = fraction < 0.0 ? std::min(chain_v[fraction < -1.5 ? 1 : 0][k], v_arc) : fraction * v_arc;
-      if (rnd.v <= kMinCruise) continue;
-      rnd.energy = model_.energy({energy::arc(rnd.r, theta, rnd.v)});
-      s.options[k][o] = rnd;
-    }
+    arcOptions(route, k, len, s.caps, chain_v, settings_, model_, s.options[k]);
   }
   // Dynamic programming over the corners: best[k][c] = least (stops where an arc was possible under
   // the rounded strategy, energy) up to vertex k with option c; lexicographic, so "rounded" keeps a
