@@ -456,6 +456,125 @@ void measureTracking(const std::vector<Prepared>& prepared, CalibrationResult& r
   }
 }
 
+// The behaviour fit's problem: the flights' time misfit as a function of the free parameters and
+// the take-off delay, normalised to [0, 1] (the delay last), and of the behaviour variant (bit 0: a
+// stop at every waypoint; bit 1: DO_CHANGE_SPEED one waypoint late).
+struct BehaviourProblem {
+  static constexpr double kMaxDelay = 10.0;  // [s] the take-off delay at x = 1
+  const std::vector<Prepared>& prepared;
+  const mission::AutopilotConfig& autopilot;
+  const std::vector<FreeParameter>& free;
+  mission::Airframe airframe;  // once, not per evaluation
+  double sim_dt;               // [s]
+  mission::TrackingError tracking;
+
+  // Sets the parameters `x` stands for in `ap` and the take-off delay [s].
+  void apply(const std::vector<double>& x, mission::AutopilotConfig& ap, double& delay) const {
+    for (std::size_t i = 0; i < free.size(); ++i) ap.parameters[free[i].name] = free[i].lo + x[i] * (free[i].hi - free[i].lo);
+    delay = x.back() * kMaxDelay;
+  }
+  // The time misfit of one flight flown with the parameters `x` and the behaviour `variant`.
+  double flightCost(const std::vector<double>& x, int variant, const Prepared& p) const {
+    mission::AutopilotConfig ap = autopilot;
+    mission::FlightSettings fs;
+    fs.dt = sim_dt;
+    fs.airframe = airframe;
+    fs.stop_at_waypoints = variant & 1;
+    fs.speed_change_late = variant & 2;
+    fs.tracking_error = tracking;
+    apply(x, ap, fs.takeoff_delay_s);
+    try {
+      return timeCost(p.measured, predictedTimes(mission::flyMission(p.steps, ap, fs), {}, p.waypoints));
+    } catch (const std::exception&) {
+      return 100.0;
+    }
+  }
+  // The time misfit of all flights.
+  double cost(const std::vector<double>& x, int variant) const {
+    double c = 0.0;
+    for (const auto& p : prepared) c += flightCost(x, variant, p);
+    return c;
+  }
+  // The starting point: the autopilot's own values, and a short take-off delay.
+  std::vector<double> start() const {
+    std::vector<double> x0;
+    for (const auto& fp : free) x0.push_back(std::clamp((autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo), 0.0, 1.0));
+    x0.push_back(0.05);
+    return x0;
+  }
+};
+
+// Fits the behaviour: for each corner and speed-change variant (the autopilot's own rules, a stop at
+// every waypoint, speed changes a waypoint late, or both) the parameters by Nelder-Mead; the variant
+// with the least time misfit wins. Returns the parameters; sets the variant and its text in `r`.
+std::vector<double> fitBehaviour(const BehaviourProblem& bp, int max_evaluations, CalibrationResult& r, int& chosen) {
+  const char* kVariants[4] = {"the autopilot's own rules", "a stop at every waypoint",
+                              "DO_CHANGE_SPEED one waypoint late", "a stop at every waypoint and DO_CHANGE_SPEED one waypoint late"};
+  const std::vector<double> x0 = bp.start();
+  std::vector<double> x;
+  double best = 1e300;
+  chosen = 0;
+  std::ostringstream misfits;
+  for (int variant = 0; variant < 4; ++variant) {
+    const auto xv = nelderMead([&](const std::vector<double>& p) { return bp.cost(p, variant); }, x0, max_evaluations);
+    const double c = bp.cost(xv, variant);
+    misfits << (variant ? "; " : "") << kVariants[variant] << " " << c;
+    if (c < best) best = c, x = xv, chosen = variant;
+  }
+  r.stop_at_waypoints = chosen & 1;
+  r.speed_change_late = chosen & 2;
+  r.fitted.push_back(std::string("behaviour: ") + kVariants[chosen] + " (time misfit: " + misfits.str() + ")");
+  return x;
+}
+
+// Each free parameter before -> after in `r.fitted`; one that ended at the bound of its range is
+// said not to be determined by the flights.
+void reportBehaviour(const std::vector<FreeParameter>& free, const mission::AutopilotConfig& before, CalibrationResult& r) {
+  for (const auto& fp : free) {
+    std::ostringstream os;
+    os << fp.name << ": " << before.get(fp.name) << " -> " << r.autopilot.get(fp.name) << " " << fp.unit;
+    const double at = (r.autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo);
+    if (at < 0.01 || at > 0.99) {
+      os << " (at the bound of its range: not determined by these flights)";
+      r.notes.push_back(fp.name + " ended at the bound of its range [" + std::to_string(fp.lo) + ", " + std::to_string(fp.hi) +
+                        "]: the flights do not determine it");
+    }
+    r.fitted.push_back(os.str());
+  }
+  r.fitted.push_back("take-off delay: " + std::to_string(r.takeoff_delay_s) + " s from the take-off command to lift-off");
+}
+
+// The energy model's coefficients fitted to the logged power on the logged kinematics, into `r`.
+void fitEnergy(const std::vector<MissionFlight>& flights, const energy::EnergyModel& model, const FitSettings& settings,
+               CalibrationResult& r) {
+  std::vector<PreparedLog> logs;
+  for (const auto& f : flights) logs.push_back(prepareLog(f.log));
+  std::vector<SampleSet> sets;
+  for (const auto& l : logs) sets.push_back({&l, {}});
+  const FitResult fit = fitModel(model, sets, settings);
+  r.model = fit.model;
+  for (const auto& c : fit.coefficients) {
+    std::ostringstream os;
+    os << c.effect << "." << c.name << ": " << c.value << " " << c.unit;
+    if (c.at_bound) os << " (at its bound)";
+    r.fitted.push_back(os.str());
+    if (c.at_bound) r.notes.push_back(c.effect + "." + c.name + " stopped at its bound: not determined by these logs");
+    if (!c.determined) r.notes.push_back(c.effect + "." + c.name + " is not constrained by these logs: its value is arbitrary");
+  }
+}
+
+// Each flight predicted from its mission with `ap`, `model` and `settings`, compared with its log.
+std::vector<FlightComparison> predictAll(const std::vector<Prepared>& prepared, const energy::Vehicle& v,
+                                         const energy::EnergyModel& model, const mission::AutopilotConfig& ap,
+                                         const mission::PredictSettings& settings) {
+  std::vector<FlightComparison> out;
+  for (const auto& p : prepared) {
+    const auto pred = mission::predictMission(p.mission, v, model, ap, settings);
+    out.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
+  }
+  return out;
+}
+
 }  // namespace
 
 CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, const energy::Vehicle& v,
@@ -468,114 +587,35 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   CalibrationResult r;
   r.autopilot = autopilot;
   r.model = model;
-  mission::PredictSettings ps;
-  for (const auto& p : prepared) {
-    const auto pred = mission::predictMission(p.mission, v, model, autopilot, ps);
-    r.before.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
-  }
+  r.before = predictAll(prepared, v, model, autopilot, {});
   measureTracking(prepared, r);
   for (const auto& p : prepared) r.coverage = combine(r.coverage, missionKind(p.steps, autopilot));
-  // Flight behaviour: the free parameters and the take-off delay, normalised to [0, 1].
   const std::vector<FreeParameter> free = freeParameters(autopilot.family);
-  const double kMaxDelay = 10.0;
-  auto apply = [&](const std::vector<double>& x, mission::AutopilotConfig& ap, double& delay) {
-    for (std::size_t i = 0; i < free.size(); ++i) ap.parameters[free[i].name] = free[i].lo + x[i] * (free[i].hi - free[i].lo);
-    delay = x.back() * kMaxDelay;
-  };
-  std::vector<double> x0;
   for (const auto& fp : free) r.behaviour_before[fp.name] = autopilot.get(fp.name);
-  for (const auto& fp : free) x0.push_back(std::clamp((autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo), 0.0, 1.0));
-  x0.push_back(0.05);
-  const mission::Airframe airframe = mission::airframeOfVehicle(v, v.name);  // once, not per evaluation
-  // The time misfit of one flight flown with the parameters `x` and the behaviour `variant`.
-  auto flightCost = [&](const std::vector<double>& x, int variant, const Prepared& p) {
-    mission::AutopilotConfig ap = autopilot;
-    mission::FlightSettings fs;
-    fs.dt = s.sim_dt;
-    fs.airframe = airframe;
-    fs.stop_at_waypoints = variant & 1;
-    fs.speed_change_late = variant & 2;
-    fs.tracking_error = r.tracking.error;
-    apply(x, ap, fs.takeoff_delay_s);
-    try {
-      return timeCost(p.measured, predictedTimes(mission::flyMission(p.steps, ap, fs), {}, p.waypoints));
-    } catch (const std::exception&) {
-      return 100.0;
-    }
-  };
-  auto cost = [&](const std::vector<double>& x, int variant) {
-    double c = 0.0;
-    for (const auto& p : prepared) c += flightCost(x, variant, p);
-    return c;
-  };
-  // Corner and speed-change behaviour: the autopilot's own rules, a stop at every waypoint, speed
-  // changes a waypoint late, or both; the variant with the least time misfit wins.
-  const char* kVariants[4] = {"the autopilot's own rules", "a stop at every waypoint",
-                              "DO_CHANGE_SPEED one waypoint late", "a stop at every waypoint and DO_CHANGE_SPEED one waypoint late"};
-  std::vector<double> x;
-  double best = 1e300;
+  const BehaviourProblem bp{prepared, autopilot, free, mission::airframeOfVehicle(v, v.name), s.sim_dt, r.tracking.error};
   int chosen = 0;
-  std::ostringstream misfits;
-  for (int variant = 0; variant < 4; ++variant) {
-    const auto xv = nelderMead([&](const std::vector<double>& p) { return cost(p, variant); }, x0, s.max_evaluations);
-    const double c = cost(xv, variant);
-    misfits << (variant ? "; " : "") << kVariants[variant] << " " << c;
-    if (c < best) best = c, x = xv, chosen = variant;
-  }
-  r.stop_at_waypoints = chosen & 1;
-  r.speed_change_late = chosen & 2;
-  r.fitted.push_back(std::string("behaviour: ") + kVariants[chosen] + " (time misfit: " + misfits.str() + ")");
-  apply(x, r.autopilot, r.takeoff_delay_s);
-  for (const auto& fp : free) {
-    std::ostringstream os;
-    os << fp.name << ": " << autopilot.get(fp.name) << " -> " << r.autopilot.get(fp.name) << " " << fp.unit;
-    const double at = (r.autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo);
-    if (at < 0.01 || at > 0.99) {
-      os << " (at the bound of its range: not determined by these flights)";
-      r.notes.push_back(fp.name + " ended at the bound of its range [" + std::to_string(fp.lo) + ", " + std::to_string(fp.hi) +
-                        "]: the flights do not determine it");
-    }
-    r.fitted.push_back(os.str());
-  }
-  r.fitted.push_back("take-off delay: " + std::to_string(r.takeoff_delay_s) + " s from the take-off command to lift-off");
+  const std::vector<double> x = fitBehaviour(bp, s.max_evaluations, r, chosen);
+  bp.apply(x, r.autopilot, r.takeoff_delay_s);
+  reportBehaviour(free, autopilot, r);
   if (prepared.size() >= 2 && !free.empty()) {
     // The other behaviour parameters at their starting values (fitted jointly they would absorb the
     // flights' differences), the take-off delay at the joint fit.
-    std::vector<double> base = x0;
+    std::vector<double> base = bp.start();
     base.back() = x.back();
     base.front() = x.front();
     checkAgreement(prepared, free.front(), base, [&](const std::vector<double>& xf, const Prepared& p) {
-      return flightCost(xf, chosen, p);
+      return bp.flightCost(xf, chosen, p);
     }, r);
     for (std::size_t i = 0; i < r.per_flight.size() && i < prepared.size(); ++i)
       r.per_flight[i].kind = missionKind(prepared[i].steps, autopilot);
   }
-  // Energy: the model's coefficients fitted to the logged power on the logged kinematics.
-  if (s.fit_energy) {
-    std::vector<PreparedLog> logs;
-    for (const auto& f : flights) logs.push_back(prepareLog(f.log));
-    std::vector<SampleSet> sets;
-    for (const auto& l : logs) sets.push_back({&l, {}});
-    const FitResult fit = fitModel(model, sets, s.fit);
-    r.model = fit.model;
-    for (const auto& c : fit.coefficients) {
-      std::ostringstream os;
-      os << c.effect << "." << c.name << ": " << c.value << " " << c.unit;
-      if (c.at_bound) os << " (at its bound)";
-      r.fitted.push_back(os.str());
-      if (c.at_bound) r.notes.push_back(c.effect + "." + c.name + " stopped at its bound: not determined by these logs");
-      if (!c.determined) r.notes.push_back(c.effect + "." + c.name + " is not constrained by these logs: its value is arbitrary");
-    }
-  }
+  if (s.fit_energy) fitEnergy(flights, model, s.fit, r);
   mission::PredictSettings after;
   after.flight.takeoff_delay_s = r.takeoff_delay_s;
   after.flight.stop_at_waypoints = r.stop_at_waypoints;
   after.flight.speed_change_late = r.speed_change_late;
   after.flight.tracking_error = r.tracking.error;
-  for (const auto& p : prepared) {
-    const auto pred = mission::predictMission(p.mission, v, r.model, r.autopilot, after);
-    r.after.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
-  }
+  r.after = predictAll(prepared, v, r.model, r.autopilot, after);
   return r;
 }
 
