@@ -60,124 +60,152 @@ std::vector<g::Route> regionRoutes(const g::PolygonWithHoles& region, const Cove
   return routes;
 }
 
+// The options of `coverage`.
+void addCoverageOptions(CLI::App* cmd, CoverageOpts& o) {
+  cmd->add_option("AREA", o.area, "Survey area (GeoJSON, KML, WKT or QGC .waypoints)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--pattern", o.pattern, "Coverage pattern")
+      ->check(CLI::IsMember({"spiral", "boustrophedon"}))
+      ->capture_default_str();
+  cmd->add_option("--angle", o.angle_deg, "Sweep direction [deg] (0 = lines along east, counter-clockwise), 0..180")
+      ->check(CLI::Range(-360.0, 360.0))
+      ->capture_default_str();
+  auto* spacing = cmd->add_option("--spacing", o.spacing, "Distance between passes [m], > 0")->check(CLI::PositiveNumber);
+  auto* alt = cmd->add_option("--altitude", o.altitude, "Camera height above ground [m], > 0")->check(CLI::PositiveNumber);
+  auto* fov = cmd->add_option("--fov", o.fov_deg, "Camera field of view across track [deg], 0..180")->check(CLI::Range(0.0, 180.0));
+  auto* overlap = cmd->add_option("--overlap", o.overlap, "Side overlap fraction, 0..1")->check(CLI::Range(0.0, 0.99));
+  spacing->excludes(alt)->excludes(fov)->excludes(overlap);
+  alt->needs(fov);
+  fov->needs(alt);
+  cmd->add_option("--corners", o.corners, "Corner shape: sharp (stop, turn in place) or rounded (arc)")
+      ->check(CLI::IsMember({"sharp", "rounded"}))
+      ->capture_default_str();
+  cmd->add_option("--radius", o.radius, "Arc radius of rounded corners [m] (v / omega_max), >= 0")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--start", o.start, "Boustrophedon start corner in the sweep frame")
+      ->check(CLI::IsMember({"bottom-left", "bottom-right", "top-left", "top-right"}))
+      ->capture_default_str();
+  cmd->add_option("--start-vertex", o.start_vertex, "Spiral: start vertex of the first lap")->capture_default_str();
+  cmd->add_flag("--clockwise", o.clockwise, "Spiral: fly the laps clockwise");
+  cmd->add_option("--no-fly", o.no_fly, "Extra no-fly zone files, subtracted from the area")->check(CLI::ExistingFile);
+  cmd->add_option("--out", o.out, "Path file to write (GeoJSON, lon/lat, one LineString feature per leg with scalar properties)");
+  addForceFlag(cmd, o.force);
+  addJsonFlag(cmd, o.json);
+}
+
+// The distance between passes [m]: --spacing, else the camera's swath at --altitude and --fov.
+double passSpacing(const CoverageOpts& o) {
+  if (o.spacing > 0.0) return o.spacing;
+  g::CameraSettings cam;
+  cam.altitude = o.altitude;
+  cam.fov = o.fov_deg * kDeg;
+  cam.side_overlap = o.overlap;
+  return g::swathSpacing(cam);
+}
+
+// The paths over every region of an area and what their checks found.
+struct CoverageResult {
+  std::vector<g::CoveragePath> paths;
+  std::vector<std::string> problems;
+  double required = 0.0, covered = 0.0;  // [m^2]
+  g::ContainmentReport outside;          // summed over the regions
+  int cells = 0;
+};
+
+// Covers each region of `area` (cells, routes joined, corners shaped) and checks the path: its
+// geometry, the area it covers, where it leaves the region.
+CoverageResult coverArea(const g::SurveyArea& area, const CoverageOpts& o, double spacing) {
+  g::CornerSettings corners;
+  corners.style = o.corners == "rounded" ? g::CornerStyle::Rounded : g::CornerStyle::Sharp;
+  corners.radius = o.radius;
+  CoverageResult cr;
+  for (size_t r = 0; r < area.regions.size(); ++r) {
+    const auto& region = area.regions[r];
+    const std::vector<g::Route> routes = regionRoutes(region, o, spacing);
+    cr.cells += static_cast<int>(routes.size());
+    progress("coverage: region " + std::to_string(r) + ": " + std::to_string(routes.size()) + " cells");
+    g::CoveragePath p = g::shapeCorners(g::joinRoutes(region, routes), corners, o.altitude, region);
+    p.pattern = o.pattern;
+    p.sweep_angle = o.angle_deg * kDeg;
+    for (const auto& problem : g::checkPath(p, region)) cr.problems.push_back("region " + std::to_string(r) + ": " + problem);
+    const auto report = g::checkCoverage(region, {p}, spacing);
+    const auto c = g::checkContainment(region, p, false);
+    cr.outside.outside_m += c.outside_m;
+    cr.outside.in_holes_m += c.in_holes_m;
+    cr.outside.max_depth_m = std::max(cr.outside.max_depth_m, c.max_depth_m);
+    cr.required += report.required_area;
+    cr.covered += report.covered_area;
+    cr.paths.push_back(std::move(p));
+  }
+  return cr;
+}
+
+// Prints the coverage as JSON or text.
+void printCoverage(const CoverageResult& cr, const CoverageOpts& o, double spacing) {
+  size_t legs = 0;
+  double length = 0.0;
+  int turns = 0;
+  for (const auto& p : cr.paths) {
+    legs += p.legs.size();
+    length += p.length();
+    turns += p.turnCount();
+  }
+  const double coverage_pct = cr.required > 0.0 ? 100.0 * cr.covered / cr.required : 100.0;
+  if (o.json) {
+    printJson({{"legs", legs},
+               {"length_m", length},
+               {"turns", turns},
+               {"coverage_pct", coverage_pct},
+               {"cells", cr.cells},
+               {"outside_area_m", cr.outside.outside_m},
+               {"in_no_fly_m", cr.outside.in_holes_m},
+               {"max_outside_depth_m", cr.outside.max_depth_m},
+               {"pattern", o.pattern},
+               {"angle_deg", o.angle_deg},
+               {"spacing_m", spacing},
+               {"problems", cr.problems}});
+    return;
+  }
+  std::cout << "pattern:  " << o.pattern << " (sweep angle " << o.angle_deg << " deg)\n"
+            << "spacing:  " << spacing << " m\n"
+            << "cells:    " << cr.cells << "\n"
+            << "legs:     " << legs << " (" << turns << " turns)\n"
+            << "length:   " << length << " m\n"
+            << "coverage: " << coverage_pct << " %\n"
+            << "outside:  " << cr.outside.outside_m << " m outside the area, " << cr.outside.in_holes_m
+            << " m in holes or no-fly zones\n";
+  for (const auto& p : cr.problems) std::cout << "problem:  " << p << "\n";
+  if (!o.out.empty()) std::cerr << "wrote " << o.out << std::endl;
+}
+
+// Runs `coverage` with options `o`.
+void runCoverage(const CoverageOpts& o) {
+  if (!o.out.empty()) {
+    auto inputs = o.no_fly;
+    inputs.push_back(o.area);
+    checkWritable(o.out, o.force, inputs);
+  }
+  if (o.spacing <= 0.0 && o.altitude <= 0.0) {
+    throw std::runtime_error("coverage: give --spacing M or --altitude M --fov DEG [--overlap F]");
+  }
+  g::ReadOptions ro;
+  ro.no_fly_files = o.no_fly;
+  const g::SurveyArea area = g::readSurveyArea(o.area, ro);
+  const double spacing = passSpacing(o);
+  const CoverageResult cr = coverArea(area, o, spacing);
+  if (!o.out.empty()) {
+    if (!area.frame) throw std::runtime_error(o.area + ": no geodetic frame, cannot write lat/lon to " + o.out);
+    writeTextFileAtomic(o.out, g::coveragePathToGeoJson(cr.paths, *area.frame));
+  }
+  printCoverage(cr, o, spacing);
+}
+
 }  // namespace
 
 void registerCoverageCommand(CLI::App& app) {
   auto o = std::make_shared<CoverageOpts>();
   auto* cmd = app.add_subcommand("coverage", "Coverage path over a survey area: boustrophedon or spiral");
-  cmd->add_option("AREA", o->area, "Survey area (GeoJSON, KML, WKT or QGC .waypoints)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--pattern", o->pattern, "Coverage pattern")
-      ->check(CLI::IsMember({"spiral", "boustrophedon"}))
-      ->capture_default_str();
-  cmd->add_option("--angle", o->angle_deg, "Sweep direction [deg] (0 = lines along east, counter-clockwise), 0..180")
-      ->check(CLI::Range(-360.0, 360.0))
-      ->capture_default_str();
-  auto* spacing = cmd->add_option("--spacing", o->spacing, "Distance between passes [m], > 0")->check(CLI::PositiveNumber);
-  auto* alt = cmd->add_option("--altitude", o->altitude, "Camera height above ground [m], > 0")->check(CLI::PositiveNumber);
-  auto* fov = cmd->add_option("--fov", o->fov_deg, "Camera field of view across track [deg], 0..180")->check(CLI::Range(0.0, 180.0));
-  auto* overlap = cmd->add_option("--overlap", o->overlap, "Side overlap fraction, 0..1")->check(CLI::Range(0.0, 0.99));
-  spacing->excludes(alt)->excludes(fov)->excludes(overlap);
-  alt->needs(fov);
-  fov->needs(alt);
-  cmd->add_option("--corners", o->corners, "Corner shape: sharp (stop, turn in place) or rounded (arc)")
-      ->check(CLI::IsMember({"sharp", "rounded"}))
-      ->capture_default_str();
-  cmd->add_option("--radius", o->radius, "Arc radius of rounded corners [m] (v / omega_max), >= 0")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--start", o->start, "Boustrophedon start corner in the sweep frame")
-      ->check(CLI::IsMember({"bottom-left", "bottom-right", "top-left", "top-right"}))
-      ->capture_default_str();
-  cmd->add_option("--start-vertex", o->start_vertex, "Spiral: start vertex of the first lap")->capture_default_str();
-  cmd->add_flag("--clockwise", o->clockwise, "Spiral: fly the laps clockwise");
-  cmd->add_option("--no-fly", o->no_fly, "Extra no-fly zone files, subtracted from the area")->check(CLI::ExistingFile);
-  cmd->add_option("--out", o->out, "Path file to write (GeoJSON, lon/lat, one LineString feature per leg with scalar properties)");
-  addForceFlag(cmd, o->force);
-  addJsonFlag(cmd, o->json);
-  cmd->callback([o]() {
-    if (!o->out.empty()) {
-      auto inputs = o->no_fly;
-      inputs.push_back(o->area);
-      checkWritable(o->out, o->force, inputs);
-    }
-    if (o->spacing <= 0.0 && o->altitude <= 0.0) {
-      throw std::runtime_error("coverage: give --spacing M or --altitude M --fov DEG [--overlap F]");
-    }
-    g::ReadOptions ro;
-    ro.no_fly_files = o->no_fly;
-    const g::SurveyArea area = g::readSurveyArea(o->area, ro);
-    double spacing = o->spacing;
-    if (spacing <= 0.0) {
-      g::CameraSettings cam;
-      cam.altitude = o->altitude;
-      cam.fov = o->fov_deg * kDeg;
-      cam.side_overlap = o->overlap;
-      spacing = g::swathSpacing(cam);
-    }
-    g::CornerSettings corners;
-    corners.style = o->corners == "rounded" ? g::CornerStyle::Rounded : g::CornerStyle::Sharp;
-    corners.radius = o->radius;
-    std::vector<g::CoveragePath> paths;
-    std::vector<std::string> problems;
-    double required = 0.0, covered = 0.0;
-    g::ContainmentReport outside;  // summed over the regions
-    int cells = 0;
-    for (size_t r = 0; r < area.regions.size(); ++r) {
-      const auto& region = area.regions[r];
-      const std::vector<g::Route> routes = regionRoutes(region, *o, spacing);
-      cells += static_cast<int>(routes.size());
-      progress("coverage: region " + std::to_string(r) + ": " + std::to_string(routes.size()) + " cells");
-      g::CoveragePath p = g::shapeCorners(g::joinRoutes(region, routes), corners, o->altitude, region);
-      p.pattern = o->pattern;
-      p.sweep_angle = o->angle_deg * kDeg;
-      for (const auto& problem : g::checkPath(p, region)) problems.push_back("region " + std::to_string(r) + ": " + problem);
-      const auto report = g::checkCoverage(region, {p}, spacing);
-      const auto c = g::checkContainment(region, p, false);
-      outside.outside_m += c.outside_m;
-      outside.in_holes_m += c.in_holes_m;
-      outside.max_depth_m = std::max(outside.max_depth_m, c.max_depth_m);
-      required += report.required_area;
-      covered += report.covered_area;
-      paths.push_back(std::move(p));
-    }
-    size_t legs = 0;
-    double length = 0.0;
-    int turns = 0;
-    for (const auto& p : paths) {
-      legs += p.legs.size();
-      length += p.length();
-      turns += p.turnCount();
-    }
-    const double coverage_pct = required > 0.0 ? 100.0 * covered / required : 100.0;
-    if (!o->out.empty()) {
-      if (!area.frame) throw std::runtime_error(o->area + ": no geodetic frame, cannot write lat/lon to " + o->out);
-      writeTextFileAtomic(o->out, g::coveragePathToGeoJson(paths, *area.frame));
-    }
-    if (o->json) {
-      printJson({{"legs", legs},
-                 {"length_m", length},
-                 {"turns", turns},
-                 {"coverage_pct", coverage_pct},
-                 {"cells", cells},
-                 {"outside_area_m", outside.outside_m},
-                 {"in_no_fly_m", outside.in_holes_m},
-                 {"max_outside_depth_m", outside.max_depth_m},
-                 {"pattern", o->pattern},
-                 {"angle_deg", o->angle_deg},
-                 {"spacing_m", spacing},
-                 {"problems", problems}});
-    } else {
-      std::cout << "pattern:  " << o->pattern << " (sweep angle " << o->angle_deg << " deg)\n"
-                << "spacing:  " << spacing << " m\n"
-                << "cells:    " << cells << "\n"
-                << "legs:     " << legs << " (" << turns << " turns)\n"
-                << "length:   " << length << " m\n"
-                << "coverage: " << coverage_pct << " %\n"
-                << "outside:  " << outside.outside_m << " m outside the area, " << outside.in_holes_m
-                << " m in holes or no-fly zones\n";
-      for (const auto& p : problems) std::cout << "problem:  " << p << "\n";
-      if (!o->out.empty()) std::cerr << "wrote " << o->out << std::endl;
-    }
-  });
+  addCoverageOptions(cmd, *o);
+  cmd->callback([o]() { runCoverage(*o); });
 }
 
 }  // namespace wattswath::apps
