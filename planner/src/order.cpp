@@ -232,13 +232,12 @@ GtspTour solveGtspExact(const GtspInstance& g) {
   return t;
 }
 
-GtspTour solveGtspHeuristic(const GtspInstance& g) {
-  g.validate();
-  const int k = g.clusterCount();
-  if (k == 0) return {};
-  const int n = static_cast<int>(g.cluster.size());
-  const auto members = membersOf(g);
-  // Greedy: from the depot, repeatedly go to the cheapest (transit + internal) candidate of an unvisited cluster.
+namespace {
+
+// Greedy cluster order: from the depot, repeatedly to the cheapest (transit + internal) candidate of
+// an unvisited cluster.
+std::vector<int> greedyOrder(const GtspInstance& g) {
+  const int k = g.clusterCount(), n = static_cast<int>(g.cluster.size());
   std::vector<int> order;
   std::vector<bool> done(k, false);
   int at = n;
@@ -257,46 +256,65 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
     order.push_back(g.cluster[bv]);
     at = bv;
   }
-  // Local search over the cluster order, in two alternating phases: (1) moves scored with each
-  // cluster's candidate fixed (O(k) per move), to a local optimum; then the candidates re-chosen
-  // optimally for that order (layered DP), and (1) again while that helps; (2) up to
-  // kDpMovesMaxClusters clusters, one pass of moves each scored with its own optimal candidates
-  // (O(k m^2) per move): an improvement there goes back to (1), none ends the search.
-  std::vector<double> buf_a, buf_b;
-  std::vector<int> o, rest, sel(static_cast<size_t>(k), -1);
-  auto reselect = [&]() {
-    const GtspTour t = bestForOrder(g, members, order);
-    for (size_t l = 0; l < order.size(); ++l) sel[static_cast<size_t>(order[l])] = t.nodes[l];
+  return order;
+}
+
+// Local search over a cluster order: 2-opt and or-opt moves, scored with each cluster's candidate
+// fixed (`sel`) or with the candidates re-chosen for each order.
+class OrderSearch {
+ public:
+  OrderSearch(const GtspInstance& g, std::vector<int> order)
+      : g_(g), members_(membersOf(g)), order_(std::move(order)), sel_(static_cast<size_t>(g.clusterCount()), -1),
+        est_{g, sel_, {}, {}, {}} {}
+
+  // Re-chooses the candidates optimally for the order (layered DP); returns the tour's cost.
+  double reselect() {
+    const GtspTour t = bestForOrder(g_, members_, order_);
+    for (size_t l = 0; l < order_.size(); ++l) sel_[static_cast<size_t>(order_[l])] = t.nodes[l];
     return t.cost;
-  };
-  auto fixedCost = [&](const std::vector<int>& ord) {
+  }
+  // Moves scored with the candidates fixed, to a local optimum.
+  void improveFixed() {
+    search([&](const std::vector<int>& ord) { return fixedCost(ord); }, true, true);
+  }
+  // One pass of moves each scored with its own optimal candidates; true when one improved.
+  bool improveOnce() {
+    return search([&](const std::vector<int>& ord) { return orderCost(g_, members_, ord, buf_a_, buf_b_); }, false, false);
+  }
+  // The best tour of the order reached.
+  GtspTour tour() const { return bestForOrder(g_, members_, order_); }
+
+ private:
+  // The cost of `ord` with each cluster's candidate fixed.
+  double fixedCost(const std::vector<int>& ord) const {
     double c = 0.0;
-    int prev = n;
+    int prev = static_cast<int>(g_.cluster.size());
     for (int cl : ord) {
-      const int v = sel[static_cast<size_t>(cl)];
-      c += g.transit(prev, v) + g.cost[v];
+      const int v = sel_[static_cast<size_t>(cl)];
+      c += g_.transit(prev, v) + g_.cost[v];
       prev = v;
     }
-    return c + g.transit(prev, n);
-  };
-  // Tries 2-opt and or-opt moves of `order` scored by `score` (first improvement, restart);
+    return c + g_.transit(prev, static_cast<int>(g_.cluster.size()));
+  }
+  // Tries 2-opt and or-opt moves of the order scored by `score` (first improvement, restart);
   // `exhaust` repeats until no move improves, otherwise one improvement ends the call. With
   // `estimate` (fixed candidates) a move whose O(1) estimate cannot pass the acceptance test is
   // skipped unscored: its exact cost would differ from the estimate by rounding only (kSkipMargin).
-  FixedOrderEstimate est{g, sel, {}, {}, {}};
-  auto search = [&](auto&& score, bool exhaust, bool estimate) {
-    double best_cost = score(order);
-    if (estimate) est.update(order);
+  template <class Score>
+  bool search(Score&& score, bool exhaust, bool estimate) {
+    const int k = static_cast<int>(order_.size());
+    double best_cost = score(order_);
+    if (estimate) est_.update(order_);
     bool any = false, improved = true;
     auto hopeless = [&](double delta) {
       return estimate && best_cost + delta >= best_cost * (1.0 - kImproveRel) + kSkipMargin * (1.0 + std::abs(best_cost));
     };
     auto accept = [&]() {
-      const double c = score(o);
+      const double c = score(o_);
       if (c < best_cost * (1.0 - kImproveRel)) {
-        order = o;
+        order_ = o_;
         best_cost = c;
-        if (estimate) est.update(order);
+        if (estimate) est_.update(order_);
         return true;
       }
       return false;
@@ -305,9 +323,9 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
       improved = false;
       for (int i = 0; i < k && !improved; ++i) {
         for (int j = i + 1; j < k && !improved; ++j) {  // 2-opt: reverse order[i..j]
-          if (hopeless(estimate ? est.reverse(i, j) : 0.0)) continue;
-          o = order;
-          std::reverse(o.begin() + i, o.begin() + j + 1);
+          if (hopeless(estimate ? est_.reverse(i, j) : 0.0)) continue;
+          o_ = order_;
+          std::reverse(o_.begin() + i, o_.begin() + j + 1);
           improved = accept();
         }
       }
@@ -315,12 +333,12 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
         for (int i = 0; i + len <= k && !improved; ++i) {
           for (int j = 0; j <= k - len && !improved; ++j) {
             if (j == i) continue;
-            if (hopeless(estimate ? est.move(i, len, j) : 0.0)) continue;
-            rest.assign(order.begin(), order.begin() + i);
-            rest.insert(rest.end(), order.begin() + i + len, order.end());
-            o = rest;
-            o.insert(o.begin() + std::min<int>(j, static_cast<int>(rest.size())), order.begin() + i,
-                     order.begin() + i + len);
+            if (hopeless(estimate ? est_.move(i, len, j) : 0.0)) continue;
+            rest_.assign(order_.begin(), order_.begin() + i);
+            rest_.insert(rest_.end(), order_.begin() + i + len, order_.end());
+            o_ = rest_;
+            o_.insert(o_.begin() + std::min<int>(j, static_cast<int>(rest_.size())), order_.begin() + i,
+                      order_.begin() + i + len);
             improved = accept();
           }
         }
@@ -329,19 +347,40 @@ GtspTour solveGtspHeuristic(const GtspInstance& g) {
       if (!exhaust) break;
     }
     return any;
-  };
-  double cost = reselect();
+  }
+
+  const GtspInstance& g_;
+  const std::vector<std::vector<int>> members_;
+  std::vector<int> order_, o_, rest_;  // the order; scratch for the moves
+  std::vector<int> sel_;               // cluster -> chosen candidate
+  FixedOrderEstimate est_;
+  std::vector<double> buf_a_, buf_b_;  // scratch for orderCost
+};
+
+}  // namespace
+
+GtspTour solveGtspHeuristic(const GtspInstance& g) {
+  g.validate();
+  const int k = g.clusterCount();
+  if (k == 0) return {};
+  // Local search over the greedy cluster order, in two alternating phases: (1) moves scored with
+  // each cluster's candidate fixed (O(k) per move), to a local optimum; then the candidates re-chosen
+  // optimally for that order (layered DP), and (1) again while that helps; (2) up to
+  // kDpMovesMaxClusters clusters, one pass of moves each scored with its own optimal candidates
+  // (O(k m^2) per move): an improvement there goes back to (1), none ends the search.
+  OrderSearch s(g, greedyOrder(g));
+  double cost = s.reselect();
   for (;;) {
-    search(fixedCost, true, true);
-    const double c = reselect();
+    s.improveFixed();
+    const double c = s.reselect();
     const bool better = c < cost * (1.0 - kImproveRel);
     cost = std::min(cost, c);
     if (better) continue;  // new candidates may open new moves
     if (k > kDpMovesMaxClusters) break;
-    if (!search([&](const std::vector<int>& ord) { return orderCost(g, members, ord, buf_a, buf_b); }, false, false)) break;
-    cost = reselect();
+    if (!s.improveOnce()) break;
+    cost = s.reselect();
   }
-  return bestForOrder(g, members, order);
+  return s.tour();
 }
 
 GtspTour solveGtsp(const GtspInstance& g, int exact_max_clusters) {
