@@ -12,8 +12,17 @@ namespace wattswath::calibration {
 using namespace energy;  // the physics this library compares with measurements
 using detail::num;
 
-FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyModel& truth,
-                         const SimulationSettings& s) {
+namespace {
+
+// A piece of the simulated flight with where it starts, its 3-D direction and its start time.
+struct Span {
+  Piece piece;
+  Eigen::Vector3d start, dir;
+  double t0;  // [s]
+};
+
+// Checks the waypoints (at least 2, finite) and the sample rate.
+void checkSimulation(const std::vector<Eigen::Vector3d>& wps, const SimulationSettings& s) {
   if (wps.size() < 2) throw std::invalid_argument("simulateFlight: need at least 2 waypoints");
   for (size_t k = 0; k < wps.size(); ++k) {
     if (!wps[k].allFinite()) {
@@ -23,12 +32,12 @@ FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyMo
   if (!(s.rate_hz >= 0.1 && s.rate_hz <= 1000.0)) {
     throw std::invalid_argument("SimulationSettings.rate_hz = " + std::to_string(s.rate_hz) + ", expected 0.1..1000");
   }
-  // Timeline of pieces with their start position and 3-D direction.
-  struct Span {
-    Piece piece;
-    Eigen::Vector3d start, dir;
-    double t0;
-  };
+}
+
+// The flight as a timeline of pieces: a hover, then for each leg a turn in place to its heading and
+// a stop-to-stop profile (cruise or vertical speed), then a hover at the last heading; each piece
+// starts where the previous one ended.
+std::vector<Span> timeline(const std::vector<Eigen::Vector3d>& wps, const SimulationSettings& s) {
   std::vector<Span> spans;
   double t = 0.0;
   ProfileLimits lim;
@@ -57,18 +66,49 @@ FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyMo
     const double vc = horiz > std::abs(d.z()) ? s.cruise_speed : s.vertical_speed;
     for (const Piece& p : buildLegProfile(len, 0.0, vc, 0.0, lim, heading, d.z())) push(p, wps[k], d / len);
   }
-  // Each piece starts where the previous one ended.
-  {
-    Eigen::Vector3d pos = wps[0];
-    for (auto& sp : spans) {
-      sp.start = pos;
-      pos += sp.dir * sp.piece.length;
-    }
+  Eigen::Vector3d pos = wps[0];
+  for (auto& sp : spans) {
+    sp.start = pos;
+    pos += sp.dir * sp.piece.length;
   }
   Piece last = hover(std::max(s.hover_s, 1e-3));
   last.heading = heading;  // hover keeps the last heading (no yaw jump)
   push(last, wps.back(), Eigen::Vector3d::Zero());
+  return spans;
+}
 
+// The log sample of `sp` at time `tt` [s]: the true state with noise on the velocity and the power
+// (drawn from `rng`), the voltage falling linearly over the flight of `total` [s].
+LogSample sampleAt(const Span& sp, double tt, double total, const EnergyModel& truth, const SimulationSettings& s,
+                   std::mt19937& rng, std::normal_distribution<double>& noise) {
+  const double tau = std::clamp(tt - sp.t0, 0.0, sp.piece.duration);
+  MotionState st = stateAt(sp.piece, tau, sp.t0);
+  st.t = tt;
+  LogSample x;
+  x.t = tt;
+  double dist = 0.0;
+  if (sp.piece.length > 0.0) {
+    const double a = (sp.piece.v_end - sp.piece.v_start) / sp.piece.duration;
+    dist = sp.piece.v_start * tau + 0.5 * a * tau * tau;
+  }
+  x.position = sp.start + sp.dir * dist;
+  x.velocity = st.velocity + s.velocity_noise_mps * Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+  x.acceleration = st.acceleration;
+  x.yaw = st.heading;
+  const double p = truth.power(st) + s.power_noise_w * noise(rng);
+  x.voltage = s.voltage_start_v + (s.voltage_end_v - s.voltage_start_v) * tt / std::max(total, 1e-9);
+  x.power = p;
+  x.current = p / x.voltage;
+  return x;
+}
+
+}  // namespace
+
+FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyModel& truth,
+                         const SimulationSettings& s) {
+  checkSimulation(wps, s);
+  const std::vector<Span> spans = timeline(wps, s);
+  const double total = spans.back().t0 + spans.back().piece.duration;
   std::mt19937 rng(s.seed);
   std::normal_distribution<double> noise(0.0, 1.0);
   FlightLog log;
@@ -77,7 +117,6 @@ FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyMo
   log.metadata["vehicle"] = "simulated";
   log.metadata["sample_rate_hz"] = num(s.rate_hz, 6);
   log.metadata["seed"] = std::to_string(s.seed);
-  const double total = t;
   const double dt = 1.0 / s.rate_hz;
   // A waypoint 1e300 m away would otherwise loop for ever filling memory.
   if (!(std::isfinite(total) && total * s.rate_hz < s.max_samples)) {
@@ -89,26 +128,7 @@ FlightLog simulateFlight(const std::vector<Eigen::Vector3d>& wps, const EnergyMo
   size_t k = 0;
   for (double tt = 0.0; tt <= total; tt += dt) {
     while (k + 1 < spans.size() && tt >= spans[k].t0 + spans[k].piece.duration) ++k;
-    const Span& sp = spans[k];
-    const double tau = std::clamp(tt - sp.t0, 0.0, sp.piece.duration);
-    MotionState st = stateAt(sp.piece, tau, sp.t0);
-    st.t = tt;
-    LogSample x;
-    x.t = tt;
-    double dist = 0.0;
-    if (sp.piece.length > 0.0) {
-      const double a = (sp.piece.v_end - sp.piece.v_start) / sp.piece.duration;
-      dist = sp.piece.v_start * tau + 0.5 * a * tau * tau;
-    }
-    x.position = sp.start + sp.dir * dist;
-    x.velocity = st.velocity + s.velocity_noise_mps * Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
-    x.acceleration = st.acceleration;
-    x.yaw = st.heading;
-    const double p = truth.power(st) + s.power_noise_w * noise(rng);
-    x.voltage = s.voltage_start_v + (s.voltage_end_v - s.voltage_start_v) * tt / std::max(total, 1e-9);
-    x.power = p;
-    x.current = p / x.voltage;
-    log.samples.push_back(x);
+    log.samples.push_back(sampleAt(spans[k], tt, total, truth, s, rng, noise));
   }
   return log;
 }
