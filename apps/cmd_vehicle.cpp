@@ -148,11 +148,12 @@ parameters) and writes BASE, unchanged otherwise, with an `autopilot` object:
 Values are in the autopilot's own units (WPNAV_SPEED cm/s, RTL_ALT cm, MPC_XY_CRUISE m/s).
 A parameter logged several times keeps its last value before take-off (ArduPilot).
 Kept by default, the parameters that shape how the vehicle flies a mission:
-  ArduPilot: WPNAV_*, PSC_JERK_*, PSC_POSXY_*, PSC_VELXY_*, PSC_POSZ_*, PSC_ANGLE_MAX, ANGLE_MAX, ATC_INPUT_TC, ATC_ACCEL_*_MAX,
-    ATC_RATE_*_MAX, ATC_SLEW_YAW, WP_YAW_BEHAVIOR, RTL_*, LAND_*, PILOT_SPEED_UP/DN,
-    PILOT_TKOFF_ALT, TKOFF_*, WP_NAVALT_MIN, LOIT_* (3.x: RC_FEEL_RP, PILOT_VELZ_MAX, PILOT_ACCEL_Z)
+  ArduPilot: WPNAV_*, PSC_JERK_*, PSC_POSXY_*, PSC_VELXY_*, PSC_POSZ_*, PSC_VELZ_*, PSC_ACCZ_*, PSC_ANGLE_MAX,
+    ANGLE_MAX, ATC_INPUT_TC, ATC_ACCEL_*_MAX, ATC_RATE_*_MAX, ATC_SLEW_YAW, WP_YAW_BEHAVIOR, RTL_*, LAND_*,
+    PILOT_SPEED_UP/DN, PILOT_TKOFF_ALT, TKOFF_*, WP_NAVALT_MIN, LOIT_*, MOT_THST_HOVER, MOT_SPOOL_TIME
+    (3.x: POS_XY_P, POS_Z_P, VEL_XY_*, VEL_Z_*, ACCEL_Z_*, RC_FEEL_RP, PILOT_VELZ_MAX, PILOT_ACCEL_Z;
+    3.2: THR_MID, THR_ALT_P, THR_RATE_P, THR_ACCEL_P/I)
   PX4: MPC_* (incl. MPC_TKO_*, MPC_LAND_*), NAV_ACC_RAD, NAV_MC_ALT_RAD, RTL_*, MIS_*
-    (3.x: POS_XY_P, POS_Z_P, VEL_XY_*)
 --all keeps every parameter. Parameters left out take the firmware's documented defaults.
 From a DataFlash log it also identifies the airframe's horizontal drag, c1 v + c2 v^2, from the
 lean angle (ATT) against the EKF velocity, and writes it as `extensions.airframe` when the log

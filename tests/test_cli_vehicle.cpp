@@ -55,7 +55,8 @@ TEST_F(CliVehicle, WritesBaseWithTheLogsAutopilotObject) {
   EXPECT_EQ(p.at("WPNAV_ACCEL").get<double>(), 250.0);
   EXPECT_EQ(p.at("PSC_JERK_XY").get<double>(), 5.0);
   EXPECT_EQ(p.at("ATC_INPUT_TC").dump(), "0.15");  // the logged float 0.150000006 written as the user set it
-  EXPECT_FALSE(p.contains("MOT_THST_HOVER"));       // not a flight-behaviour parameter
+  EXPECT_FLOAT_EQ(p.at("MOT_THST_HOVER").get<float>(), 0.39f);  // the landing's throttle wind-down
+  EXPECT_FALSE(p.contains("MOT_THST_EXPO"));                      // not a flight-behaviour parameter
   EXPECT_FALSE(p.contains("STAT_FLTTIME"));
   // The file written is a valid vehicle file.
   const auto hover = run(cliBinary() + " hover --vehicle " + out("v.json") + " --json 2>&1");

@@ -226,9 +226,10 @@ TEST(Parameters, Px4ReleaseNumbers) {
 TEST(Parameters, FlightBehaviourSelection) {
   for (const char* n : {"WPNAV_SPEED", "WPNAV_JERK", "PSC_JERK_XY", "ATC_INPUT_TC", "ATC_ACCEL_R_MAX", "ATC_RATE_Y_MAX",
                         "ATC_SLEW_YAW", "WP_YAW_BEHAVIOR", "RTL_ALT", "LAND_SPEED_HIGH", "PILOT_SPEED_UP",
-                        "PILOT_TKOFF_ALT", "TKOFF_SLEW_TIME", "WP_NAVALT_MIN", "LOIT_SPEED", "ANGLE_MAX", "PSC_VELXY_P", "PSC_POSXY_P"})
+                        "PILOT_TKOFF_ALT", "TKOFF_SLEW_TIME", "WP_NAVALT_MIN", "LOIT_SPEED", "ANGLE_MAX", "PSC_VELXY_P", "PSC_POSXY_P",
+                        "MOT_THST_HOVER", "PSC_ACCZ_P", "PSC_VELZ_P", "THR_MID", "THR_ACCEL_I", "MOT_SPOOL_TIME"})
     EXPECT_TRUE(isFlightBehaviourParameter("ArduCopter", n)) << n;
-  for (const char* n : {"MOT_THST_HOVER", "STAT_FLTTIME", "ATC_RAT_RLL_P", "PSC_ACCZ_P", "ATC_ACCEL_R_FILT", "MPC_XY_CRUISE"})
+  for (const char* n : {"MOT_THST_EXPO", "STAT_FLTTIME", "ATC_RAT_RLL_P", "BATT_CAPACITY", "ATC_ACCEL_R_FILT", "MPC_XY_CRUISE"})
     EXPECT_FALSE(isFlightBehaviourParameter("ArduCopter", n)) << n;
   for (const char* n : {"MPC_XY_CRUISE", "MPC_ACC_HOR", "MPC_JERK_AUTO", "MPC_TKO_SPEED", "MPC_LAND_SPEED", "NAV_ACC_RAD",
                         "NAV_MC_ALT_RAD", "RTL_RETURN_ALT", "MIS_TAKEOFF_ALT"})
@@ -241,7 +242,7 @@ TEST(Parameters, FlightBehaviourSelection) {
 TEST(Parameters, FlightBehaviourParametersFilterTheMap) {
   AutopilotParameters p;
   p.firmware.family = "ArduCopter";
-  p.parameters = {{"WPNAV_SPEED", 1000}, {"MOT_THST_HOVER", 0.39}, {"RTL_ALT", 1500}};
+  p.parameters = {{"WPNAV_SPEED", 1000}, {"STAT_FLTTIME", 3600}, {"RTL_ALT", 1500}};
   const auto kept = wattswath::logs::flightBehaviourParameters(p);
   EXPECT_EQ(kept.size(), 2u);
   EXPECT_TRUE(kept.count("WPNAV_SPEED") && kept.count("RTL_ALT"));

@@ -26,6 +26,7 @@ constexpr double kAttitudeLag = 0.15;  // [s] attitude response time constant (d
 struct Params {
   double speed, speed_up, speed_dn, accel, accel_z, radius, pos_xy_p, pos_z_p, vel_xy_p, vel_xy_i, vel_xy_imax, accel_max;
   double rtl_alt, rtl_alt_final, rtl_climb_min, rtl_loiter_s, land_speed, land_alt_low, spool_s;
+  double land_wind_down_s;  // [s] from touch-down until the throttle is at its lower limit (throttleWindDown)
   bool linear_slack;  // before 3.4: the leash slack shrinks linearly with the cross-track error
   // [s] Before 3.4 AC_WPNav::update_wpnav advances the carrot and triggers the horizontal position
   // controller every 0.1 s (WPNAV_WP_UPDATE_TIME), which then runs its four steps (position to
@@ -48,6 +49,27 @@ bool linearSlackVersion(const std::string& version) {
 double leashLength(double speed, double accel, double kp) {
   const double l = speed <= accel / kp ? speed / kp : accel / (2.0 * kp * kp) + speed * speed / (2.0 * accel);
   return std::max(l, 1.0);
+}
+
+// A parameter under its 3.3 and later name, else under its 3.2 name when the vehicle file has that
+// one, else the default.
+double renamed(const AutopilotConfig& ap, const std::string& name, const std::string& name_32) {
+  if (ap.parameters.count(name) == 0 && ap.parameters.count(name_32) != 0) return ap.parameters.at(name_32);
+  return ap.get(name);
+}
+
+// The throttle's wind-down after touch-down [s] (detail::throttleWindDown) with the 3.x vertical
+// controller: hover throttle MOT_THST_HOVER (3.4 and later) or THR_MID / 1000 (3.2, 3.3), VEL_Z_P,
+// ACCEL_Z_P and ACCEL_Z_I (3.2: THR_RATE_P, THR_ACCEL_P, THR_ACCEL_I).
+double landWindDown(const AutopilotConfig& ap, double land_speed, double pos_z_p) {
+  using detail::checkParameter;
+  const double hover = ap.parameters.count("MOT_THST_HOVER") != 0
+                           ? checkParameter("MOT_THST_HOVER", ap.parameters.at("MOT_THST_HOVER"), 0.05, 0.95, "(throttle fraction)")
+                           : checkParameter("THR_MID", ap.get("THR_MID"), 50, 950, "(throttle x 1000)") / 1000.0;
+  return detail::throttleWindDown(hover, land_speed, pos_z_p,
+                                  checkParameter("VEL_Z_P", renamed(ap, "VEL_Z_P", "THR_RATE_P"), 0.1, 20, "1/s"),
+                                  checkParameter("ACCEL_Z_P", renamed(ap, "ACCEL_Z_P", "THR_ACCEL_P"), 0.01, 5, "-"),
+                                  checkParameter("ACCEL_Z_I", renamed(ap, "ACCEL_Z_I", "THR_ACCEL_I"), 0, 10, "1/s"));
 }
 
 Params readParams(const AutopilotConfig& ap) {
@@ -73,6 +95,7 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_speed = checkParameter("LAND_SPEED", ap.get("LAND_SPEED"), 30, 200, "cm/s") / 100.0;
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
+  p.land_wind_down_s = landWindDown(ap, p.land_speed, p.pos_z_p);
   p.linear_slack = linearSlackVersion(ap.version);
   p.nav_period = p.linear_slack ? 0.1 : 0.0;
   p.leash_up = leashLength(p.speed_up, p.accel_z, p.pos_z_p);
@@ -356,7 +379,7 @@ Eigen::Vector3d splineExit(const std::vector<NavStep>& steps, std::size_t k, con
 void land(Recorder& rec, const Params& P, int step, const FlightSettings& s) {
   const double alt_low = std::max(P.land_alt_low, 1.0);
   auto law = [&](double h) { return h > alt_low ? std::max(P.speed_dn, P.land_speed) : P.land_speed; };
-  detail::descendAndLand(rec, law, P.accel_z, step, s.landed_detect_s);
+  detail::descendAndLand(rec, law, P.accel_z, step, P.land_wind_down_s + s.landed_detect_s);
 }
 
 }  // namespace

@@ -19,10 +19,13 @@ namespace {
 using detail::kGravity;
 using detail::Recorder;
 
+constexpr double kHoldOffset = 0.01;  // [m] a vehicle's altitude off its position target in a hover (RTL climb leg)
+
 struct Params {
   double speed_xy, speed_up, speed_dn, accel_xy, accel_z, jerk, snap, radius, accel_corner;
   double jerk_z, rtl_alt, rtl_alt_final, rtl_climb_min, rtl_speed, rtl_loiter_s, land_speed, land_speed_high,
       land_alt_low, pos_z_p, spool_s, rtl_cone_slope;
+  double land_wind_down_s;  // [s] from touch-down until the throttle is at its lower limit (throttleWindDown)
   double spline_lateral;  // share of the acceleration limit a spline's curvature may use
   detail::PositionGains gains;
 };
@@ -64,6 +67,10 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.pos_z_p = checkParameter("PSC_POSZ_P", ap.get("PSC_POSZ_P"), 0.1, 10, "1/s");
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
+  p.land_wind_down_s = detail::throttleWindDown(
+      checkParameter("MOT_THST_HOVER", ap.get("MOT_THST_HOVER"), 0.05, 0.95, "(throttle fraction)"), p.land_speed, p.pos_z_p,
+      checkParameter("PSC_VELZ_P", ap.get("PSC_VELZ_P"), 0.1, 20, "1/s"), checkParameter("PSC_ACCZ_P", ap.get("PSC_ACCZ_P"), 0.01, 5, "-"),
+      checkParameter("PSC_ACCZ_I", ap.get("PSC_ACCZ_I"), 0, 10, "1/s"));
   p.gains.pos_p = checkParameter("PSC_POSXY_P", ap.get("PSC_POSXY_P"), 0.1, 10, "1/s");
   p.gains.vel_p = checkParameter("PSC_VELXY_P", ap.get("PSC_VELXY_P"), 0.1, 20, "1/s");
   p.gains.vel_i = checkParameter("PSC_VELXY_I", ap.get("PSC_VELXY_I"), 0, 20, "1/s/s");
@@ -323,7 +330,7 @@ void land(Recorder& rec, const Params& P, double speed_dn, int step, const Fligh
     if (h <= alt_low) return P.land_speed;
     return std::clamp(std::abs(detail::sqrtController(alt_low - h, P.pos_z_p, P.accel_z)), P.land_speed, v_hi);
   };
-  detail::descendAndLand(rec, law, P.accel_z, step, s.landed_detect_s);
+  detail::descendAndLand(rec, law, P.accel_z, step, P.land_wind_down_s + s.landed_detect_s);
 }
 
 }  // namespace
@@ -363,7 +370,11 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       fl.clock = 1.0;
       double alt = std::max(P.rtl_alt, here.z() + P.rtl_climb_min);
       if (P.rtl_cone_slope >= 0.5) alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, 2.5));
-      alt = std::max(alt, here.z());
+      // The climb leg runs from the position target to the measured altitude at least: a vehicle is
+      // never exactly on its target, and AC_WPNav flies even a leg of millimetres as a whole S-curve
+      // (0.6-1.1 s for 1 mm-1 cm). The offset is the measured vertical tracking error, else
+      // kHoldOffset (the ArduCopter 4.7 SITL logs: 0.2-1.4 cm, a 0.75-1.1 s pause before the return).
+      alt = std::max(alt, here.z() + std::max(s.tracking_error.vertical_m, kHoldOffset));
       LegSpec climb{{here.x(), here.y(), alt}, P.rtl_speed, P.speed_up, P.speed_dn, 0.0, ki, true};
       LegSpec home{{0.0, 0.0, alt}, P.rtl_speed, P.speed_up, P.speed_dn, P.rtl_loiter_s, ki, false};
       here = flyChain(fl, {climb, home}, here, P, FlightPhase::Return, P.jerk);

@@ -146,6 +146,53 @@ TEST(ArduCopterSCurve, ReturnFromAStopAtHomeTakesTheLoiterAndOneShortLeg) {
   EXPECT_LT(t1 - t0, 5.0 + 3.0 + 0.5);
 }
 
+TEST(ArduCopterSCurve, RtlNearHomeFirstFliesAClimbLegOfTheHoverOffset) {
+  // Near home the RTL climb target is the measured altitude, the leg starts at the position target:
+  // a hovering vehicle is never on it, and AC_WPNav flies even that leg of centimetres as a whole
+  // S-curve. The leg climbs max(vertical tracking error, 1 cm); 1 cm takes 1.1 s and 5 cm 1.6 s
+  // with the 4.x defaults (SCurveProfile::restToRest), so the return phase grows by about 0.5 s.
+  const Mission m = localMission({{100, 0, 10}, {100, 100, 10}, {0, 100, 10}, {0, 0, 10}});
+  auto fly = [&](double vertical) {
+    FlightSettings fs;
+    fs.sample_dt = fs.dt;
+    fs.tracking_error.vertical_m = vertical;
+    const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, fs);
+    double t0 = -1.0, t1 = -1.0, z0 = 0.0, z_top = 0.0;
+    for (const auto& s : f.samples) {
+      if (s.phase == FlightPhase::Return && t0 < 0.0) t0 = s.t, z0 = s.position.z();
+      if (s.phase == FlightPhase::Return) z_top = std::max(z_top, s.position.z());
+      if (s.phase == FlightPhase::Landing && t1 < 0.0) t1 = s.t;
+    }
+    EXPECT_GT(t1, t0);
+    return std::make_pair(t1 - t0, z_top - z0);
+  };
+  const auto [t_1cm, climb_1cm] = fly(0.0);
+  const auto [t_5cm, climb_5cm] = fly(0.05);
+  EXPECT_NEAR(climb_1cm, 0.01, 0.004);
+  EXPECT_NEAR(climb_5cm, 0.05, 0.01);
+  const SCurveLimits lim{10.0, 2.5, 1.0, 1.0 * M_PI / (2.0 * 0.15) * 0.5};
+  const double extra = SCurveProfile::restToRest(0.05, lim).duration() - SCurveProfile::restToRest(0.01, lim).duration();
+  EXPECT_NEAR(t_5cm - t_1cm, extra, 0.25) << "1 cm: " << t_1cm << " s, 5 cm: " << t_5cm << " s";
+}
+
+TEST(ArduCopterSCurve, LandingWaitsForTheThrottleToWindDownThenTheDetector) {
+  // On the ground the target keeps descending at LAND_SPEED 0.5 m/s: the throttle removed after t s
+  // is 0.25 (0.5 (1 + t) + t + t^2 / 2) = 0.125 + 0.375 t + 0.125 t^2 (PSC_POSZ_P 1, PSC_VELZ_P 5,
+  // PSC_ACCZ_P 0.5, PSC_ACCZ_I 1). It equals a hover throttle of 0.39 at t = 0.590 s and of 0.2 at
+  // t = 0.188 s; the landing detector's 1 s follows either way, so the flights differ by 0.402 s.
+  const Mission m = localMission({{30, 0, 10}});
+  auto flightTime = [&](double hover) {
+    AutopilotConfig ap;
+    ap.parameters["MOT_THST_HOVER"] = hover;
+    FlightSettings fs;
+    fs.sample_dt = fs.dt;
+    return flyMission(sequenceMission(m), ap, fs).samples.back().t;
+  };
+  EXPECT_NEAR(flightTime(0.39) - flightTime(0.2), 0.590 - 0.188, 0.03);
+  // A hover throttle the first step already removes (0.1 < 0.125): no wait beyond the detector.
+  EXPECT_NEAR(flightTime(0.1) - flightTime(0.2), -0.188, 0.03);
+}
+
 TEST(ArduCopterSCurve, VelocityLoopFiltersItsErrorAndAddsTheDerivative) {
   // AC_PID_2D (PSC_VELXY_*): P and I act on the velocity error low-passed at PSC_VELXY_FLTE, D on
   // its rate of change low-passed at PSC_VELXY_FLTD. The filter delays the correction of a lag, so
@@ -265,6 +312,27 @@ double maxSpeedBetween(const FlownMission& f, double t0, double t1) {
   for (const auto& s : f.samples)
     if (s.t >= t0 && s.t <= t1) v = std::max(v, s.velocity.head<2>().norm());
   return v;
+}
+
+TEST(ArduCopterLeash, LandingWaitsForTheThrottleToWindDownUnder32Names) {
+  // ArduCopter 3.2: hover throttle THR_MID / 1000, the vertical gains THR_RATE_P, THR_ACCEL_P and
+  // _I. With the defaults (500, 5, 0.5, 1) the throttle removed after touch-down,
+  // 0.125 + 0.375 t + 0.125 t^2, reaches 0.5 at t = 0.791 s; THR_MID 300 at 0.411 s. The IRIS+
+  // frame file's THR_ACCEL_I 1.5 (3.2 name) gives 0.125 + 0.5 t + 0.1875 t^2 = 0.5 at 0.610 s.
+  const Mission m = localMission({{30, 0, 10}});
+  auto flightTime = [&](const std::map<std::string, double>& params) {
+    AutopilotConfig ap;
+    ap.family = AutopilotFamily::ArduCopterLeash;
+    ap.version = "3.2";
+    ap.parameters = params;
+    FlightSettings fs;
+    fs.sample_dt = fs.dt;
+    return flyMission(sequenceMission(m), ap, fs).samples.back().t;
+  };
+  const double base = flightTime({});
+  EXPECT_NEAR(base - flightTime({{"THR_MID", 300}}), 0.791 - 0.411, 0.03);
+  EXPECT_NEAR(base - flightTime({{"THR_ACCEL_I", 1.5}}), 0.791 - 0.610, 0.03);
+  EXPECT_NEAR(base - flightTime({{"MOT_THST_HOVER", 0.3}}), 0.791 - 0.411, 0.03);  // 3.4 and later
 }
 
 TEST(ArduCopterLeash, SpeedIncreaseTakesEffectOneWaypointLateADecreaseAtOnce) {
