@@ -124,6 +124,7 @@ void registerCalibrateCommand(CLI::App& app) {
                                                   : nlohmann::json(nullptr);
       j["fitted"] = r.fitted;
       j["notes"] = r.notes;
+      j["kept_at_start"] = r.kept_at_start;  // behaviour parameters the flights do not call to change
       j["flights_agree"] = r.flights_agree;
       j["per_flight"] = nlohmann::json::array();
       for (const auto& f : r.per_flight) {

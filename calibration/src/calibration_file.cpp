@@ -110,6 +110,7 @@ std::string calibrationToJson(const CalibrationResult& r) {
     for (const auto& c : e->coefficients()) j["coefficients"][e->name()][c.name] = c.value;
   j["fitted"] = r.fitted;
   j["notes"] = r.notes;
+  j["kept_at_start"] = r.kept_at_start;
   j["flights_agree"] = r.flights_agree;
   if (!r.per_flight.empty()) {
     j["per_flight"]["parameter"] = r.acceleration_parameter;

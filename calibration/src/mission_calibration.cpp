@@ -527,6 +527,53 @@ std::vector<double> fitBehaviour(const BehaviourProblem& bp, int max_evaluations
   return x;
 }
 
+// The behaviour parameters the flights do not call to change, returned to their starting values one
+// at a time: each still fitted parameter is set back with the others re-fitted (Nelder-Mead), and the
+// one that raises the time misfit least goes back when that rise is under `share` of the misfit; again
+// until none does. A parameter the flights do not determine, or whose start they fit as well, stays
+// where it was. Returns the parameters; lists those set back in `r.kept_at_start` and `r.notes`.
+std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<double> x, int variant, int max_evaluations,
+                                     double share, CalibrationResult& r) {
+  const std::vector<double> x0 = bp.start();
+  std::vector<bool> fixed(bp.free.size(), false);
+  double cost = bp.cost(x, variant);
+  for (;;) {
+    double best_rise = 1e300;
+    std::size_t best_i = bp.free.size();
+    std::vector<double> best_x;
+    for (std::size_t i = 0; i < bp.free.size(); ++i) {
+      if (fixed[i]) continue;
+      std::vector<std::size_t> open;  // the coordinates still fitted, the take-off delay last
+      for (std::size_t j = 0; j < x.size(); ++j)
+        if (j == x.size() - 1 || (j != i && !fixed[j])) open.push_back(j);
+      std::vector<double> xi = x;
+      xi[i] = x0[i];
+      auto full = [&](const std::vector<double>& y) {
+        std::vector<double> z = xi;
+        for (std::size_t k = 0; k < open.size(); ++k) z[open[k]] = y[k];
+        return z;
+      };
+      std::vector<double> y0;
+      for (std::size_t j : open) y0.push_back(xi[j]);
+      const std::vector<double> y = nelderMead([&](const std::vector<double>& v) { return bp.cost(full(v), variant); }, y0,
+                                               max_evaluations);
+      const double rise = bp.cost(full(y), variant) - cost;
+      if (rise < best_rise) best_rise = rise, best_i = i, best_x = full(y);
+    }
+    if (best_i == bp.free.size() || !(best_rise < share * cost)) return x;
+    const double pct = 100.0 * std::max(best_rise, 0.0) / std::max(cost, 1e-12);
+    fixed[best_i] = true;
+    x = best_x;
+    cost += std::max(best_rise, 0.0);
+    const FreeParameter& fp = bp.free[best_i];
+    r.kept_at_start.push_back(fp.name);
+    r.notes.push_back(fp.name + " kept at its starting value " + num(fp.lo + x0[best_i] * (fp.hi - fp.lo)) + " " + fp.unit +
+                      ": set back there with the others re-fitted, the time misfit rises by " + num(pct) + " % (under " +
+                      num(100.0 * share) + " %), so these flights do not call for a change (they fit as well, or do not "
+                      "determine it)");
+  }
+}
+
 // Each free parameter before -> after in `r.fitted`; one that ended at the bound of its range is
 // said not to be determined by the flights.
 void reportBehaviour(const std::vector<FreeParameter>& free, const mission::AutopilotConfig& before, CalibrationResult& r) {
@@ -534,7 +581,9 @@ void reportBehaviour(const std::vector<FreeParameter>& free, const mission::Auto
     std::ostringstream os;
     os << fp.name << ": " << before.get(fp.name) << " -> " << r.autopilot.get(fp.name) << " " << fp.unit;
     const double at = (r.autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo);
-    if (at < 0.01 || at > 0.99) {
+    if (std::find(r.kept_at_start.begin(), r.kept_at_start.end(), fp.name) != r.kept_at_start.end()) {
+      os << " (kept: the flights fit as well with it)";
+    } else if (at < 0.01 || at > 0.99) {
       os << " (at the bound of its range: not determined by these flights)";
       r.notes.push_back(fp.name + " ended at the bound of its range [" + std::to_string(fp.lo) + ", " + std::to_string(fp.hi) +
                         "]: the flights do not determine it");
@@ -582,6 +631,9 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
                                     const CalibrationSettings& s) {
   if (flights.empty()) throw std::invalid_argument("calibration needs at least one logged flight of a known mission");
   if (!(s.sim_dt >= 0.005 && s.sim_dt <= 0.05)) throw std::invalid_argument("CalibrationSettings.sim_dt out of 0.005..0.05");
+  if (!(s.keep_share >= 0.0 && s.keep_share <= 1.0)) {
+    throw std::invalid_argument("CalibrationSettings.keep_share = " + std::to_string(s.keep_share) + ", expected 0..1");
+  }
   std::vector<Prepared> prepared;
   for (const auto& f : flights) prepared.push_back(prepare(f));
   CalibrationResult r;
@@ -594,7 +646,8 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   for (const auto& fp : free) r.behaviour_before[fp.name] = autopilot.get(fp.name);
   const BehaviourProblem bp{prepared, autopilot, free, mission::airframeOfVehicle(v, v.name), s.sim_dt, r.tracking.error};
   int chosen = 0;
-  const std::vector<double> x = fitBehaviour(bp, s.max_evaluations, r, chosen);
+  std::vector<double> x = fitBehaviour(bp, s.max_evaluations, r, chosen);
+  if (s.keep_share > 0.0) x = keepUnneededChanges(bp, x, chosen, s.max_evaluations, s.keep_share, r);
   bp.apply(x, r.autopilot, r.takeoff_delay_s);
   reportBehaviour(free, autopilot, r);
   if (prepared.size() >= 2 && !free.empty()) {

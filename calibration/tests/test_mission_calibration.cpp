@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "test_util.hpp"
@@ -152,18 +153,31 @@ MissionFlight flownSquare(const std::string& name, double accel, const wattswath
   return f;
 }
 
+// The IRIS+ vehicle (ArduCopter 3.2, the leash model), a hover-only energy model and its autopilot.
+struct IrisPlus {
+  wattswath::energy::Vehicle v = wattswath::energy::loadVehicle(
+      wattswath::test::sourcePath("data/vehicles/iris-plus-arducopter3.json"));
+  wattswath::energy::EnergyModel model = wattswath::energy::buildModel(v, {"hover"});
+  wattswath::mission::AutopilotConfig ap = wattswath::mission::parseAutopilot(v.autopilot_json, v.name);
+};
+
+// Calibration settings fitting the flight behaviour only, with `evaluations` simulated flights per fit.
+CalibrationSettings behaviourOnly(int evaluations) {
+  CalibrationSettings cs;
+  cs.max_evaluations = evaluations;
+  cs.fit_energy = false;
+  return cs;
+}
+
 }  // namespace
 
 TEST(MissionCalibration, FlightsSetUpWithDifferentAccelerationsAreToldApartAndSaidToDisagree) {
   // Two logs of one mission flown with WPNAV_ACCEL 60 and 200 cm/s/s: each flight alone wants its
   // own value, and the calibration says the flights do not agree instead of only printing the
   // compromise. Two flights flown alike agree.
-  const auto v = wattswath::energy::loadVehicle(wattswath::test::sourcePath("data/vehicles/iris-plus-arducopter3.json"));
-  const auto model = wattswath::energy::buildModel(v, {"hover"});
-  const auto ap = wattswath::mission::parseAutopilot(v.autopilot_json, v.name);
-  CalibrationSettings cs;
-  cs.max_evaluations = 40;
-  cs.fit_energy = false;
+  const IrisPlus ip;
+  const auto& [v, model, ap] = ip;
+  CalibrationSettings cs = behaviourOnly(40);
   const auto apart = calibrateMissions({flownSquare("slow.csv", 60, v), flownSquare("quick.csv", 200, v)}, v, model, ap, cs);
   ASSERT_EQ(apart.per_flight.size(), 2u);
   EXPECT_EQ(apart.acceleration_parameter, "WPNAV_ACCEL");
@@ -186,6 +200,36 @@ TEST(MissionCalibration, FlightsSetUpWithDifferentAccelerationsAreToldApartAndSa
   EXPECT_TRUE(alike.flights_agree);
   ASSERT_EQ(alike.per_flight.size(), 2u);
   EXPECT_NEAR(alike.per_flight[0].value, alike.per_flight[1].value, 0.1 * alike.per_flight[1].value);
+}
+
+TEST(MissionCalibration, BehaviourParametersTheFlightsDoNotCallToChangeKeepTheirStart) {
+  // A log of the square flown with WPNAV_ACCEL 60 cm/s/s and every other parameter at its default.
+  // Its corners and speed-ups call for the lower acceleration, so WPNAV_ACCEL is fitted (near 60);
+  // a parameter whose return to its starting value (the others re-fitted) costs under 1 % of the
+  // time misfit keeps that value and is said to. With keep_share 0 every fitted value is kept.
+  const IrisPlus ip;
+  const auto& [v, model, ap] = ip;
+  CalibrationSettings cs = behaviourOnly(60);
+  const MissionFlight slow = flownSquare("slow.csv", 60, v);
+  const auto r = calibrateMissions({slow}, v, model, ap, cs);
+  auto kept = [](const CalibrationResult& c, const std::string& n) {
+    return std::find(c.kept_at_start.begin(), c.kept_at_start.end(), n) != c.kept_at_start.end();
+  };
+  EXPECT_FALSE(kept(r, "WPNAV_ACCEL"));
+  EXPECT_NEAR(r.autopilot.get("WPNAV_ACCEL"), 60.0, 12.0);
+  ASSERT_FALSE(r.kept_at_start.empty());
+  for (const auto& n : r.kept_at_start) {
+    EXPECT_EQ(r.autopilot.get(n), ap.get(n)) << n;  // exactly its starting value
+    bool said = false;
+    for (const auto& note : r.notes) said = said || note.rfind(n + " kept at its starting value", 0) == 0;
+    EXPECT_TRUE(said) << n;
+  }
+  const auto stored = nlohmann::json::parse(calibrationToJson(r));
+  EXPECT_EQ(stored["kept_at_start"].size(), r.kept_at_start.size());
+  cs.keep_share = 0.0;
+  EXPECT_TRUE(calibrateMissions({slow}, v, model, ap, cs).kept_at_start.empty());
+  cs.keep_share = 1.5;
+  EXPECT_THROW(calibrateMissions({slow}, v, model, ap, cs), std::invalid_argument);
 }
 
 TEST(MissionCalibration, TheFlightIsPredictedFromWhereTheLogTookOffNotFromTheFilesHome) {

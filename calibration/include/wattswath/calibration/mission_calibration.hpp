@@ -132,6 +132,10 @@ struct CalibrationSettings {
   double sim_dt = 0.02;          ///< [s] simulation step while fitting; 0.005..0.05
   FitSettings fit;               ///< energy coefficient fit
   bool fit_energy = true;        ///< false: keep the model's coefficients
+  /// [-] A behaviour parameter whose return to its starting value (the others re-fitted) raises the
+  /// time misfit by less than this share keeps its starting value: the flights do not call for a
+  /// change (they fit as well, or do not determine it); 0 keeps every fitted value. 0..1
+  double keep_share = 0.01;
 };
 
 /// One flight's own value of the acceleration parameter (WPNAV_ACCEL, MPC_ACC_HOR), the other
@@ -160,6 +164,7 @@ struct CalibrationResult {
   std::vector<FlightComparison> before;   ///< per flight, uncalibrated
   std::vector<FlightComparison> after;    ///< per flight, calibrated
   std::vector<std::string> notes;         ///< what could not be determined, and why
+  std::vector<std::string> kept_at_start;  ///< behaviour parameters the flights do not call to change (keep_share)
   std::string acceleration_parameter;     ///< the acceleration parameter of per_flight (empty: one flight)
   std::vector<FlightAcceleration> per_flight;  ///< each flight's own acceleration (two flights or more)
   bool flights_agree = true;              ///< false when their own accelerations differ by more than 25 %
