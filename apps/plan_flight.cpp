@@ -43,9 +43,7 @@ std::optional<std::string> calibrationNote(const std::vector<mission::NavStep>& 
 planner::FlightScoring withSetup(planner::FlightScoring scoring, const PredictionSetup& setup) {
   scoring.model = &setup.model;
   scoring.autopilot = setup.autopilot;
-  const Eigen::Vector2d wind = scoring.settings.wind;  // the run's, not the vehicle file's
   scoring.settings = setup.settings;
-  scoring.settings.wind = wind;
   scoring.mission.firmware = setup.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
   return scoring;
 }
@@ -53,6 +51,7 @@ planner::FlightScoring withSetup(planner::FlightScoring scoring, const Predictio
 PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, const std::string& vehicle_path,
                         std::vector<std::string>& notes) {
   PredictionSetup setup = predictionSetup(*scoring.vehicle, vehicle_path, "", 25.0);
+  setup.settings.wind = scoring.settings.wind;  // this run's (plan --wind), as predict --wind sets it
   std::vector<std::pair<std::string, const planner::PlanCandidate*>> cands = {{"plan", &r.plan}};
   if (r.per_cell && r.per_cell->valid) cands.push_back({"per-cell", &*r.per_cell});
   if (r.best_spiral && r.best_spiral->valid) cands.push_back({"best spiral", &*r.best_spiral});

@@ -41,8 +41,9 @@ struct PlanFlight {
   std::optional<std::string> calibration_note;
 };
 
-/// `scoring` with the model, autopilot and settings of `setup`, and the mission naming that
-/// autopilot (QGC's firmwareType). `setup` must outlive the result (its model is referenced).
+/// `scoring` with the model, autopilot and settings of `setup` (its wind included: a run sets the
+/// setup's wind to its own first), and the mission naming that autopilot (QGC's firmwareType).
+/// `setup` must outlive the result (its model is referenced).
 planner::FlightScoring withSetup(planner::FlightScoring scoring, const PredictionSetup& setup);
 
 /// Flies the plan and its alternatives (per-cell plan, best spiral, shortest path) and makes

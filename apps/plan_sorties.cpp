@@ -240,6 +240,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
     throw std::invalid_argument("--energy-margin " + std::to_string(req.energy_margin_pct) + ": expected 0..100 %");
   PredictionSetup setup = predictionSetup(v, vehicle_path, "", req.reserve_pct);
   setup.settings.energy_margin = req.energy_margin_pct / 100.0;
+  setup.settings.wind = scoring.settings.wind;  // this run's (plan --wind)
   // As the whole plan was flown (plan_flight.cpp): a disputed calibration takes the value of its
   // flights of the plan's kind.
   if (const auto choice = kindChoiceOf(calibration::missionKind(flight.prediction.flight.steps, setup.autopilot), setup))
