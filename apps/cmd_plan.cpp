@@ -511,29 +511,25 @@ void printMission(const PlanSetup& s, const pl::PlanMission& pm, double margin, 
 /// Where the HTML report goes: --report, else DIR/report.html.
 std::string reportPath(const PlanOpts& o) { return o.report.empty() ? (fs::path(o.out) / "report.html").string() : o.report; }
 
-void runPlan(const PlanOpts& o) {
-  const std::optional<Wind> wind = windOption(o.wind);
-  const auto vehicle = energy::loadVehicle(o.vehicle);
-  PlanSetup s = setUp(o);
-  const auto& pr = s.problem;
-  const auto& frame = *s.area.frame;
+// The files of this run, checked: none may overwrite an input (even with --force), each may
+// replace an existing file only with --force.
+void checkPlanOutputs(const PlanOpts& o) {
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
   if (!o.no_report && o.report.empty()) files.push_back("report.html");
   if (o.gpkg) files.push_back("plan.gpkg");
-  // Every file of this run is staged and renamed into place together at the end (OutputSet), and
-  // --out stays locked until then: a failure midway keeps the previous run's files, and a second
-  // run into the same folder is refused instead of clobbering them.
-  OutputSet out_set(o.out);
-  // An input in --out under an output's name is refused even with --force (checkWritable).
   std::vector<std::string> inputs = {o.area, o.vehicle};
   inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
   for (const auto& f : files) checkWritable((fs::path(o.out) / f).string(), o.force, inputs);
   if (!o.no_report && !o.report.empty()) checkWritable(o.report, o.force, inputs);
+}
 
+// The search's settings from the options; a trigger interval caps the sweeps' speed (one photo per
+// trigger distance at most every interval), with a note.
+pl::PlannerSettings plannerSettings(const PlanOpts& o, PlanSetup& s, const energy::Vehicle& vehicle) {
   pl::PlannerSettings ps;
   ps.corners = pl::cornerStrategyFromString(o.corners);
   ps.camera_max_speed = o.camera_max_speed;
-  if (o.trigger_interval_s > 0.0) {  // one photo per trigger distance at most every interval
+  if (o.trigger_interval_s > 0.0) {
     if (!s.photos) throw std::invalid_argument("--trigger-interval needs a camera (--fov or --sensor-mm/--focal-mm with --overlap)");
     const double cap = s.photos->trigger_distance_m / o.trigger_interval_s;
     ps.camera_max_speed = ps.camera_max_speed > 0.0 ? std::min(ps.camera_max_speed, cap) : cap;
@@ -543,6 +539,110 @@ void runPlan(const PlanOpts& o) {
   checkCommandableSpeeds(vehicle.max_speed_mps, ps.camera_max_speed, o.vehicle);
   ps.spirals = !o.no_spiral;
   ps.overshoot = o.overshoot;
+  return ps;
+}
+
+// How the finalists are flown: the area, its frame and home altitude, the mission options (camera
+// trigger, fences, margins), the vehicle and the run's wind.
+pl::FlightScoring flightScoring(const PlanOpts& o, const PlanSetup& s, const energy::Vehicle& vehicle,
+                                const std::optional<Wind>& wind) {
+  pl::MissionOptions mo;
+  mo.trigger_distance_m = s.photos ? s.photos->trigger_distance_m : 0.0;
+  mo.rotor_count = vehicle.rotor_count;
+  mo.fence_margin_m = o.no_fly_margin > 0.0 ? o.no_fly_margin : pl::kDefaultNoFlyMargin;
+  mo.no_fly_margin_m = o.no_fly_margin;
+  pl::FlightScoring scoring;
+  scoring.problem = &s.problem;
+  scoring.frame = &*s.area.frame;
+  scoring.home_altitude_amsl_m = s.area.home_alt_m.value_or(s.area.frame->origin().alt_m);
+  scoring.mission = mo;
+  scoring.vehicle = &vehicle;
+  if (wind) scoring.settings.wind = wind->air();
+  return scoring;
+}
+
+// Writes the mission (.plan, .waypoints), the path (GeoJSON, legs.csv, the GeoPackage with --gpkg)
+// into --out; returns the .plan text.
+std::string writePlanFiles(const PlanOpts& o, const PlanSetup& s, const pl::PlanResult& r, const pl::PlanMission& pm) {
+  const auto& frame = *s.area.frame;
+  geo::PathGeoJsonOptions go;
+  go.leg_properties["speed_mps"] = r.plan.flown.speeds.cruise;
+  go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
+  go.leg_properties["time_s"] = r.plan.flown.leg_time;
+  const fs::path dir(o.out);
+  const std::string plan_text = ms::toQgcPlan(pm.mission);
+  writeTextFileAtomic((dir / "mission.plan").string(), plan_text);
+  writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
+  const std::string path_geojson = geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go);
+  writeTextFileAtomic((dir / "path.geojson").string(), path_geojson);
+  if (o.gpkg)
+    stageOutput((dir / "plan.gpkg").string(), [&](const std::string& tmp) {
+      geo::writeGeoPackage(tmp, {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
+    });
+  writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
+  return plan_text;
+}
+
+// The plan report: the search, the mission as the ground station numbers it, the flight, the photos
+// and the sorties.
+void writePlanReport(const PlanOpts& o, const PlanSetup& s, const pl::PlanResult& r, const energy::Vehicle& vehicle,
+                     const energy::EnergyModel& model, const PlanFlight& flight, const std::string& plan_text,
+                     const std::optional<SortieOutcome>& split) {
+  const auto& pm = flight.mission;
+  auto data = planReportData(r, s.problem, vehicle, model, o.area);
+  data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), *s.area.frame);
+  const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
+  data.facts.push_back({"flown by", flight.autopilot + ": " + fixedText(flight.prediction.total.energy_j / 1000.0, 1) + " kJ, " +
+                                        fixedText(flight.prediction.total.time_s / 60.0, 1) +
+                                        " min from take-off to landing (what predict gives for mission.plan)"});
+  data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
+                                                 fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
+                                           : std::string("no camera commands")});
+  if (split) data.sorties = split->view;
+  writeReport(report::planReport(data), o.no_report ? std::string() : reportPath(o), o.report_svg, o.force);
+}
+
+// What the written path covers and where it strays, checked after the files are written.
+struct PlanChecks {
+  double whole_area_pct = 0.0;  // [%] coverage of the whole area, the no-fly margin band counted
+  double photo_pct = 0.0;       // [%] coverage of the legs the camera is on along
+  geo::ContainmentReport inside;  // the path outside the area and in no-fly zones
+};
+
+// Checks the written path's coverage, its photos' and its containment; adds notes when the photos
+// cover less than the plan or the path strays.
+PlanChecks checkPlan(const PlanOpts& o, const PlanSetup& s, const pl::SurveyProblem& flown_pr, const pl::PlanResult& r,
+                     const pl::PlanMission& pm, std::vector<std::string>& notes) {
+  const auto& pr = s.problem;
+  PlanChecks c;
+  const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
+  c.whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
+  geo::CoveragePath photographed;  // the legs the camera is on along
+  for (int i : pm.camera_legs) photographed.legs.push_back(r.plan.flown.path.legs[static_cast<size_t>(i)]);
+  c.photo_pct = s.photos ? pl::coveragePercent(flown_pr, photographed) : 0.0;
+  if (s.photos && c.photo_pct < 99.0)
+    notes.push_back("camera: the photos cover " + fixedText(c.photo_pct, 1) +
+                    " % of the area, less than the plan's coverage: the camera is off along turns (a spiral's corner "
+                    "arcs too), whose footprint the plan's coverage counts");
+  c.inside = pl::planContainment(pr, r.plan.flown.path);
+  if (c.inside.total() > 0.0 && o.overshoot <= 0.0)  // the tests hold this at 0; say so if it ever is not
+    notes.push_back("the path runs " + fixedText(c.inside.outside_m, 2) + " m outside the area and " +
+                    fixedText(c.inside.in_holes_m, 2) + " m in no-fly zones (up to " + fixedText(c.inside.max_depth_m, 2) +
+                    " m deep); please report the area");
+  return c;
+}
+
+void runPlan(const PlanOpts& o) {
+  const std::optional<Wind> wind = windOption(o.wind);
+  const auto vehicle = energy::loadVehicle(o.vehicle);
+  PlanSetup s = setUp(o);
+  const auto& pr = s.problem;
+  // Every file of this run is staged and renamed into place together at the end (OutputSet), and
+  // --out stays locked until then: a failure midway keeps the previous run's files, and a second
+  // run into the same folder is refused instead of clobbering them.
+  OutputSet out_set(o.out);
+  checkPlanOutputs(o);
+  const pl::PlannerSettings ps = plannerSettings(o, s, vehicle);
   // In wind the search takes the drag at air speed, so a leg's energy depends on its heading.
   const auto marins = energy::marinsModel(vehicle);
   const auto model = wind ? energy::withWind(marins, vehicle, wind->air().x(), wind->air().y()) : marins;
@@ -550,18 +650,7 @@ void runPlan(const PlanOpts& o) {
   const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
   auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
 
-  pl::MissionOptions mo;
-  mo.trigger_distance_m = s.photos ? s.photos->trigger_distance_m : 0.0;
-  mo.rotor_count = vehicle.rotor_count;
-  mo.fence_margin_m = o.no_fly_margin > 0.0 ? o.no_fly_margin : pl::kDefaultNoFlyMargin;
-  mo.no_fly_margin_m = o.no_fly_margin;
-  pl::FlightScoring scoring;
-  scoring.problem = &pr;
-  scoring.frame = &frame;
-  scoring.home_altitude_amsl_m = s.area.home_alt_m.value_or(frame.origin().alt_m);
-  scoring.mission = mo;
-  scoring.vehicle = &vehicle;
-  if (wind) scoring.settings.wind = wind->air();
+  pl::FlightScoring scoring = flightScoring(o, s, vehicle, wind);
   std::vector<std::string> flight_notes;
   progress("plan: flying the finalists' missions with the vehicle's autopilot model");
   const PlanFlight flight = flyFinalists(r, scoring, o.vehicle, flight_notes);
@@ -573,22 +662,9 @@ void runPlan(const PlanOpts& o) {
   notes.insert(notes.end(), flight_notes.begin(), flight_notes.end());
   notes.insert(notes.end(), r.notes.begin(), r.notes.end());
   notes.insert(notes.end(), pm.notes.begin(), pm.notes.end());
-  geo::PathGeoJsonOptions go;
-  go.leg_properties["speed_mps"] = r.plan.flown.speeds.cruise;
-  go.leg_properties["energy_j"] = r.plan.flown.leg_energy;
-  go.leg_properties["time_s"] = r.plan.flown.leg_time;
-  const fs::path dir(o.out);
-  const std::string plan_text = ms::toQgcPlan(pm.mission);
   if (flight.calibration_note) notes.push_back(*flight.calibration_note);
-  writeTextFileAtomic((dir / "mission.plan").string(), plan_text);
-  writeTextFileAtomic((dir / "mission.waypoints").string(), ms::toQgcWpl(pm.mission));
-  const std::string path_geojson = geo::coveragePathToGeoJson({r.plan.flown.path}, frame, go);
-  writeTextFileAtomic((dir / "path.geojson").string(), path_geojson);
-  if (o.gpkg)
-    stageOutput((dir / "plan.gpkg").string(), [&](const std::string& tmp) {
-      geo::writeGeoPackage(tmp, {{"legs", path_geojson}, {"area", geo::surveyAreaToGeoJson(s.area)}});
-    });
-  writeTextFileAtomic((dir / "legs.csv").string(), ms::toLegCsv(legRecords(r.plan.flown, frame)));
+  const fs::path dir(o.out);
+  const std::string plan_text = writePlanFiles(o, s, r, pm);
   std::optional<SortieOutcome> split;
   if (!o.sorties.sorties.empty()) {
     progress("plan: splitting into sorties for the battery (" + o.sorties.sorties + ", reserve " + fixedText(o.sorties.reserve_pct, 0) + " %)");
@@ -596,49 +672,24 @@ void runPlan(const PlanOpts& o) {
     split = planSorties(r.plan, flight, scoring, o.vehicle, o.sorties, dir);
   }
   const nlohmann::json sorties = split ? split->json : nlohmann::json(nullptr);
-  if (!o.no_report || !o.report_svg.empty()) {
-    auto data = planReportData(r, pr, vehicle, model, o.area);
-    data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), frame);  // numbered as the ground station shows them
-    const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
-    data.facts.push_back({"flown by", flight.autopilot + ": " + fixedText(flight.prediction.total.energy_j / 1000.0, 1) + " kJ, " +
-                                          fixedText(flight.prediction.total.time_s / 60.0, 1) +
-                                          " min from take-off to landing (what predict gives for mission.plan)"});
-    data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
-                                                   fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
-                                             : std::string("no camera commands")});
-    if (split) data.sorties = split->view;
-    writeReport(report::planReport(data), o.no_report ? std::string() : reportPath(o), o.report_svg, o.force);
-  }
+  if (!o.no_report || !o.report_svg.empty()) writePlanReport(o, s, r, vehicle, model, flight, plan_text, split);
   out_set.commit();
-  const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
-  const double whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
-  geo::CoveragePath photographed;  // the legs the camera is on along
-  for (int i : pm.camera_legs) photographed.legs.push_back(r.plan.flown.path.legs[static_cast<size_t>(i)]);
-  const double photo_pct = s.photos ? pl::coveragePercent(flown_pr, photographed) : 0.0;
-  if (s.photos && photo_pct < 99.0)
-    notes.push_back("camera: the photos cover " + fixedText(photo_pct, 1) +
-                    " % of the area, less than the plan's coverage: the camera is off along turns (a spiral's corner "
-                    "arcs too), whose footprint the plan's coverage counts");
-  const auto inside = pl::planContainment(pr, r.plan.flown.path);
-  if (inside.total() > 0.0 && o.overshoot <= 0.0)  // the tests hold this at 0; say so if it ever is not
-    notes.push_back("the path runs " + fixedText(inside.outside_m, 2) + " m outside the area and " +
-                    fixedText(inside.in_holes_m, 2) + " m in no-fly zones (up to " + fixedText(inside.max_depth_m, 2) +
-                    " m deep); please report the area");
+  const PlanChecks c = checkPlan(o, s, flown_pr, r, pm, notes);
   if (o.json) {
     auto j = planJsonOf(r, pr, o, dir, notes);
-    j["coverage_outside_zones_pct"] = whole_area_pct;
-    j["outside_area_m"] = inside.outside_m;
-    j["in_no_fly_m"] = inside.in_holes_m;
-    j["max_outside_depth_m"] = inside.max_depth_m;
-    j["mission"] = missionJson(s, pm, o.no_fly_margin, photo_pct);
+    j["coverage_outside_zones_pct"] = c.whole_area_pct;
+    j["outside_area_m"] = c.inside.outside_m;
+    j["in_no_fly_m"] = c.inside.in_holes_m;
+    j["max_outside_depth_m"] = c.inside.max_depth_m;
+    j["mission"] = missionJson(s, pm, o.no_fly_margin, c.photo_pct);
     j["flight"] = flightJson(flight);
     j["sorties"] = sorties;
     j["wind"] = windJson(wind);
     printJson(j);
     return;
   }
-  printPlanText(r, whole_area_pct, o.no_fly_margin);
-  printMission(s, pm, o.no_fly_margin, photo_pct, energy::marinsHoverPowerW(vehicle));
+  printPlanText(r, c.whole_area_pct, o.no_fly_margin);
+  printMission(s, pm, o.no_fly_margin, c.photo_pct, energy::marinsHoverPowerW(vehicle));
   printFlight(flight);
   if (!sorties.is_null()) printSorties(sorties);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
