@@ -88,28 +88,10 @@ report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr) {
   return facts;
 }
 
-/// The plan report's data from the planner's result: map legs, Table III-style breakdown of the
-/// coverage and transit legs (each leg re-profiled with energy::profileFromPath and the same
-/// model), the plan and baselines as scored candidates, and the Hwang battery trace when known.
-report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyProblem& pr, const energy::Vehicle& v,
-                                      const energy::EnergyModel& model, const std::string& area_file) {
-  report::PlanReportData d;
-  d.title = "wattswath plan: " + fs::path(area_file).filename().string();
-  const auto& f = r.plan.flown;
-  const auto num = fixedText;
-  d.facts = {{"area", area_file},
-             {"vehicle", v.name},
-             {"plan", r.plan.pattern + " at " + num(r.plan.sweep_angle_deg, 0) + " deg, " + std::to_string(r.plan.cells) +
-                          " cell(s), coverage " + num(r.plan.coverage_pct, 1) + " %"},
-             {"energy", num(f.energy, 0) + " J over " + num(f.time, 0) + " s and " + num(f.length, 0) + " m"},
-             {"lower bound", num(r.lower_bound_j, 0) + " J (plan / bound " +
-                                 num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ")"},
-             {"spacing", num(pr.spacing, 2) + " m, altitude " + num(pr.altitude, 1) + " m"}};
-  const auto pilot = pilotFacts(r, pr);
-  d.facts.insert(d.facts.begin() + 1, pilot.begin(), pilot.end());
-  d.areas = {pr.area};
-  d.no_fly = pr.no_fly;
-  d.home = pr.home;
+/// The map legs and the Table III-style breakdown of the coverage and transit legs, each leg
+/// re-profiled with energy::profileFromPath and the same model, into `d`.
+void addLegsAndBreakdowns(report::PlanReportData& d, const pl::FlownPath& f, const energy::Vehicle& v,
+                          const energy::EnergyModel& model) {
   const energy::ProfileLimits lim{v.max_acceleration_mps2, v.max_acceleration_mps2};
   d.coverage = model.emptyBreakdown();
   d.transit = model.emptyBreakdown();
@@ -132,6 +114,10 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
     model.accumulate(energy::profileFromPath(one, sp, lim, v.max_yaw_rate_radps), transit ? d.transit : d.coverage);
   }
   if (!any_transit) d.transit = energy::Breakdown{};
+}
+
+/// The plan and the sweep angles tried as scored candidates, the per-cell plans and the baselines.
+void addCandidates(report::PlanReportData& d, const pl::PlanResult& r) {
   const auto cand = [&](const pl::PlanCandidate& c, bool chosen) {
     return report::PlanCandidate{c.pattern, c.sweep_angle_deg * M_PI / 180.0, c.flown.energy, chosen};
   };
@@ -146,20 +132,49 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
   if (r.best_spiral)
     d.baselines.push_back({"best spiral", r.best_spiral->flown.energy, r.best_spiral->flown.length,
                            r.best_spiral->flown.time});
-  if (v.battery) {
-    std::vector<energy::PowerStep> steps;
-    for (size_t i = 0; i < f.leg_time.size(); ++i)
-      if (f.leg_time[i] > 0.0) steps.push_back({f.leg_time[i], f.leg_energy[i] / f.leg_time[i]});
-    const auto res = energy::simulateProfile(*v.battery, steps);
-    report::BatteryTrace bt;
-    bt.model = "Hwang et al. 2018 Eq. 9-15 (Peukert, linear voltage drop)";
-    for (const auto& smp : res.series) {
-      bt.t.push_back(smp.t);
-      bt.soc.push_back(100.0 * smp.usable_left);
-      bt.voltage.push_back(smp.voltage_v);
-    }
-    d.battery = bt;
+}
+
+/// The battery's state of charge and voltage along the plan's legs (Hwang et al.'s battery model).
+report::BatteryTrace batteryTrace(const pl::FlownPath& f, const energy::Battery& battery) {
+  std::vector<energy::PowerStep> steps;
+  for (size_t i = 0; i < f.leg_time.size(); ++i)
+    if (f.leg_time[i] > 0.0) steps.push_back({f.leg_time[i], f.leg_energy[i] / f.leg_time[i]});
+  const auto res = energy::simulateProfile(battery, steps);
+  report::BatteryTrace bt;
+  bt.model = "Hwang et al. 2018 Eq. 9-15 (Peukert, linear voltage drop)";
+  for (const auto& smp : res.series) {
+    bt.t.push_back(smp.t);
+    bt.soc.push_back(100.0 * smp.usable_left);
+    bt.voltage.push_back(smp.voltage_v);
   }
+  return bt;
+}
+
+/// The plan report's data from the planner's result: the facts, map legs and breakdowns
+/// (addLegsAndBreakdowns), the plan and baselines as scored candidates, and the Hwang battery trace
+/// when the vehicle has a battery.
+report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyProblem& pr, const energy::Vehicle& v,
+                                      const energy::EnergyModel& model, const std::string& area_file) {
+  report::PlanReportData d;
+  d.title = "wattswath plan: " + fs::path(area_file).filename().string();
+  const auto& f = r.plan.flown;
+  const auto num = fixedText;
+  d.facts = {{"area", area_file},
+             {"vehicle", v.name},
+             {"plan", r.plan.pattern + " at " + num(r.plan.sweep_angle_deg, 0) + " deg, " + std::to_string(r.plan.cells) +
+                          " cell(s), coverage " + num(r.plan.coverage_pct, 1) + " %"},
+             {"energy", num(f.energy, 0) + " J over " + num(f.time, 0) + " s and " + num(f.length, 0) + " m"},
+             {"lower bound", num(r.lower_bound_j, 0) + " J (plan / bound " +
+                                 num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ")"},
+             {"spacing", num(pr.spacing, 2) + " m, altitude " + num(pr.altitude, 1) + " m"}};
+  const auto pilot = pilotFacts(r, pr);
+  d.facts.insert(d.facts.begin() + 1, pilot.begin(), pilot.end());
+  d.areas = {pr.area};
+  d.no_fly = pr.no_fly;
+  d.home = pr.home;
+  addLegsAndBreakdowns(d, f, v, model);
+  addCandidates(d, r);
+  if (v.battery) d.battery = batteryTrace(f, *v.battery);
   return d;
 }
 
