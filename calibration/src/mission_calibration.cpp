@@ -560,7 +560,7 @@ std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<
       const double rise = bp.cost(full(y), variant) - cost;
       if (rise < best_rise) best_rise = rise, best_i = i, best_x = full(y);
     }
-    if (best_i == bp.free.size() || !(best_rise < share * cost)) return x;
+    if (best_i == bp.free.size() || !(best_rise <= share * cost)) return x;  // <=: a perfect fit keeps what it need not change
     const double pct = 100.0 * std::max(best_rise, 0.0) / std::max(cost, 1e-12);
     fixed[best_i] = true;
     x = best_x;
