@@ -115,22 +115,73 @@ int formatCharSize(char c) {
   }
 }
 
+namespace {
+
+// The format an FMT message's payload `p` (after the 3 header bytes) defines, laid out.
+Format decodeFmt(const std::uint8_t* p) {
+  Format f;
+  f.type = p[0];
+  f.length = p[1];
+  f.name = text(p + 2, 4);
+  f.format = text(p + 6, 16);
+  f.columns = splitColumns(text(p + 22, 64));
+  if (isOldFmtOfFmt(f)) f.columns.push_back("Columns");
+  layout(f);
+  return f;
+}
+
+// What is wrong with a format an FMT message defines (empty name, length under 3, FMT itself
+// redefined), empty when nothing is.
+std::string fmtProblem(const Format& f) {
+  if (f.name.empty()) return "FMT defines type " + std::to_string(f.type) + " with an empty name";
+  if (f.length < 3) return "FMT for " + f.name + " declares length " + std::to_string(f.length) + " (< 3)";
+  if (f.type == kFmtType && (f.length != kFmtLength || !f.decodable))
+    return "FMT redefines FMT itself as length " + std::to_string(f.length) + " format '" + f.format + "'";
+  return "";
+}
+
+}  // namespace
+
+std::string Log::at(std::size_t off) const { return source_ + ": byte offset " + std::to_string(off) + ": "; }
+
+void Log::define(const Format& f, std::size_t pos, bool lenient) {
+  const std::string bad = fmtProblem(f);
+  if (!bad.empty()) {
+    if (!lenient) throw std::runtime_error(at(pos) + bad);
+    if (first_problem_.empty()) first_problem_ = at(pos) + bad;
+    warnings_.push_back(at(pos) + bad + "; FMT ignored");
+    return;
+  }
+  auto old = formats_.find(f.type);
+  const bool differs = old != formats_.end() &&
+                       (old->second.length != f.length || old->second.format != f.format || old->second.name != f.name);
+  if (differs && records_.count(f.type)) {
+    const std::string what = "FMT redefines type " + std::to_string(f.type) + " (" + old->second.name + ") as " + f.name +
+                             " after messages of it were read";
+    if (!lenient) throw std::runtime_error(at(pos) + what);
+    if (first_problem_.empty()) first_problem_ = at(pos) + what;
+    warnings_.push_back(at(pos) + what + "; FMT ignored");
+    return;
+  }
+  if (old != formats_.end()) type_by_name_.erase(old->second.name);
+  type_by_name_[f.name] = f.type;
+  formats_[f.type] = f;
+}
+
 Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool lenient) {
   Log log;
   log.source_ = source;
   log.bytes_ = std::move(bytes);
   const auto& b = log.bytes_;
   const std::size_t n = b.size();
-  auto where = [&](std::size_t off) { return source + ": byte offset " + std::to_string(off) + ": "; };
-  auto fail = [&](std::size_t off, const std::string& what) {
-    throw std::runtime_error(where(off) + what);
-  };
+  auto fail = [&](std::size_t off, const std::string& what) { throw std::runtime_error(log.at(off) + what); };
   // Skips from `pos` to the next header in lenient mode; returns the new position.
   auto resync = [&](std::size_t pos, const std::string& what) {
     std::size_t next = pos + 1;
     while (next + 1 < n && !(b[next] == kHead1 && b[next + 1] == kHead2)) ++next;
     if (next + 1 >= n) next = n;
-    log.warnings_.push_back(where(pos) + what + "; skipped " + std::to_string(next - pos) + " bytes");
+    if (log.first_problem_.empty()) log.first_problem_ = log.at(pos) + what;
+    log.warnings_.push_back(log.at(pos) + what + "; skipped " + std::to_string(next - pos) + " bytes");
     return next;
   };
 
@@ -140,7 +191,7 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
       const std::string what = "file ends " + std::to_string(n - pos) +
                                " bytes after the last message, too short for a message header (truncated)";
       if (!lenient) fail(pos, what);
-      log.warnings_.push_back(where(pos) + what);
+      log.warnings_.push_back(log.at(pos) + what);
       log.cut_end_ = true;
       break;
     }
@@ -173,45 +224,13 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
                                std::to_string(length) + " bytes but only " + std::to_string(n - pos) +
                                " remain: the file is truncated";
       if (!lenient) fail(pos, what);
-      log.warnings_.push_back(where(pos) + what);
+      log.warnings_.push_back(log.at(pos) + what);
       log.cut_end_ = true;
       break;
     }
     if (type == kFmtType) {
       if (length < kFmtLength) fail(pos, "FMT messages are " + std::to_string(length) + " bytes, expected 89");
-      const std::uint8_t* p = b.data() + pos + 3;
-      Format f;
-      f.type = p[0];
-      f.length = p[1];
-      f.name = text(p + 2, 4);
-      f.format = text(p + 6, 16);
-      f.columns = splitColumns(text(p + 22, 64));
-      if (isOldFmtOfFmt(f)) f.columns.push_back("Columns");
-      layout(f);
-      std::string bad;
-      if (f.name.empty()) bad = "FMT defines type " + std::to_string(f.type) + " with an empty name";
-      else if (f.length < 3) bad = "FMT for " + f.name + " declares length " + std::to_string(f.length) + " (< 3)";
-      else if (f.type == kFmtType && (f.length != kFmtLength || !f.decodable))
-        bad = "FMT redefines FMT itself as length " + std::to_string(f.length) + " format '" + f.format + "'";
-      if (!bad.empty()) {
-        if (!lenient) fail(pos, bad);
-        log.warnings_.push_back(where(pos) + bad + "; FMT ignored");
-      } else {
-        auto old = log.formats_.find(f.type);
-        const bool differs = old != log.formats_.end() &&
-                             (old->second.length != f.length || old->second.format != f.format ||
-                              old->second.name != f.name);
-        if (differs && log.records_.count(f.type)) {
-          const std::string what = "FMT redefines type " + std::to_string(f.type) + " (" + old->second.name +
-                                   ") as " + f.name + " after messages of it were read";
-          if (!lenient) fail(pos, what);
-          log.warnings_.push_back(where(pos) + what + "; FMT ignored");
-        } else {
-          if (old != log.formats_.end()) log.type_by_name_.erase(old->second.name);
-          log.type_by_name_[f.name] = f.type;
-          log.formats_[f.type] = f;
-        }
-      }
+      log.define(decodeFmt(b.data() + pos + 3), pos, lenient);
     }
     log.records_[type].push_back(pos + 3);
     ++log.message_count_;
@@ -327,7 +346,9 @@ Log Log::parseAcceptingCutEnd(std::vector<std::uint8_t> bytes, const std::string
   const auto& w = log.warnings();
   const bool only_cut_end = w.size() == 1 && log.endsInCutMessage();
   if (!lenient && !w.empty() && !only_cut_end) {
-    throw std::runtime_error(w.front() + " (use --lenient to skip damaged records and read the rest)");
+    // The first damaged record as a strict reader meets it (nothing was skipped: the read is refused).
+    const std::string first = log.first_problem_.empty() ? w.front() : log.first_problem_;
+    throw std::runtime_error(first + " (use --lenient to skip damaged records and read the rest)");
   }
   return log;
 }

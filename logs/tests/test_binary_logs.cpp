@@ -118,6 +118,17 @@ TEST(DataFlash, UndefinedTypeNamesOffset) {
   }
   const auto lenient = wattswath::logs::dataflash::Log::parse(b, "x.bin", true);
   EXPECT_EQ(lenient.warnings().size(), 1u);
+  // The reader the commands use refuses the damaged record, naming it and --lenient, and says
+  // nothing of a skip it did not make.
+  try {
+    wattswath::logs::dataflash::Log::parseAcceptingCutEnd(b, "x.bin", false);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("byte offset " + std::to_string(at) + ": message type 200"), std::string::npos) << m;
+    EXPECT_NE(m.find("use --lenient"), std::string::npos) << m;
+    EXPECT_EQ(m.find("skipped"), std::string::npos) << m;
+  }
 }
 
 TEST(DataFlash, UnknownFormatCharacterOnlyFailsWhenUsed) {

@@ -74,6 +74,11 @@ class Log {
 
  private:
   const Format& require(const std::string& name, const std::string& column, int* index) const;
+  /// "SOURCE: byte offset OFF: ", the start of a message about the bytes at `off`.
+  std::string at(std::size_t off) const;
+  /// Takes the format an FMT message at byte `pos` defines; one that is malformed, or that would
+  /// redefine a type after messages of it were read, throws (or, `lenient`, is ignored with a warning).
+  void define(const Format& f, std::size_t pos, bool lenient);
 
   std::string source_;
   std::vector<std::uint8_t> bytes_;
@@ -81,6 +86,7 @@ class Log {
   std::map<std::string, int> type_by_name_;            // name -> type id
   std::map<int, std::vector<std::size_t>> records_;    // type id -> payload offsets
   std::vector<std::string> warnings_;
+  std::string first_problem_;  // the first damaged record, without what lenient reading did about it
   std::size_t message_count_ = 0;
   bool cut_end_ = false;
 };
