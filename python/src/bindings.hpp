@@ -28,6 +28,8 @@ void bindLogs(py::module_& m);
 void bindCalibration(py::module_& m);
 /// Adds mission files and mission prediction (mission library).
 void bindMission(py::module_& m);
+/// Adds mission calibration: flight behaviour and energy fitted to logged flights of known missions.
+void bindMissionCalibration(py::module_& m);
 /// Adds the coverage planner (planner library).
 void bindPlanner(py::module_& m);
 

@@ -2,7 +2,9 @@
 // as the vehicle's autopilot flies them (energy, time, phases, items, battery, trajectory arrays).
 #include "bindings.hpp"
 
+#include <optional>
 #include <utility>
+#include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/mission/autopilot.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/predict.hpp"
@@ -51,15 +53,33 @@ py::dict trajectoryDict(const ms::FlownMission& f) {
 }
 
 // Predicts `m` on vehicle `v` flown by the autopilot its file describes (ArduCopter 4.5 defaults without one).
-// `wind` [m/s]: where the air moves to (east, north).
-py::dict predict(const ms::Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
+// `wind` [m/s]: where the air moves to (east, north). `model` None: the vehicle's calibration
+// (extensions.calibration: its model and its take-off delay, corner and speed-change behaviour and
+// tracking error), as `wattswath predict` uses it without --effects.
+py::dict predict(const ms::Mission& m, const energy::Vehicle& v, const py::object& model_or_none,
                  double reserve_fraction, double energy_margin, std::pair<double, double> wind) {
   const ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, v.name);
   ms::PredictSettings s;
   s.reserve_fraction = reserve_fraction;
   s.energy_margin = energy_margin;
   s.wind = {wind.first, wind.second};
-  const ms::MissionPrediction p = ms::predictMission(m, v, model, ap, s);
+  std::optional<energy::EnergyModel> model;
+  if (model_or_none.is_none()) {
+    const auto cal = calibration::calibratedModel(v);
+    if (!cal) {
+      throw std::invalid_argument("predict_mission: model is None and vehicle " + v.name +
+                                  " has no calibration (extensions.calibration): give a model (build_model) or a "
+                                  "calibrated vehicle (calibrate_missions)");
+    }
+    model = cal->model;
+    if (cal->takeoff_delay_s >= 0.0) s.flight.takeoff_delay_s = cal->takeoff_delay_s;
+    s.flight.stop_at_waypoints = cal->stop_at_waypoints;
+    s.flight.speed_change_late = cal->speed_change_late;
+    s.flight.tracking_error = cal->tracking_error;
+  } else {
+    model = model_or_none.cast<energy::EnergyModel>();
+  }
+  const ms::MissionPrediction p = ms::predictMission(m, v, *model, ap, s);
   py::dict phases;
   for (int i = 0; i < ms::kFlightPhaseCount; ++i)
     phases[ms::toString(static_cast<ms::FlightPhase>(i))] = totalsDict(p.phases[i]);
@@ -107,7 +127,7 @@ void bindMission(py::module_& m) {
   m.def("read_mission", &readMission, py::arg("path"), py::arg("lenient") = false,
         "Reads a .plan (QGroundControl JSON) or .waypoints (QGC WPL 110) mission; lenient turns an unsupported "
         "command into a warning. RuntimeError names the item and field.");
-  m.def("predict_mission", &predict, py::arg("mission"), py::arg("vehicle"), py::arg("model"),
+  m.def("predict_mission", &predict, py::arg("mission"), py::arg("vehicle"), py::arg("model") = py::none(),
         py::arg("reserve_fraction") = 0.25, py::arg("energy_margin") = 0.10,
         py::arg("wind") = std::make_pair(0.0, 0.0),
         "Predicts the mission flown by the vehicle's autopilot model (its file's 'autopilot', else ArduCopter 4.5) "
@@ -115,7 +135,9 @@ void bindMission(py::module_& m) {
         "trajectory {t [s], position N x 3 [m], velocity N x 3 [m/s], step, phase}, warnings. The battery verdict "
         "also checks energy_margin [-] more energy for the prediction's own error. wind (east, north) [m/s]: a steady "
         "wind, where the air moves to (ArduCopter models fly against the drag at air speed; the drag power is taken "
-        "at air speed).");
+        "at air speed). model None: the vehicle's calibration (calibrate_missions, or a file `wattswath calibrate` "
+        "wrote) with its take-off delay, corner and speed-change behaviour and tracking error, as `wattswath predict` "
+        "uses it (its choice among disputed calibration values is the command line's only).");
 }
 
 }  // namespace wattswath::python

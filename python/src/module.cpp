@@ -1,6 +1,6 @@
 // The Python module `wattswath`: the libraries' public API for scripts and notebooks. Each
 // library's part is bound in its own file (energy.cpp, geometry.cpp, logs.cpp, calibration.cpp,
-// mission.cpp, planner.cpp); the library exceptions reach Python as ValueError
+// mission.cpp, mission_calibration.cpp, planner.cpp); the library exceptions reach Python as ValueError
 // (std::invalid_argument), IndexError (std::out_of_range) and RuntimeError (the readers' errors,
 // which name the file, line and field).
 #include "bindings.hpp"
@@ -54,5 +54,6 @@ PYBIND11_MODULE(wattswath, m) {
   wp::bindLogs(m);
   wp::bindCalibration(m);
   wp::bindMission(m);
+  wp::bindMissionCalibration(m);
   wp::bindPlanner(m);
 }
