@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <utility>
 
 #include "cli.hpp"
 #include "replay_mission.hpp"
@@ -108,8 +109,7 @@ void registerCalibrateCommand(CLI::App& app) {
     progress("calibrate: fitting " + std::string(ms::toString(ap.family)) + " parameters on " + std::to_string(flights.size()) +
              " flight(s), up to " + std::to_string(o->evaluations) + " simulated flights");
     const cal::CalibrationResult r = cal::calibrateMissions(flights, v, model, ap, cs);
-    v.autopilot_json = ms::autopilotToJson(r.autopilot);
-    v.extensions["calibration"] = cal::calibrationToJson(r);
+    v = cal::calibratedVehicle(std::move(v), r);
     writeTextFileAtomic(o->out, en::vehicleToJson(v));
     progress("calibrate: wrote " + o->out);
     if (o->json) {

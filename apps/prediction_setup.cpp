@@ -15,10 +15,7 @@ PredictionSetup setupWith(const energy::Vehicle& v, const std::string& vehicle_p
                     mission::parseAutopilot(v.autopilot_json, vehicle_path), {}, use_calibration, {}, {}, {}, {}, {}, {}};
   s.settings.reserve_fraction = reserve_pct / 100.0;
   if (!use_calibration) return s;
-  if (cal->takeoff_delay_s >= 0.0) s.settings.flight.takeoff_delay_s = cal->takeoff_delay_s;
-  s.settings.flight.stop_at_waypoints = cal->stop_at_waypoints;
-  s.settings.flight.speed_change_late = cal->speed_change_late;
-  s.settings.flight.tracking_error = cal->tracking_error;
+  s.settings.flight = calibration::calibratedFlight(*cal, s.settings.flight);
   s.disputed_parameter = cal->disputed_parameter;
   s.disputed_values = cal->disputed_values;
   s.disputed_flights = cal->disputed_flights;

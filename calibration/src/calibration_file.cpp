@@ -2,11 +2,13 @@
 // read back by `predict`, `plan` and `replay --mission` (mission_calibration.hpp).
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/mission/autopilot.hpp"
 
 namespace wattswath::calibration {
 namespace {
@@ -183,6 +185,20 @@ std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v) {
     readDisputedKinds(pf, where + ".per_flight", cm);
   }
   return cm;
+}
+
+mission::FlightSettings calibratedFlight(const CalibratedModel& c, mission::FlightSettings flight) {
+  if (c.takeoff_delay_s >= 0.0) flight.takeoff_delay_s = c.takeoff_delay_s;
+  flight.stop_at_waypoints = c.stop_at_waypoints;
+  flight.speed_change_late = c.speed_change_late;
+  flight.tracking_error = c.tracking_error;
+  return flight;
+}
+
+energy::Vehicle calibratedVehicle(energy::Vehicle v, const CalibrationResult& r) {
+  v.autopilot_json = mission::autopilotToJson(r.autopilot);
+  v.extensions["calibration"] = calibrationToJson(r);
+  return v;
 }
 
 }  // namespace wattswath::calibration

@@ -529,11 +529,11 @@ std::vector<double> fitBehaviour(const BehaviourProblem& bp, int max_evaluations
 
 // The behaviour parameters the flights do not call to change, returned to their starting values one
 // at a time: each still fitted parameter is set back with the others re-fitted (Nelder-Mead), and the
-// one that raises the time misfit least goes back when that rise is under `share` of the misfit; again
+// one that raises the time misfit least goes back when that rise is at most `share` of the misfit; again
 // until none does. A parameter the flights do not determine, or whose start they fit as well, stays
 // where it was. Returns the parameters; lists those set back in `r.kept_at_start` and `r.notes`.
 std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<double> x, int variant, int max_evaluations,
-                                     double share, CalibrationResult& r) {
+                                        double share, CalibrationResult& r) {
   const std::vector<double> x0 = bp.start();
   std::vector<bool> fixed(bp.free.size(), false);
   double cost = bp.cost(x, variant);
@@ -555,10 +555,10 @@ std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<
       };
       std::vector<double> y0;
       for (std::size_t j : open) y0.push_back(xi[j]);
-      const std::vector<double> y = nelderMead([&](const std::vector<double>& v) { return bp.cost(full(v), variant); }, y0,
-                                               max_evaluations);
-      const double rise = bp.cost(full(y), variant) - cost;
-      if (rise < best_rise) best_rise = rise, best_i = i, best_x = full(y);
+      const std::vector<double> xr = full(
+          nelderMead([&](const std::vector<double>& v) { return bp.cost(full(v), variant); }, y0, max_evaluations));
+      const double rise = bp.cost(xr, variant) - cost;
+      if (rise < best_rise) best_rise = rise, best_i = i, best_x = xr;
     }
     if (best_i == bp.free.size() || !(best_rise <= share * cost)) return x;  // <=: a perfect fit keeps what it need not change
     const double pct = 100.0 * std::max(best_rise, 0.0) / std::max(cost, 1e-12);
@@ -568,7 +568,7 @@ std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<
     const FreeParameter& fp = bp.free[best_i];
     r.kept_at_start.push_back(fp.name);
     r.notes.push_back(fp.name + " kept at its starting value " + num(fp.lo + x0[best_i] * (fp.hi - fp.lo)) + " " + fp.unit +
-                      ": set back there with the others re-fitted, the time misfit rises by " + num(pct) + " % (under " +
+                      ": set back there with the others re-fitted, the time misfit rises by " + num(pct) + " % (at most " +
                       num(100.0 * share) + " %), so these flights do not call for a change (they fit as well, or do not "
                       "determine it)");
   }

@@ -205,7 +205,7 @@ TEST(MissionCalibration, FlightsSetUpWithDifferentAccelerationsAreToldApartAndSa
 TEST(MissionCalibration, BehaviourParametersTheFlightsDoNotCallToChangeKeepTheirStart) {
   // A log of the square flown with WPNAV_ACCEL 60 cm/s/s and every other parameter at its default.
   // Its corners and speed-ups call for the lower acceleration, so WPNAV_ACCEL is fitted (near 60);
-  // a parameter whose return to its starting value (the others re-fitted) costs under 1 % of the
+  // a parameter whose return to its starting value (the others re-fitted) costs at most 1 % of the
   // time misfit keeps that value and is said to. With keep_share 0 every fitted value is kept.
   const IrisPlus ip;
   const auto& [v, model, ap] = ip;

@@ -143,6 +143,9 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
                            num(log.airborne.back().begin, 10) + " s): the landing is not in the log");
     raw.meta["ends_airborne"] = "yes";
   }
+  // Each reader collects its events kind by kind; the log lists them in time order (stable: one
+  // time keeps the readers' order).
+  std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
   log.events = std::move(raw.events);
 
   auto& m = log.metadata;

@@ -63,7 +63,7 @@ void validateRaw(Raw& raw, const std::string& source, bool lenient);
 void validateDerivedAcceleration(const Raw& raw, const std::string& source);
 
 /// The FlightLog of `raw`: battery sample times, position, velocity, acceleration and yaw
-/// interpolated to them, airborne windows, metadata; the time window of `opt` applied. Throws
+/// interpolated to them, airborne windows, the events in time order, metadata; the time window of `opt` applied. Throws
 /// std::runtime_error naming `source` when there are too few samples or they do not overlap.
 FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt);
 

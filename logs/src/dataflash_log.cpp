@@ -176,7 +176,6 @@ void dataflashEvents(const dataflash::Log& L, Raw& raw, bool copter) {
     const auto msg = L.textColumn("MSG", "Message");
     for (std::size_t k = 0; k < t.size(); ++k) raw.events.push_back({t[k], "message", msg[k]});
   }
-  std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
 }
 
 }  // namespace

@@ -191,7 +191,6 @@ void readEvents(const ulog::Log& L, Raw& raw) {
     if (!c.empty()) raw.meta["mission_items"] = num(c.back());
   }
   for (const auto& s : L.strings()) raw.events.push_back({s.t, "message", s.text});
-  std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
 }
 
 }  // namespace

@@ -72,10 +72,7 @@ py::dict predict(const ms::Mission& m, const energy::Vehicle& v, const py::objec
                                   "calibrated vehicle (calibrate_missions)");
     }
     model = cal->model;
-    if (cal->takeoff_delay_s >= 0.0) s.flight.takeoff_delay_s = cal->takeoff_delay_s;
-    s.flight.stop_at_waypoints = cal->stop_at_waypoints;
-    s.flight.speed_change_late = cal->speed_change_late;
-    s.flight.tracking_error = cal->tracking_error;
+    s.flight = calibration::calibratedFlight(*cal, s.flight);
   } else {
     model = model_or_none.cast<energy::EnergyModel>();
   }

@@ -61,9 +61,7 @@ py::dict calibrate(const energy::Vehicle& vehicle, const std::vector<logs::Fligh
   cs.fit_energy = !keep_energy;
   cs.keep_share = keep_share;
   const cal::CalibrationResult r = cal::calibrateMissions(flights, vehicle, model, ap, cs);
-  energy::Vehicle out = vehicle;
-  out.autopilot_json = ms::autopilotToJson(r.autopilot);
-  out.extensions["calibration"] = cal::calibrationToJson(r);
+  const energy::Vehicle out = cal::calibratedVehicle(vehicle, r);
   py::dict params;
   for (const auto& [name, value] : r.autopilot.parameters) params[py::str(name)] = value;
   py::list per_flight;

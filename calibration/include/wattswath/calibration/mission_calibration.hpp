@@ -133,7 +133,7 @@ struct CalibrationSettings {
   FitSettings fit;               ///< energy coefficient fit
   bool fit_energy = true;        ///< false: keep the model's coefficients
   /// [-] A behaviour parameter whose return to its starting value (the others re-fitted) raises the
-  /// time misfit by less than this share keeps its starting value: the flights do not call for a
+  /// time misfit by at most this share keeps its starting value: the flights do not call for a
   /// change (they fit as well, or do not determine it); 0 keeps every fitted value. 0..1
   double keep_share = 0.01;
 };
@@ -202,5 +202,13 @@ struct CalibratedModel {
 /// The calibration stored in `v` (extensions.calibration), or nothing when it has none. Throws
 /// std::invalid_argument naming the field when it is malformed.
 std::optional<CalibratedModel> calibratedModel(const energy::Vehicle& v);
+
+/// `flight` with the calibration's take-off delay (when it fitted one), corner and speed-change
+/// behaviour and tracking error: how `predict` flies a mission for the calibrated vehicle.
+mission::FlightSettings calibratedFlight(const CalibratedModel& c, mission::FlightSettings flight = {});
+
+/// `v` with the calibration `r` written in: the autopilot with its fitted parameters and
+/// extensions.calibration (what `calibrate` writes to its vehicle file).
+energy::Vehicle calibratedVehicle(energy::Vehicle v, const CalibrationResult& r);
 
 }  // namespace wattswath::calibration
