@@ -683,7 +683,8 @@ void runPlan(const PlanOpts& o) {
   std::optional<SortieOutcome> split;
   if (!o.sorties.sorties.empty()) {
     progress("plan: splitting into sorties for the battery (" + o.sorties.sorties + ", reserve " + fixedText(o.sorties.reserve_pct, 0) + " %)");
-    scoring.mission.arc_waypoints = flight.arc_waypoints;
+    scoring.mission.arc_waypoints = flight.arc_waypoints;  // the sorties are written as the mission was
+    scoring.mission.speeds_a_waypoint_early = flight.speeds_a_waypoint_early;
     split = planSorties(r.plan, flight, scoring, o.vehicle, o.sorties, dir);
   }
   const nlohmann::json sorties = split ? split->json : nlohmann::json(nullptr);

@@ -101,11 +101,16 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
     r.plan = chosen;
   }
   if (best.speeds_a_waypoint_early) {
+    const bool scurve = setup.autopilot.family == mission::AutopilotFamily::ArduCopterSCurve;
     notes.push_back("flight model: each speed command is written a waypoint early (the faster of its leg's planned speed and "
-                    "the next leg's): " + f.autopilot + " flies a speed increase only from the next waypoint on, and this "
-                    "mission flies cheaper so");
+                    "the next leg's): " + f.autopilot +
+                    (scurve ? " plans the leg after a waypoint it flies through before that leg's speed command runs and "
+                              "reaches a faster speed by a second acceleration after the first;"
+                            : " flies a speed increase only from the next waypoint on;") +
+                    " this mission flies cheaper so");
   }
   f.arc_waypoints = best.arc_waypoints;
+  f.speeds_a_waypoint_early = best.speeds_a_waypoint_early;
   for (const auto& l : best.candidate->flown.path.legs)
     if (l.kind == geometry::PrimitiveKind::Arc)
       f.max_chord_offset_m = std::max(f.max_chord_offset_m, l.radius * (1.0 - std::cos(0.5 * std::abs(l.turn_angle))));

@@ -33,6 +33,7 @@ struct PlanFlight {
   std::string chosen_by_search;        ///< what the closed-form search chose ("plan" row's pattern)
   planner::PlanMission mission;        ///< the mission of the chosen flight
   bool arc_waypoints = false;          ///< its arcs written as waypoints along them (else chords)
+  bool speeds_a_waypoint_early = false;  ///< its speed commands written a waypoint early (MissionOptions)
   double max_chord_offset_m = 0.0;     ///< [m] largest arc-to-chord distance of the chosen candidate's arcs
   mission::MissionPrediction prediction;  ///< its flight
   std::string autopilot;               ///< "ArduCopter 4.5 (arducopter-scurve model, ...)"

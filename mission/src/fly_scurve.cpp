@@ -101,6 +101,12 @@ struct Leg {
     a = u * s.acc;
   }
   void advance(double dt) { t = std::min(t + dt, prof.duration()); }
+  // A DO_CHANGE_SPEED run while the leg is flown (SCurve::set_speed_max).
+  void changeSpeed(double speed_xy, double speed_up, double speed_dn) {
+    if (prof.duration() <= 0.0) return;
+    prof.setSpeedMax(t, detail::kinematicLimit(u, speed_xy, speed_up, speed_dn));
+    vmax = prof.speedMax();
+  }
 };
 
 // What one leg of a chain asks for.
@@ -172,10 +178,17 @@ Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Ve
   Leg prev, cur = makeLeg(here, legs[0].target, legs[0], P, jerk, v_start, endOf(0)), next;
   std::size_t i = 0;
   if (end_speed) *end_speed = 0.0;
+  // The next leg is planned when this waypoint starts (ModeAuto::set_next_wp), with the speeds in
+  // force then; a DO_CHANGE_SPEED between the two runs when this waypoint is reached and re-plans
+  // the next leg in flight (below).
   auto prepareNext = [&] {
     next = Leg();
-    if (legs[i].fast && i + 1 < legs.size())
-      next = makeLeg(legs[i].target, legs[i + 1].target, legs[i + 1], P, jerk, 0.0, endOf(i + 1));
+    if (!legs[i].fast || i + 1 >= legs.size()) return;
+    LegSpec planned = legs[i + 1];
+    planned.speed_xy = legs[i].speed_xy;
+    planned.speed_up = legs[i].speed_up;
+    planned.speed_dn = legs[i].speed_dn;
+    next = makeLeg(legs[i].target, legs[i + 1].target, planned, P, jerk, 0.0, endOf(i + 1));
   };
   auto arrived = [&] {
     const bool target_done = !next.started && cur.t >= cur.prof.duration() && prev.remaining() <= 0.0;
@@ -211,6 +224,7 @@ Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Ve
         cur = next;
         cur.started = true;
         ++i;
+        cur.changeSpeed(legs[i].speed_xy, legs[i].speed_up, legs[i].speed_dn);
         prepareNext();
         continue;
       }

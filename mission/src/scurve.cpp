@@ -166,6 +166,7 @@ SCurveProfile SCurveProfile::between(double length, double origin_speed, double 
   }
   SCurveProfile p;
   p.length_ = length;
+  p.limits_ = limits;
   if (length == 0.0) return p;
   // The rest-to-rest peak speed Vm (SCurve::calculate_track), then each end's speed change from its
   // own speed (at most Vm) to Vm within half the leg (set_origin_speed_max / set_destination_speed_max).
@@ -178,6 +179,8 @@ SCurveProfile SCurveProfile::between(double length, double origin_speed, double 
   int i = 1;
   p.pushPhase(i, up.tj, up.jerk, up.t2, up.t4);
   p.end_acc_[kAccelEnd] = 0.0;  // rounding of the ramps
+  p.hold(kAccelEnd + 1, kSpeedChangeEnd, kAccelEnd);
+  i = kSpeedChangeEnd + 1;
   const double v = p.end_vel_[kAccelEnd];
   const double down_distance = extentOf(down, v1).distance;
   const double cruise = v > 0.0 ? std::max(0.0, (length - p.end_pos_[kAccelEnd] - down_distance) / v) : 0.0;
@@ -188,8 +191,147 @@ SCurveProfile SCurveProfile::between(double length, double origin_speed, double 
   return p;
 }
 
+void SCurveProfile::hold(int first, int last, int ref) {
+  for (int k = first; k <= last; ++k) {
+    kind_[k] = Kind::ConstJerk;
+    jerk_[k] = 0.0;
+    end_time_[k] = end_time_[ref];
+    end_acc_[k] = 0.0;
+    end_vel_[k] = end_vel_[ref];
+    end_pos_[k] = end_pos_[ref];
+  }
+}
+
+// Lengthens the cruise so that the leg ends at its length (SCurve's "t15").
+void SCurveProfile::stretchCruise() {
+  end_acc_[kDecelEnd] = 0.0;
+  end_vel_[kDecelEnd] = std::max(0.0, end_vel_[kDecelEnd]);
+  const double dp = std::max(0.0, length_ - end_pos_[kDecelEnd]);
+  const double v = end_vel_[kConst];
+  if (!(v > 0.0)) return;
+  for (int k = kConst; k <= kDecelEnd; ++k) {
+    end_time_[k] += dp / v;
+    end_pos_[k] += dp;
+  }
+}
+
+// In the speed change: it becomes the acceleration phase, leaving room for another change.
+void SCurveProfile::restartAfterSpeedChange() {
+  kind_[0] = Kind::ConstJerk;
+  jerk_[0] = 0.0;
+  end_time_[0] = end_time_[kAccelEnd];
+  end_acc_[0] = end_acc_[kAccelEnd];
+  end_vel_[0] = end_vel_[kAccelEnd];
+  end_pos_[0] = end_pos_[kAccelEnd];
+  for (int k = 1; k <= kAccelEnd; ++k) {
+    kind_[k] = kind_[k + 7];
+    jerk_[k] = jerk_[k + 7];
+    end_time_[k] = end_time_[k + 7];
+    end_acc_[k] = end_acc_[k + 7];
+    end_vel_[k] = end_vel_[k + 7];
+    end_pos_[k] = end_pos_[k + 7];
+  }
+  hold(kAccelEnd + 1, kSpeedChangeEnd, kAccelEnd);
+}
+
+// In the cruise: the acceleration and speed-change phases become the cruise flown so far.
+void SCurveProfile::restartInCruise(double time) {
+  const TrackState now = at(time);
+  kind_[0] = Kind::ConstJerk;
+  jerk_[0] = 0.0;
+  end_time_[0] = end_time_[kSpeedChangeEnd];
+  end_acc_[0] = 0.0;
+  end_vel_[0] = end_vel_[kSpeedChangeEnd];
+  end_pos_[0] = end_pos_[kSpeedChangeEnd];
+  for (int k = 1; k <= kSpeedChangeEnd; ++k) {
+    kind_[k] = Kind::ConstJerk;
+    jerk_[k] = 0.0;
+    end_time_[k] = time;
+    end_acc_[k] = 0.0;
+    end_vel_[k] = now.vel;
+    end_pos_[k] = now.pos;
+  }
+}
+
+// A slower speed before the constant acceleration has ended: the acceleration is re-planned to
+// the new speed, or to the slowest that cutting that segment short still allows.
+void SCurveProfile::shortenAcceleration(double time) {
+  const double v_min =
+      end_vel_[kAccelEnd] - end_acc_[kAccelMax] * (end_time_[kAccelMax] - std::max(time, end_time_[kAccelMax - 1]));
+  const double v_target = std::max(v_min, limits_.speed);
+  const SpeedChange up = planSpeedChange(end_vel_[0], v_target, 0.5 * length_, limits_);
+  int i = 1;
+  pushPhase(i, up.tj, up.jerk, up.t2, up.t4);
+  end_acc_[kAccelEnd] = 0.0;
+  hold(kAccelEnd + 1, kConst, kAccelEnd);
+  const SpeedChange down = planSpeedChange(0.0, v_target, 0.5 * length_, limits_);
+  i = kConst + 1;
+  pushPhase(i, down.tj, -down.jerk, down.t2, down.t4);
+  stretchCruise();
+}
+
+// The speed change from the acceleration's end speed to the new speed limit, within half the
+// cruise, when the cruise is long enough (SCurve::set_speed_max's rule). ArduPilot writes the jerk
+// time as min(powf(x, 1/3), tj): the integer 1/3 is 0, so the first term is 1 s and the rule is
+// 12 min(1 s, tj); we keep what the autopilot computes.
+void SCurveProfile::planSpeedChangeSegments() {
+  hold(kAccelEnd + 1, kSpeedChangeEnd, kAccelEnd);
+  const double v = end_vel_[kAccelEnd];
+  if (limits_.speed == v || !(v > 0.0)) return;
+  const double cruise = end_pos_[kConst] - end_pos_[kAccelEnd];
+  const double jerk_time = std::min(1.0, limits_.jerk * kPi / (2.0 * limits_.snap));
+  SpeedChange c;
+  double sign = 1.0;
+  if (limits_.speed < v && jerk_time * 12.0 < cruise / v) {
+    c = planSpeedChange(limits_.speed, v, 0.5 * cruise, limits_);
+    sign = -1.0;
+  } else if (limits_.speed > v && cruise / (jerk_time * 12.0) > v) {
+    c = planSpeedChange(v, std::min(limits_.speed, cruise / (jerk_time * 12.0)), 0.5 * cruise, limits_);
+  }
+  if (c.jerk == 0.0) return;
+  int i = kAccelEnd + 1;
+  pushPhase(i, c.tj, sign * c.jerk, c.t2, c.t4);
+  end_acc_[kSpeedChangeEnd] = 0.0;
+}
+
+// The braking from the cruise to `end_speed` [m/s] within what is left of the leg.
+void SCurveProfile::planDeceleration(double end_speed) {
+  int i = kConst;
+  push(i, Kind::ConstJerk, 0.0, 0.0);
+  const double v = end_vel_[kConst];
+  if (end_speed < v) {
+    const SpeedChange c = planSpeedChange(end_speed, v, length_ - end_pos_[kConst], limits_);
+    pushPhase(i, c.tj, -c.jerk, c.t2, c.t4);
+  } else {
+    hold(kConst + 1, kDecelEnd, kConst);
+  }
+  stretchCruise();
+}
+
+void SCurveProfile::setSpeedMax(double time, double speed) {
+  if (length_ == 0.0 || !(speed > 0.0) || !std::isfinite(speed) || speed == limits_.speed) return;
+  limits_.speed = speed;
+  if (time >= end_time_[kConst]) return;
+  const double end_speed = std::min(speed, end_vel_[kDecelEnd]);
+  if (!(time > 0.0)) {
+    *this = between(length_, std::min(speed, end_vel_[0]), end_speed, limits_);
+    return;
+  }
+  if (time >= end_time_[kAccelEnd] && time <= end_time_[kSpeedChangeEnd]) {
+    restartAfterSpeedChange();
+  } else if (time > end_time_[kSpeedChangeEnd]) {
+    restartInCruise(time);
+  }
+  if (time <= end_time_[kAccelMax] && end_time_[kAccelMax] > end_time_[kAccelMax - 1] && speed < end_vel_[kAccelEnd] &&
+      end_acc_[kAccelMax] > 0.0) {
+    shortenAcceleration(time);
+  }
+  planSpeedChangeSegments();
+  planDeceleration(std::min(end_speed, end_vel_[kSpeedChangeEnd]));
+}
+
 TrackState SCurveProfile::at(double t) const {
-  if (!(t > 0.0)) return {0.0, end_vel_[0], 0.0};
+  if (!(t > end_time_[0])) return {end_pos_[0], end_vel_[0], end_acc_[0]};
   if (t >= duration()) return {length_, end_vel_[kSegments - 1], 0.0};
   int i = 1;
   while (i < kSegments - 1 && t >= end_time_[i]) ++i;

@@ -55,4 +55,12 @@ inline double minSpeedBetween(const FlownMission& f, double t0, double t1) {
   return v;
 }
 
+/// [m/s] The highest horizontal speed of `f` between `t0` and `t1` [s].
+inline double maxSpeedBetween(const FlownMission& f, double t0, double t1) {
+  double v = 0.0;
+  for (const auto& s : f.samples)
+    if (s.t >= t0 && s.t <= t1) v = std::max(v, s.velocity.head<2>().norm());
+  return v;
+}
+
 }  // namespace wattswath::mission::testing

@@ -12,6 +12,7 @@
 
 using namespace wattswath::mission;
 using wattswath::mission::testing::localMission;
+using wattswath::mission::testing::maxSpeedBetween;
 using wattswath::mission::testing::minSpeedBetween;
 
 
@@ -67,6 +68,90 @@ TEST(SCurve, ALegJoinedAtSpeedKeepsTheRestToRestPeakAndEndsAtItsSpeeds) {
   const SCurveProfile short_leg = SCurveProfile::between(10.0, 20.0, 20.0, lim);
   EXPECT_NEAR(short_leg.at(0.0).vel, SCurveProfile::restToRest(10.0, lim).peakSpeed(), 1e-9);
   EXPECT_THROW(SCurveProfile::between(10.0, -1.0, 0.0, lim), std::invalid_argument);
+}
+
+// Largest |acceleration| and |jerk| of `p`, sampled every 1 ms.
+std::pair<double, double> accelAndJerkMax(const SCurveProfile& p) {
+  double a_max = 0.0, j_max = 0.0, prev_a = 0.0;
+  for (double t = 0.0; t <= p.duration(); t += 0.001) {
+    const double a = p.at(t).acc;
+    a_max = std::max(a_max, std::abs(a));
+    if (t > 0.0) j_max = std::max(j_max, std::abs(a - prev_a) / 0.001);
+    prev_a = a;
+  }
+  return {a_max, j_max};
+}
+
+TEST(SCurve, ASpeedRaisedDuringTheAccelerationIsReachedByASecondSpeedChange) {
+  // SCurve::set_speed_max during the acceleration: the first speed change is kept and a second one
+  // follows it. Hand-worked with A 2.5 m/s^2, J 1 m/s^3, tj 0.3 s: a change of 5 m/s peaks at the
+  // root of a^2 + tj a = 5 (2.091 m/s^2) and lasts 2 (a / J + tj) = 4.782 s; 0 -> 10 m/s lasts
+  // 6.8 s over 34 m. So 0 -> 5 -> 10 m/s takes 9.564 s over 11.955 + 35.866 m, and the 200 m leg
+  // 4.782 + 4.782 + (200 - 47.82 - 34) / 10 + 6.8 = 28.18 s, 1.38 s more than planned at 10 m/s.
+  const SCurveLimits lim{5.0, 2.5, 1.0, 1.0 * M_PI / 0.3 * 0.5};
+  SCurveProfile p = SCurveProfile::restToRest(200.0, lim);
+  const TrackState before = p.at(1.0);
+  p.setSpeedMax(1.0, 10.0);
+  const TrackState after = p.at(1.0);
+  EXPECT_NEAR(after.pos, before.pos, 1e-12);  // the flown part is not changed
+  EXPECT_NEAR(after.vel, before.vel, 1e-12);
+  EXPECT_NEAR(after.acc, before.acc, 1e-12);
+  EXPECT_NEAR(p.at(4.782).vel, 5.0, 2e-3);  // the first change ends at the old speed
+  EXPECT_NEAR(std::abs(p.at(4.782).acc), 0.0, 2e-3);
+  EXPECT_NEAR(p.peakSpeed(), 10.0, 1e-6);
+  EXPECT_NEAR(p.speedMax(), 10.0, 0.0);
+  EXPECT_NEAR(p.at(9.564).vel, 10.0, 2e-3);
+  EXPECT_NEAR(p.duration(), 28.18, 5e-3);
+  EXPECT_NEAR(p.duration() - SCurveProfile::restToRest(200.0, {10.0, 2.5, 1.0, lim.snap}).duration(), 1.38, 5e-3);
+  EXPECT_NEAR(p.at(p.duration()).pos, 200.0, 1e-9);
+  EXPECT_NEAR(p.at(p.duration()).vel, 0.0, 1e-9);
+  const auto [a_max, j_max] = accelAndJerkMax(p);
+  EXPECT_LE(a_max, 2.5 + 1e-6);
+  EXPECT_LE(j_max, 1.0 + 5e-3);
+}
+
+TEST(SCurve, ASpeedLoweredInTheCruiseOrTheAccelerationAndNothingOnceBraking) {
+  const double snap = 1.0 * M_PI / 0.3 * 0.5;
+  // In the cruise (200 m at 10 m/s, t = 10 s, 66 m flown): 10 -> 5 m/s within half the 100 m
+  // of cruise left (4.782 s, 35.87 m), then 5 m/s, then 5 -> 0 (4.782 s, 11.955 m):
+  // 10 + 4.782 + (200 - 66 - 35.87 - 11.955) / 5 + 4.782 = 36.80 s.
+  SCurveProfile cruise = SCurveProfile::restToRest(200.0, {10.0, 2.5, 1.0, snap});
+  cruise.setSpeedMax(10.0, 5.0);
+  EXPECT_NEAR(cruise.at(10.0).pos, 66.0, 1e-9);
+  EXPECT_NEAR(cruise.at(14.782).vel, 5.0, 2e-3);
+  EXPECT_NEAR(cruise.duration(), 36.80, 5e-3);
+  EXPECT_NEAR(cruise.at(cruise.duration()).pos, 200.0, 1e-9);
+  // In the constant acceleration (t = 3 s of 2.8-4.0 s): the acceleration is cut short. The
+  // slowest it can still end at is 10 - 2.5 (4 - 3) = 7.5 m/s (0.2 s of constant acceleration, at
+  // 5.8 s over 21.75 m); then 7.5 -> 6 m/s (peak root of a^2 + 0.3 a = 1.5: 2.768 s, 18.68 m),
+  // 6 m/s, and 6 -> 0 (5.208 s, 15.62 m): 5.8 + 2.768 + 143.95 / 6 + 5.208 = 37.77 s.
+  SCurveProfile accel = SCurveProfile::restToRest(200.0, {10.0, 2.5, 1.0, snap});
+  const TrackState at3 = accel.at(3.0);
+  accel.setSpeedMax(3.0, 6.0);
+  EXPECT_NEAR(accel.at(3.0).vel, at3.vel, 1e-9);
+  EXPECT_NEAR(accel.at(5.8).vel, 7.5, 2e-3);
+  EXPECT_NEAR(accel.peakSpeed(), 6.0, 1e-6);
+  EXPECT_NEAR(accel.duration(), 37.77, 1e-2);
+  const auto [a_max, j_max] = accelAndJerkMax(accel);
+  EXPECT_LE(a_max, 2.5 + 1e-6);
+  EXPECT_LE(j_max, 1.0 + 5e-3);
+  // Braking has begun (t = 21 s of the 26.8 s leg): nothing changes but the stored limit.
+  SCurveProfile braking = SCurveProfile::restToRest(200.0, {10.0, 2.5, 1.0, snap});
+  braking.setSpeedMax(21.0, 3.0);
+  EXPECT_NEAR(braking.duration(), 26.8, 1e-6);
+  EXPECT_EQ(braking.speedMax(), 3.0);
+  // Before the start: planned anew; a cruise of under 12 jerk times per m/s: no speed change
+  // (30 m at 5 m/s cruises 6.09 m, 6.09 / 3.6 s < 5 m/s); a speed of 0 is ignored.
+  SCurveProfile fresh = SCurveProfile::restToRest(200.0, {5.0, 2.5, 1.0, snap});
+  fresh.setSpeedMax(0.0, 10.0);
+  EXPECT_NEAR(fresh.duration(), 26.8, 1e-6);
+  SCurveProfile short_leg = SCurveProfile::restToRest(30.0, {5.0, 2.5, 1.0, snap});
+  const double short_duration = short_leg.duration();
+  short_leg.setSpeedMax(1.0, 10.0);
+  EXPECT_NEAR(short_leg.duration(), short_duration, 1e-9);
+  EXPECT_NEAR(short_leg.peakSpeed(), 5.0, 1e-6);
+  short_leg.setSpeedMax(1.0, 0.0);
+  EXPECT_EQ(short_leg.speedMax(), 10.0);
 }
 
 TEST(SCurve, RejectsLimitsThatAreNotPositive) {
@@ -251,6 +336,34 @@ TEST(ArduCopterSCurve, DoChangeSpeedAboveWpnavSpeedIsFlown) {
   for (const auto& s : f.samples) vmax = std::max(vmax, std::hypot(s.velocity.x(), s.velocity.y()));
   EXPECT_NEAR(vmax, 8.0, 0.15);
 }
+TEST(ArduCopterSCurve, ASpeedRaisedAtAWaypointFlownThroughIsASecondAccelerationAfterTheFirst) {
+  // ModeAuto::set_next_wp plans the leg after a waypoint flown through when that waypoint starts,
+  // at the speed then in force (5 m/s); the DO_CHANGE_SPEED 10 m/s before the next waypoint runs
+  // when the first is reached and re-plans that leg in flight (SCurve::set_speed_max): it first
+  // reaches 5 m/s, its acceleration falls to 0 there, then it accelerates again to 10 m/s. After a
+  // stop the leg is planned after the command: one acceleration from 0 to 10 m/s.
+  auto timeNearFiveOnSecondLeg = [](double hold_s) {
+    auto steps = sequenceMission(localMission({{200, 0, 10}, {200, 300, 10}}, 0.0));
+    steps[1].speed_xy = 5.0;
+    steps[1].hold_s = hold_s;
+    steps[2].speed_xy = 10.0;
+    const FlownMission f = flyMission(steps, AutopilotConfig{});
+    double t = 0.0;  // in the first half of the leg, where it accelerates
+    const double half = 0.5 * (f.events[1].completed_s + f.events[2].reached_s);
+    for (const auto& s : f.samples) {
+      const double v = s.velocity.head<2>().norm();
+      if (s.t > f.events[1].completed_s + 1.0 && s.t < half && v > 4.5 && v < 5.5) t += f.samples[1].t - f.samples[0].t;
+    }
+    return std::make_pair(t, maxSpeedBetween(f, f.events[1].completed_s, f.events[2].reached_s));
+  };
+  const auto [through, through_vmax] = timeNearFiveOnSecondLeg(0.0);
+  const auto [stop, stop_vmax] = timeNearFiveOnSecondLeg(1.0);
+  EXPECT_GT(through, 1.5);  // the join of the two speed changes: |v - 5| < 0.5 m/s for about 2 s
+  EXPECT_LT(stop, 0.7);     // one ramp at up to 2.5 m/s^2: about 0.4 s
+  EXPECT_NEAR(through_vmax, 10.0, 0.2);
+  EXPECT_NEAR(stop_vmax, 10.0, 0.2);
+}
+
 TEST(ArduCopterSCurve, TakeoffClimbsAtWpnavSpeedUpAndLandingEndsOnTheGround) {
   const Mission m = localMission({{0, 50, 10}});
   const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
@@ -305,13 +418,6 @@ TEST(ArduCopterLeash, StopWaypointIsReachedWithinTheRadiusAndHoldsStill) {
       EXPECT_LT((s.position - Eigen::Vector3d(100, 0, 10)).norm(), 2.5);
     }
   }
-}
-
-double maxSpeedBetween(const FlownMission& f, double t0, double t1) {
-  double v = 0.0;
-  for (const auto& s : f.samples)
-    if (s.t >= t0 && s.t <= t1) v = std::max(v, s.velocity.head<2>().norm());
-  return v;
 }
 
 TEST(ArduCopterLeash, LandingWaitsForTheThrottleToWindDownUnder32Names) {

@@ -59,14 +59,18 @@ std::vector<FlightScore> scoreByFlight(const std::vector<std::pair<std::string, 
   std::vector<FlightScore> all;
   std::vector<std::string> all_sources;  // names of the .plan texts in errors
   std::vector<char> has_arcs;
-  const bool leash = s.autopilot.family == mission::AutopilotFamily::ArduCopterLeash;
+  // ArduCopter flies a speed command late: before 4.1 an increase takes effect a waypoint late (the
+  // stale leash), from 4.1 on the leg after a waypoint flown through is planned before the command
+  // runs and re-planned in flight (a second acceleration after the first, SCurve::set_speed_max).
+  const bool late_speeds = s.autopilot.family == mission::AutopilotFamily::ArduCopterLeash ||
+                           s.autopilot.family == mission::AutopilotFamily::ArduCopterSCurve;
   for (const auto& [label, c] : candidates) {
     if (!c || !c->valid) continue;
     const bool arcs = std::any_of(c->flown.path.legs.begin(), c->flown.path.legs.end(),
                                   [](const geometry::PathLeg& l) { return l.kind == geometry::PrimitiveKind::Arc; });
     const bool baseline = std::find(s.as_written.begin(), s.as_written.end(), c) != s.as_written.end();
     for (const bool early : {false, true}) {
-      if (early && (!leash || baseline)) continue;  // only ArduCopter before 4.1 applies speed increases late
+      if (early && (!late_speeds || baseline)) continue;  // PX4 applies a speed command at once
       for (const bool arc_waypoints : {false, true}) {
         if (arc_waypoints && !arcs) continue;  // the same mission
         std::vector<std::string> how;

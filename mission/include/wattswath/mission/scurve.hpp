@@ -27,8 +27,9 @@ struct TrackState {
   double acc = 0.0;  ///< [m/s^2] acceleration along the track
 };
 
-/// A rest-to-rest S-curve profile along a straight leg: 7 accelerating segments, a constant-speed
-/// segment and 7 decelerating segments (unused segments have zero duration).
+/// A rest-to-rest S-curve profile along a straight leg: 7 accelerating segments, 7 speed-change
+/// segments (used when the speed limit changes in flight), a constant-speed segment and 7
+/// decelerating segments (unused segments have zero duration), as ArduCopter's SCurve lays them out.
 class SCurveProfile {
  public:
   /// A zero-length profile (duration 0).
@@ -42,6 +43,18 @@ class SCurveProfile {
   /// rest-to-rest peak is kept and each end's speed change starts (or ends) at its own speed.
   static SCurveProfile between(double length, double origin_speed, double destination_speed, const SCurveLimits& limits);
 
+  /// Re-plans the leg for the speed limit `speed` [m/s] at `time` [s] after its start, as
+  /// ArduCopter's SCurve::set_speed_max does when a DO_CHANGE_SPEED runs while the leg is flown:
+  /// before the start the whole leg is planned anew; during the acceleration a faster speed is
+  /// reached by a second speed change after the first (the first is not re-planned) and a slower
+  /// one by cutting the constant-acceleration segment short; in the cruise the speed changes from
+  /// the current speed; once braking has begun nothing changes. A speed change is planned only when
+  /// the cruise lasts more than 12 jerk times (the autopilot's rule) and reaches at most the cruise
+  /// length / (12 jerk times). A speed that is not positive and finite is ignored, as ArduCopter does.
+  void setSpeedMax(double time, double speed);
+  /// The speed limit the leg is planned for [m/s] (the last setSpeedMax, else the limits' speed).
+  double speedMax() const { return limits_.speed; }
+
   /// State at time `t` [s] after the start (clamped to [0, duration()]).
   TrackState at(double t) const;
   /// Total time from start to end [s].
@@ -52,21 +65,32 @@ class SCurveProfile {
   double decelStartTime() const { return end_time_[kConst]; }
   /// Length of the leg [m].
   double length() const { return length_; }
-  /// Highest speed reached [m/s].
-  double peakSpeed() const { return end_vel_[kAccelEnd]; }
+  /// Speed of the cruise (after the acceleration and any speed change) [m/s].
+  double peakSpeed() const { return end_vel_[kSpeedChangeEnd]; }
 
   /// Number of segments (the initial rest state counts as segment 0).
-  static constexpr int kSegments = 16;
+  static constexpr int kSegments = 23;
 
  private:
-  static constexpr int kAccelEnd = 7;  // last segment of the acceleration phase
-  static constexpr int kConst = 8;     // the constant-speed segment
+  static constexpr int kAccelMax = 4;         // constant-acceleration segment of the acceleration phase
+  static constexpr int kAccelEnd = 7;         // last segment of the acceleration phase
+  static constexpr int kSpeedChangeEnd = 14;  // last segment of the in-flight speed change
+  static constexpr int kConst = 15;           // the constant-speed segment
+  static constexpr int kDecelEnd = 22;        // last segment
   enum class Kind { ConstJerk, IncrJerk, DecrJerk };
   void push(int& i, Kind kind, double duration, double jerk);
   void pushJerkRamp(int& i, double tj, double jerk, double t_const);
   void pushPhase(int& i, double tj, double jerk, double t2, double t4);
+  void hold(int first, int last, int ref);
+  void stretchCruise();
+  void restartAfterSpeedChange();
+  void restartInCruise(double time);
+  void shortenAcceleration(double time);
+  void planSpeedChangeSegments();
+  void planDeceleration(double end_speed);
 
   double length_ = 0.0;
+  SCurveLimits limits_{};
   std::array<Kind, kSegments> kind_{};
   std::array<double, kSegments> jerk_{};      // [m/s^3] peak (or constant) jerk of the segment
   std::array<double, kSegments> end_time_{};  // [s]

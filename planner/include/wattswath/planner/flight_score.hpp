@@ -51,8 +51,8 @@ mission::MissionPrediction flyWrittenMission(const PlanMission& written, const F
 
 /// Flies each labelled candidate's mission (in order); a candidate with arcs twice: its arcs as
 /// chords flown by the autopilot's own cornering (unless a chord comes within the no-fly margin)
-/// and as waypoints along them (MissionOptions::arc_waypoints). For ArduCopter before 4.1 (the
-/// leash family) each of those also with its speed commands a waypoint early
+/// and as waypoints along them (MissionOptions::arc_waypoints). For ArduCopter (both families,
+/// which fly a speed command late) each of those also with its speed commands a waypoint early
 /// (MissionOptions::speeds_a_waypoint_early), unless it is in FlightScoring::as_written. Missions with the same .plan text
 /// are flown once; the flights run on FlightScoring::threads threads. Throws what missionFromPlan,
 /// parseQgcPlan and predictMission throw (for the first such mission in order).
