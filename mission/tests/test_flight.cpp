@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "flight_test_util.hpp"
 #include "wattswath/mission/flight.hpp"
@@ -152,6 +153,41 @@ TEST(SCurve, ASpeedLoweredInTheCruiseOrTheAccelerationAndNothingOnceBraking) {
   EXPECT_NEAR(short_leg.peakSpeed(), 5.0, 1e-6);
   short_leg.setSpeedMax(1.0, 0.0);
   EXPECT_EQ(short_leg.speedMax(), 10.0);
+}
+
+TEST(SCurve, InFlightSpeedChangesKeepTheProfileContinuousWithinItsLimitsAndEndOnTheTarget) {
+  // Random legs (0.1-500 m, 0.5-15.5 m/s, A 0.5-4.5 m/s^2, J 0.5-4.5 m/s^3) re-planned once or
+  // twice at random times to random speeds (fixed seed): the flown part never changes, the target
+  // never goes back, never jumps, never exceeds the acceleration limit and ends on the leg's end.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int n = 0; n < 2000; ++n) {
+    SCOPED_TRACE(n);
+    const double accel = 0.5 + 4.0 * u(rng), jerk = 0.5 + 4.0 * u(rng), tc = 0.1 + 0.4 * u(rng);
+    const double length = std::pow(10.0, -1.0 + 3.7 * u(rng));
+    SCurveProfile p = SCurveProfile::restToRest(length, {0.5 + 15.0 * u(rng), accel, jerk, 0.25 * jerk * M_PI / tc});
+    double t = u(rng) < 0.1 ? 0.0 : u(rng) * p.duration();
+    for (int k = 0; k < 1 + (u(rng) < 0.5); ++k) {
+      if (k > 0) t += u(rng) * (p.duration() - t);
+      const TrackState before = p.at(t);
+      p.setSpeedMax(t, 0.3 + 20.0 * u(rng));
+      if (t > 0.0) {
+        ASSERT_NEAR(p.at(t).pos, before.pos, 1e-6);
+        ASSERT_NEAR(p.at(t).vel, before.vel, 1e-6);
+      }
+    }
+    ASSERT_TRUE(std::isfinite(p.duration()));
+    const double dt = std::max(1e-4, (p.duration() - t) / 5000.0);
+    TrackState prev = p.at(t);
+    for (double s = t + dt; s <= p.duration() + dt; s += dt) {
+      const TrackState x = p.at(s);
+      ASSERT_GE(x.pos + 1e-9, prev.pos) << s;
+      ASSERT_LE(x.pos - prev.pos, (std::max(prev.vel, x.vel) + 1e-3) * dt * 1.01 + 1e-6) << s;
+      ASSERT_LE(std::abs(x.acc), accel * 1.0001 + 1e-9) << s;
+      prev = x;
+    }
+    ASSERT_NEAR(p.at(p.duration()).pos, length, 1e-9);
+  }
 }
 
 TEST(SCurve, RejectsLimitsThatAreNotPositive) {
