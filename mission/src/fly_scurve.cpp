@@ -154,6 +154,7 @@ struct Flight {
   Recorder& rec;
   detail::PositionFollower veh;
   double clock = 1.0;  // AC_WPNav's _track_scalar_dt
+  int replanned_faster = 0;  // legs begun at one speed and re-planned faster in flight (DO_CHANGE_SPEED)
   // One tick towards the target (p, v, a), recorded as the vehicle's state.
   void tick(const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& a, FlightPhase phase, int step) {
     clock = veh.step(p, v, a, rec.dt());
@@ -224,7 +225,9 @@ Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Ve
         cur = next;
         cur.started = true;
         ++i;
+        const double planned = cur.prof.peakSpeed();
         cur.changeSpeed(legs[i].speed_xy, legs[i].speed_up, legs[i].speed_dn);
+        if (cur.prof.peakSpeed() > planned + 0.05) ++fl.replanned_faster;  // a second acceleration
         prepareNext();
         continue;
       }
@@ -412,6 +415,12 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       rec.completed(ki);
       ++k;
     }
+  }
+  if (fl.replanned_faster > 0) {
+    rec.note(std::to_string(fl.replanned_faster) + " leg(s) after a waypoint flown through are commanded faster than the leg "
+             "before: ArduCopter " + ap.version + " plans such a leg when the waypoint before it starts, at the speed then in "
+             "force, and re-plans it when its DO_CHANGE_SPEED runs as that waypoint is reached; the prediction flies them so, "
+             "with a second acceleration after the first (a speed command written a waypoint earlier avoids it)");
   }
   rec.note("ArduCopter " + ap.version + " S-curve model: WPNAV_SPEED " + detail::num(P.speed_xy) + " m/s, WPNAV_ACCEL " +
            detail::num(P.accel_xy) + " m/s/s, jerk " + detail::num(P.jerk) + " m/s/s/s, snap " +

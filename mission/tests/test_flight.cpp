@@ -390,6 +390,9 @@ TEST(ArduCopterSCurve, ASpeedRaisedAtAWaypointFlownThroughIsASecondAccelerationA
       const double v = s.velocity.head<2>().norm();
       if (s.t > f.events[1].completed_s + 1.0 && s.t < half && v > 4.5 && v < 5.5) t += f.samples[1].t - f.samples[0].t;
     }
+    bool said = false;  // the prediction says so
+    for (const auto& n : f.notes) said = said || n.rfind("1 leg(s) after a waypoint flown through are commanded faster", 0) == 0;
+    EXPECT_EQ(said, hold_s == 0.0);
     return std::make_pair(t, maxSpeedBetween(f, f.events[1].completed_s, f.events[2].reached_s));
   };
   const auto [through, through_vmax] = timeNearFiveOnSecondLeg(0.0);
