@@ -5,7 +5,9 @@
 #include "bindings.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/mission/planned_mission.hpp"
+#include "wattswath/mission/autopilot.hpp"
 #include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/flight_score.hpp"
 #include "wattswath/planner/mission_from_plan.hpp"
 
 namespace wattswath::python {
@@ -90,6 +92,35 @@ pl::SurveyProblem problemOf(const geo::SurveyArea& area, double spacing, double 
   return p;
 }
 
+// The plan's mission as `wattswath plan` writes it: flown by the vehicle's autopilot model as
+// `predict` flies it (the vehicle's autopilot object, else ArduCopter 4.5 defaults), in each way it
+// can be written (arcs as chords or waypoints; ArduCopter: speed commands a waypoint early), the
+// cheapest kept (planner/flight_score.hpp).
+pl::FlightScore flownMission(const pl::PlanResult& r, const pl::SurveyProblem& problem, const geo::LocalFrame& frame,
+                             double home_alt_m, const energy::Vehicle& v, const energy::EnergyModel& model, int threads) {
+  pl::FlightScoring scoring;
+  scoring.problem = &problem;
+  scoring.frame = &frame;
+  scoring.home_altitude_amsl_m = home_alt_m;
+  scoring.vehicle = &v;
+  scoring.model = &model;
+  scoring.autopilot = mission::parseAutopilot(v.autopilot_json, v.name);
+  scoring.mission.firmware = scoring.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
+  scoring.threads = threads;
+  std::vector<pl::FlightScore> scores;
+  {
+    py::gil_scoped_release release;
+    scores = pl::scoreByFlight({{"plan", &r.plan}}, scoring);
+  }
+  return scores[pl::cheapestFlight(scores)];
+}
+
+py::dict flightDict(const pl::FlightScore& f) {
+  return py::dict(py::arg("label") = f.label, py::arg("energy_j") = f.prediction.total.energy_j,
+                  py::arg("time_s") = f.prediction.total.time_s, py::arg("distance_m") = f.prediction.total.distance_m,
+                  py::arg("arc_waypoints") = f.arc_waypoints, py::arg("speeds_a_waypoint_early") = f.speeds_a_waypoint_early);
+}
+
 py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energy::EnergyModel& model, double spacing,
               double altitude, double footprint, bool spirals, bool per_cell, int threads) {
   const pl::SurveyProblem problem = problemOf(area, spacing, altitude, footprint);
@@ -98,10 +129,11 @@ py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energ
   s.per_cell = per_cell;
   s.threads = threads;
   pl::PlanResult r;
+  // Other Python threads may run during the search and the flights; they work on copies those
+  // threads cannot change.
+  const energy::Vehicle vehicle = v;
+  const energy::EnergyModel scoring = model;
   {
-    // Other Python threads may run during the search; it works on copies they cannot change.
-    const energy::Vehicle vehicle = v;
-    const energy::EnergyModel scoring = model;
     py::gil_scoped_release release;
     r = pl::planCoverage(problem, vehicle, scoring, s);
   }
@@ -117,12 +149,14 @@ py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energ
   d["sweep_scan_j"] = arrayOf(r.sweep_scan.size(), [&](std::size_t i) { return r.sweep_scan[i].energy_j; });
   d["notes"] = r.notes;
   if (area.frame) {
-    const auto pm = pl::missionFromPlan(r.plan.flown, problem, *area.frame,
-                                        area.home_alt_m.value_or(area.frame->origin().alt_m));
-    d["qgc_plan"] = mission::toQgcPlan(pm.mission);
-    d["mission_notes"] = pm.notes;
+    const pl::FlightScore chosen = flownMission(r, problem, *area.frame, area.home_alt_m.value_or(area.frame->origin().alt_m),
+                                                vehicle, scoring, threads);
+    d["qgc_plan"] = mission::toQgcPlan(chosen.mission.mission);
+    d["mission_notes"] = chosen.mission.notes;
+    d["flight"] = flightDict(chosen);
   } else {
     d["qgc_plan"] = py::none();
+    d["flight"] = py::none();
   }
   return d;
 }
@@ -136,8 +170,10 @@ void bindPlanner(py::module_& m) {
         "Plans the minimum-energy coverage of a SurveyArea (single region) with lines `spacing` [m] apart at "
         "`altitude` [m] (footprint [m], default the spacing): dict energy_j, time_s, length_m, pattern, "
         "sweep_angle_deg, coverage_pct, path (M x 2 polyline [m]), legs (per-leg arrays), the baselines "
-        "shortest_path, ground_station_default, best_spiral, lower_bound_j and qgc_plan (.plan text, None "
-        "without a geodetic frame).");
+        "shortest_path, ground_station_default, best_spiral, lower_bound_j, qgc_plan (.plan text, None "
+        "without a geodetic frame) and flight: the mission written as `wattswath plan` writes it, flown by the "
+        "vehicle's autopilot model with `model` (label, energy_j, time_s, distance_m, arc_waypoints, "
+        "speeds_a_waypoint_early; the cheapest way of writing it), None without a geodetic frame.");
 }
 
 }  // namespace wattswath::python
