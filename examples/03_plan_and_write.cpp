@@ -1,5 +1,6 @@
-// Example 3: plan the minimum-energy coverage of an area and write the mission as a
-// QGroundControl .plan file (what `wattswath plan` does, without the reports).
+// Example 3: plan the minimum-energy coverage of an area, fly its mission with the vehicle's
+// autopilot model in each way it can be written, and write the cheapest as a QGroundControl .plan
+// file (what `wattswath plan` does for the search's choice, without the reports).
 // Usage (from the repository root): example_03_plan_and_write [AREA] [VEHICLE.json] [OUT.plan]
 // Links wattswath::planner; docs/examples.md shows the output.
 #include <cstdio>
@@ -11,7 +12,9 @@
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 #include "wattswath/mission/planned_mission.hpp"
+#include "wattswath/mission/autopilot.hpp"
 #include "wattswath/planner/coverage.hpp"
+#include "wattswath/planner/flight_score.hpp"
 #include "wattswath/planner/mission_from_plan.hpp"
 
 namespace en = wattswath::energy;
@@ -48,14 +51,26 @@ int main(int argc, char** argv) {
   std::printf("baselines: shortest path %.0f J, ground-station default %.0f J\n", r.shortest_path.flown.energy,
               r.ground_station_default.flown.energy);
 
-  // Waypoints and speed commands of the plan, converted to WGS84 by the area's frame.
-  const pl::PlanMission pm =
-      pl::missionFromPlan(plan.flown, problem, *area.frame, area.home_alt_m.value_or(area.frame->origin().alt_m));
+  // Waypoints and speed commands of the plan, converted to WGS84 by the area's frame, flown by the
+  // vehicle's autopilot model (its autopilot object, else ArduCopter 4.5 defaults) as written and,
+  // for ArduCopter, with each speed command a waypoint early; the cheapest flight is written.
+  pl::FlightScoring scoring;
+  scoring.problem = &problem;
+  scoring.frame = &*area.frame;
+  scoring.home_altitude_amsl_m = area.home_alt_m.value_or(area.frame->origin().alt_m);
+  scoring.vehicle = &vehicle;
+  scoring.model = &model;
+  scoring.autopilot = wattswath::mission::parseAutopilot(vehicle.autopilot_json, vehicle.name);
+  const auto flights = pl::scoreByFlight({{"plan", &plan}}, scoring);
+  for (const auto& f : flights)
+    std::printf("flown: %s, %.0f J, %.0f s\n", f.label.c_str(), f.prediction.total.energy_j, f.prediction.total.time_s);
+  const pl::FlightScore& best = flights[pl::cheapestFlight(flights)];
+  const pl::PlanMission& pm = best.mission;
   for (const auto& note : pm.notes) std::printf("note: %s\n", note.c_str());
   const std::string text = wattswath::mission::toQgcPlan(pm.mission);
   const auto problems = wattswath::mission::checkQgcPlan(text);  // empty: QGroundControl loads it
   std::ofstream(out) << text;
-  std::printf("mission: %zu waypoints, QGroundControl check %s; wrote %s\n", pm.mission.waypoints.size(),
+  std::printf("mission (%s): %zu waypoints, QGroundControl check %s; wrote %s\n", best.label.c_str(), pm.mission.waypoints.size(),
               problems.empty() ? "passed" : problems.front().c_str(),
               std::filesystem::path(out).filename().string().c_str());
   return problems.empty() ? 0 : 1;
