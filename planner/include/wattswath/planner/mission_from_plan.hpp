@@ -59,8 +59,10 @@ struct MissionOptions {
   double no_fly_margin_m = 0.0;           ///< [m] margin the straight legs between waypoints are checked
                                           ///< against (0: not checked), >= 0
   /// true: each leg's speed command is the faster of its own planned speed and the next leg's, for
-  /// ArduCopter before 4.1, which flies a speed increase only from the next waypoint on (the leg's
-  /// leash is computed before the new speed reaches the position controller; docs/autopilots.md)
+  /// ArduCopter, which flies a speed command late: before 4.1 an increase only from the next waypoint
+  /// on (the leg's leash is computed before the new speed reaches the position controller), from 4.1
+  /// on the leg after a waypoint flown through is planned before its command runs and re-planned in
+  /// flight, a second acceleration after the first (docs/autopilots.md)
   bool speeds_a_waypoint_early = false;
 };
 
