@@ -26,7 +26,11 @@ Airframe airframeOfVehicle(const energy::Vehicle& v, const std::string& source) 
   };
   number("drag_linear_per_s", 0.0, 10.0, a.drag_linear_per_s);
   number("drag_quadratic_per_m", 0.0, 1.0, a.drag_quadratic_per_m);
-  number("response_s", 0.0, 2.0, a.response_s);
+  double response = 0.0;
+  if (j.contains("response_s")) {
+    number("response_s", 0.0, 2.0, response);
+    a.response_s = response;
+  }
   return a;
 }
 

@@ -23,9 +23,10 @@ void validate(const FlightSettings& s) {
   }
   const Airframe& a = s.airframe;
   if (!(a.drag_linear_per_s >= 0.0 && a.drag_linear_per_s <= 10.0) || !(a.drag_quadratic_per_m >= 0.0 && a.drag_quadratic_per_m <= 1.0) ||
-      !(a.response_s >= 0.0 && a.response_s <= 2.0)) {
+      (a.response_s && !(*a.response_s >= 0.0 && *a.response_s <= 2.0))) {
     throw std::invalid_argument("FlightSettings.airframe: drag " + std::to_string(a.drag_linear_per_s) + " 1/s, " +
-                                std::to_string(a.drag_quadratic_per_m) + " 1/m, response " + std::to_string(a.response_s) +
+                                std::to_string(a.drag_quadratic_per_m) + " 1/m, response " +
+                                (a.response_s ? std::to_string(*a.response_s) : std::string("unset")) +
                                 " s; expected 0..10 1/s, 0..1 1/m, 0..2 s");
   }
   if (!(a.wind.allFinite() && a.wind.norm() <= 40.0)) {

@@ -46,8 +46,12 @@ Params readParams(const AutopilotConfig& ap) {
   p.jerk = wp_jerk > 0.0 ? checkParameter("WPNAV_JERK", wp_jerk, 0.1, 20, "m/s/s/s") : p.accel_xy;
   const double rate_max = std::min(ap.get("ATC_RATE_R_MAX"), ap.get("ATC_RATE_P_MAX"));  // [deg/s]
   if (rate_max > 0.0) p.jerk = std::min(p.jerk, rate_max * M_PI / 180.0 * kGravity);
-  const double tc = std::max(ap.get("ATC_INPUT_TC"), 0.1);
+  const double input_tc = checkParameter("ATC_INPUT_TC", ap.get("ATC_INPUT_TC"), 0, 1, "s");
+  const double tc = std::max(input_tc, 0.1);
   p.snap = p.jerk * M_PI / (2.0 * tc);
+  // The attitude target follows the lean asked for through input_shaping_angle's square-root
+  // controller, linear with gain 1 / ATC_INPUT_TC (at least 0.01 s): a first-order lag.
+  p.gains.attitude_tc = std::max(input_tc, 0.01);
   const double ang_accel = std::min(ap.get("ATC_ACCEL_R_MAX"), ap.get("ATC_ACCEL_P_MAX"));  // [cdeg/s/s]
   if (ang_accel > 0.0) p.snap = std::min(p.snap, ang_accel / 100.0 * M_PI / 180.0 * kGravity);
   p.snap *= 0.5;

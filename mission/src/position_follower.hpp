@@ -27,12 +27,14 @@ struct PositionGains {
   double accel = 2.5;      ///< [m/s^2] WPNAV_ACCEL: the square-root controller's deceleration
   double lean_accel = 5.66;  ///< [m/s^2] g tan(lean limit): the largest horizontal acceleration
   double scaler_tc = 2.5;  ///< [s] time constant of the S-curve clock scaler (WPNAV_ACCEL / WPNAV_JERK)
+  double attitude_tc = 0.15;  ///< [s] ATC_INPUT_TC: the lean's lag when the airframe gives no response
 };
 
 /// The vehicle chasing the autopilot's target, one tick at a time.
 class PositionFollower {
  public:
-  PositionFollower(const PositionGains& g, const Airframe& a) : g_(g), a_(a) {}
+  PositionFollower(const PositionGains& g, const Airframe& a)
+      : g_(g), a_(a), response_s_(std::max(a.response_s.value_or(g.attitude_tc), 0.0)) {}
 
   /// Places the vehicle at `p` at rest.
   void reset(const Eigen::Vector3d& p) {
@@ -63,7 +65,7 @@ class PositionFollower {
       integ_ += g_.vel_i * verr * dt;
       if (integ_.norm() > g_.vel_imax) integ_ *= g_.vel_imax / integ_.norm();
     }
-    lean_ += (cmd - lean_) * std::min(1.0, dt / std::max(a_.response_s, dt));
+    lean_ += (cmd - lean_) * std::min(1.0, dt / std::max(response_s_, dt));
     v_.head<2>() += (lean_ + drag(v_.head<2>())) * dt;
     p_.head<2>() += v_.head<2>() * dt;
     p_.z() = tp.z();
@@ -132,6 +134,7 @@ class PositionFollower {
 
   PositionGains g_;
   Airframe a_;
+  double response_s_;  // [s] the achieved lean's first-order lag behind the command
   Eigen::Vector3d p_ = Eigen::Vector3d::Zero(), v_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d lean_ = Eigen::Vector2d::Zero(), integ_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d err_ = Eigen::Vector2d::Zero(), deriv_ = Eigen::Vector2d::Zero();  // filtered velocity error, its rate

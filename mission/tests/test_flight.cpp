@@ -246,11 +246,11 @@ TEST(ArduCopterSCurve, TrackingVehicleLagsThenSettlesDuringTheHold) {
 
 TEST(ArduCopterSCurve, ReturnFromAStopAtHomeTakesTheLoiterAndOneShortLeg) {
   // A square that ends at home (as the SITL square_5mps): the vehicle overshoots the last
-  // waypoint by under 0.5 m, RTL flies back from its stopping point (an S-curve of at most 0.5 m:
-  // 3.0 s) and loiters RTL_LOIT_TIME 5 s before landing. ModeRTL::init starts the waypoint
-  // controller afresh (AC_WPNav::wp_and_spline_init: the S-curve clock at full speed, the velocity
-  // loop's integrator from the lean it holds); carried over from the stop, the slowed clock and
-  // the stop's integrator stretched this to about 10 s.
+  // waypoint by under 1 m (the SITL logs: 0.4-0.9 m), RTL climbs its 1 cm hover offset (1.1 s),
+  // flies back from its stopping point (an S-curve of at most 1 m: 3.6 s) and loiters
+  // RTL_LOIT_TIME 5 s before landing. ModeRTL::init starts the waypoint controller afresh (AC_WPNav::wp_and_spline_init: the
+  // S-curve clock at full speed, the velocity loop's integrator from the lean it holds); carried
+  // over from the stop, the slowed clock and the stop's integrator stretched this to about 10 s.
   const Mission m = localMission({{100, 0, 10}, {100, 100, 10}, {0, 100, 10}, {0, 0, 10}});
   FlightSettings fs;
   fs.airframe.drag_linear_per_s = 0.26;
@@ -263,8 +263,11 @@ TEST(ArduCopterSCurve, ReturnFromAStopAtHomeTakesTheLoiterAndOneShortLeg) {
   }
   ASSERT_GT(t0, 0.0);
   ASSERT_GT(t1, t0);
+  double overshoot = 0.0;  // [m] past home along the last leg (south)
+  for (const auto& s : f.samples) overshoot = std::max(overshoot, -s.position.y());
+  EXPECT_LT(overshoot, 1.0);
   EXPECT_GT(t1 - t0, 5.0);
-  EXPECT_LT(t1 - t0, 5.0 + 3.0 + 0.5);
+  EXPECT_LT(t1 - t0, 5.0 + 3.6 + 1.1);
 }
 
 TEST(ArduCopterSCurve, RtlNearHomeFirstFliesAClimbLegOfTheHoverOffset) {
@@ -401,6 +404,27 @@ TEST(ArduCopterSCurve, ASpeedRaisedAtAWaypointFlownThroughIsASecondAccelerationA
   EXPECT_LT(stop, 0.7);     // one ramp at up to 2.5 m/s^2: about 0.4 s
   EXPECT_NEAR(through_vmax, 10.0, 0.2);
   EXPECT_NEAR(stop_vmax, 10.0, 0.2);
+}
+
+TEST(ArduCopterSCurve, TheLeanLagsTheCommandByAtcInputTcUnlessTheAirframeGivesItsResponse) {
+  // AC_AttitudeControl::input_shaping_angle follows the lean asked for with gain 1 / ATC_INPUT_TC:
+  // without a response in the vehicle file the lean lags by ATC_INPUT_TC (0.15 s by default), and
+  // a slower shaping (0.3 s) makes the vehicle lag its target more, so AC_WPNav's clock scaler
+  // slows the S-curve and each start from a stop takes longer. A response in the vehicle file wins.
+  const auto steps = sequenceMission(localMission({{60, 0, 10}, {60, 60, 10}, {0, 60, 10}}, 1.0));
+  auto missionTime = [&](double input_tc, std::optional<double> response) {
+    AutopilotConfig ap;
+    ap.parameters["ATC_INPUT_TC"] = input_tc;
+    FlightSettings fs;
+    fs.airframe.drag_linear_per_s = 0.26;
+    fs.airframe.drag_quadratic_per_m = 0.03;
+    fs.airframe.response_s = response;
+    const FlownMission f = flyMission(steps, ap, fs);
+    return f.events[3].completed_s - f.events[1].reached_s;
+  };
+  EXPECT_EQ(missionTime(0.15, std::nullopt), missionTime(0.15, 0.15));
+  EXPECT_GT(missionTime(0.3, std::nullopt), missionTime(0.3, 0.15) + 0.1);
+  EXPECT_GT(missionTime(0.15, 0.3), missionTime(0.15, std::nullopt) + 0.1);
 }
 
 TEST(ArduCopterSCurve, TakeoffClimbsAtWpnavSpeedUpAndLandingEndsOnTheGround) {

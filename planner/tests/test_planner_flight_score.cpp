@@ -127,7 +127,7 @@ TEST(FlightScore, ForArduCopter41AndLaterSpeedCommandsAWaypointEarlySpareTheSwee
   // is reached, and re-plans the leg in flight: a sweep after a slow turn first accelerates to the
   // turn's speed, then again to its own (SCurve::set_speed_max). Written a waypoint early, the
   // sweep's speed is in force when its leg is planned: on the IRIS+ area at 15 m with the 4.5
-  // defaults the written mission flies 4-5 % shorter (88.2 -> 83.9 kJ, 6:29 -> 6:08).
+  // defaults the written mission flies 4-5 % shorter (87.4 -> 83.2 kJ, 6:26 -> 6:05).
   const auto p = planned("data/areas/iris_area.geojson", 15.0, "data/vehicles/iris.json");
   const PlanResult& r = p->r;
   ASSERT_TRUE(r.plan.valid);

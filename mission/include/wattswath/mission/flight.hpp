@@ -6,6 +6,7 @@
 /// tracking) into a sampled trajectory, and that trajectory as energy::Pieces for the effects to
 /// integrate. docs/autopilots.md states what each model follows and leaves out.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -87,9 +88,11 @@ struct Airframe {
   /// [m/s] the steady wind it flies in, where the air moves to (east, north); |wind| <= 40. The
   /// drag acts on the velocity relative to the air; the autopilot controls the ground velocity.
   Eigen::Vector2d wind = Eigen::Vector2d::Zero();
-  /// [s] first-order lag of the achieved acceleration behind the command (the attitude loop:
-  /// ATC_INPUT_TC 0.15 s shaping plus the rate loop; 0.25 s in ArduCopter 4.x SITL logs)
-  double response_s = 0.25;
+  /// [s] first-order lag of the achieved acceleration behind the command, when the vehicle file
+  /// gives one; unset: the autopilot's attitude input time constant (ArduCopter ATC_INPUT_TC, whose
+  /// shaping the lean follows: 0.15 s by default, and 0.15-0.175 s fitted on the ArduCopter 4.7 SITL
+  /// logs' PSCN/PSCE target against achieved acceleration)
+  std::optional<double> response_s;
   /// false: the vehicle is taken to be exactly on the autopilot's target (no tracking error)
   bool track = true;
 };
