@@ -67,24 +67,54 @@ std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson
   return j.dump(2) + "\n";
 }
 
-// The airframe's drag identified from the log (DataFlash only): the extension object, or null
-// when the log does not determine it (said in words).
-OrderedJson airframeObject(const logs::AirframeDragEstimate& d, const std::string& log) {
-  if (!d.determined) return nullptr;
-  return {{"drag_linear_per_s", d.drag_linear_per_s},
-          {"drag_quadratic_per_m", d.drag_quadratic_per_m},
-          {"source", "identified from " + log + " (" + std::to_string(d.samples) + " samples, R^2 " +
-                         std::to_string(d.r2).substr(0, 5) + ", velocity " + d.velocity_source + ")"}};
+// The airframe identified from the log (DataFlash only): the extension object with what the log
+// determines (drag, response), or null when it determines neither (said in words).
+OrderedJson airframeObject(const logs::AirframeEstimate& a, const std::string& log) {
+  const auto& d = a.drag;
+  const auto& r = a.response;
+  if (!d.determined && !r.determined) return nullptr;
+  OrderedJson j = OrderedJson::object();
+  std::string source = "identified from " + log + " (";
+  if (d.determined) {
+    j["drag_linear_per_s"] = d.drag_linear_per_s;
+    j["drag_quadratic_per_m"] = d.drag_quadratic_per_m;
+    source += "drag: " + std::to_string(d.samples) + " samples, R^2 " + std::to_string(d.r2).substr(0, 5) + ", velocity " +
+              d.velocity_source;
+  }
+  if (r.determined) {
+    j["response_s"] = r.response_s;
+    source += std::string(d.determined ? "; " : "") + "response: " + std::to_string(r.samples) + " samples, R^2 " +
+              std::to_string(r.r2).substr(0, 5) + ", PSCN/PSCE";
+  }
+  j["source"] = source + ")";
+  return j;
 }
 
-logs::AirframeDragEstimate identifyAirframe(const ParamsOptions& o) {
+logs::AirframeEstimate identifyAirframe(const ParamsOptions& o) {
   try {
-    return logs::estimateAirframeDrag(o.log, o.read);
+    return logs::estimateAirframe(o.log, o.read);
   } catch (const std::exception& e) {
-    logs::AirframeDragEstimate none;
-    none.reason = e.what();
+    logs::AirframeEstimate none;
+    none.drag.reason = none.response.reason = e.what();
     return none;
   }
+}
+
+// The airframe part of `vehicle params --json`.
+OrderedJson airframeJson(const logs::AirframeEstimate& a) {
+  const auto& d = a.drag;
+  const auto& r = a.response;
+  return {{"determined", d.determined},
+          {"reason", d.reason},
+          {"drag_linear_per_s", d.determined ? OrderedJson(d.drag_linear_per_s) : OrderedJson()},
+          {"drag_quadratic_per_m", d.determined ? OrderedJson(d.drag_quadratic_per_m) : OrderedJson()},
+          {"r2", d.r2},
+          {"samples", d.samples},
+          {"response", {{"determined", r.determined},
+                        {"reason", r.reason},
+                        {"response_s", r.determined ? OrderedJson(r.response_s) : OrderedJson()},
+                        {"r2", r.r2},
+                        {"samples", r.samples}}}};
 }
 
 void warnAbout(const logs::AutopilotParameters& p) {
@@ -107,8 +137,9 @@ void runParams(const ParamsOptions& o) {
   energy::loadVehicle(o.vehicle);  // a bad BASE fails before the (possibly large) log is read
   const auto p = logs::readAutopilotParameters(o.log, o.read);
   const auto kept = o.all ? p.parameters : logs::flightBehaviourParameters(p);
-  const auto drag = identifyAirframe(o);
-  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept), airframeObject(drag, o.log));
+  const auto airframe = identifyAirframe(o);
+  const auto& drag = airframe.drag;
+  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept), airframeObject(airframe, o.log));
   energy::parseVehicle(text, o.out);  // what is written reads back
   writeTextFileAtomic(o.out, text);
   warnAbout(p);
@@ -124,12 +155,7 @@ void runParams(const ParamsOptions& o) {
                {"selection", p.selection},
                {"changed_after_takeoff", p.changed_after_takeoff},
                {"kept", parameterObject(kept)},
-               {"airframe", {{"determined", drag.determined},
-                             {"reason", drag.reason},
-                             {"drag_linear_per_s", drag.determined ? OrderedJson(drag.drag_linear_per_s) : OrderedJson()},
-                             {"drag_quadratic_per_m", drag.determined ? OrderedJson(drag.drag_quadratic_per_m) : OrderedJson()},
-                             {"r2", drag.r2},
-                             {"samples", drag.samples}}}});
+               {"airframe", airframeJson(airframe)}});
   } else {
     progress("wrote " + o.out + ": " + p.firmware.family + (p.firmware.version.empty() ? "" : " " + p.firmware.version) +
              ", " + std::to_string(kept.size()) + " of the log's " + std::to_string(p.parameters.size()) +
@@ -137,6 +163,11 @@ void runParams(const ParamsOptions& o) {
     progress(drag.determined ? "airframe drag (extensions.airframe): " + std::to_string(drag.drag_linear_per_s) + " 1/s x v + " +
                                    std::to_string(drag.drag_quadratic_per_m) + " 1/m x v^2, R^2 " + std::to_string(drag.r2)
                              : "airframe drag not determined by this log: " + drag.reason + " (predict uses the vehicle's drag area)");
+    const auto& r = airframe.response;
+    progress(r.determined ? "airframe response (extensions.airframe.response_s): " + std::to_string(r.response_s) +
+                                " s lag of the acceleration behind the position controller's, R^2 " + std::to_string(r.r2)
+                          : "airframe response not determined by this log: " + r.reason +
+                                " (predict takes the attitude time constant, ArduCopter ATC_INPUT_TC)");
   }
 }
 
@@ -159,6 +190,10 @@ From a DataFlash log it also identifies the airframe's horizontal drag, c1 v + c
 lean angle (ATT) against the EKF velocity, and writes it as `extensions.airframe` when the log
 determines it (enough flight above 3 m/s, R^2 >= 0.8); the S-curve model's vehicle flies against
 it (docs/autopilots.md, "Tracking error"). Otherwise it says why and predict uses the drag area.
+From ArduCopter 4.5+ logs it also identifies the airframe's response: the first-order lag of the
+acceleration its lean angles give behind the position controller's target (PSCN/PSCE), written
+as `extensions.airframe.response_s` when the lag explains at least 80 % of the variance; else
+predict takes the attitude time constant (ATC_INPUT_TC).
 Example: wattswath vehicle params flight.bin --vehicle data/vehicles/iris.json --out my-iris.json
 )";
 

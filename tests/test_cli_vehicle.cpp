@@ -58,6 +58,11 @@ TEST_F(CliVehicle, WritesBaseWithTheLogsAutopilotObject) {
   EXPECT_FLOAT_EQ(p.at("MOT_THST_HOVER").get<float>(), 0.39f);  // the landing's throttle wind-down
   EXPECT_FALSE(p.contains("MOT_THST_EXPO"));                      // not a flight-behaviour parameter
   EXPECT_FALSE(p.contains("STAT_FLTTIME"));
+  // The airframe the log determines: its drag and its response (ATC_INPUT_TC's lag).
+  const auto& airframe = v.at("extensions").at("airframe");
+  EXPECT_GT(airframe.at("drag_quadratic_per_m").get<double>(), 0.0);
+  EXPECT_NEAR(airframe.at("response_s").get<double>(), 0.15, 0.02);
+  EXPECT_NE(r.output.find("airframe response (extensions.airframe.response_s)"), std::string::npos) << r.output;
   // The file written is a valid vehicle file.
   const auto hover = run(cliBinary() + " hover --vehicle " + out("v.json") + " --json 2>&1");
   EXPECT_EQ(hover.status, 0) << hover.output;
@@ -75,6 +80,9 @@ TEST_F(CliVehicle, JsonSummaryAndAll) {
   const auto v = nlohmann::json::parse(readAll(out("all.json")));
   EXPECT_EQ(v.at("autopilot").at("parameters").size(), j.at("parameter_count").get<std::size_t>());
   EXPECT_TRUE(v.at("autopilot").at("parameters").contains("MOT_THST_HOVER"));
+  const auto& response = j.at("airframe").at("response");
+  EXPECT_TRUE(response.at("determined").get<bool>()) << response.dump();
+  EXPECT_NEAR(response.at("response_s").get<double>(), v.at("extensions").at("airframe").at("response_s").get<double>(), 1e-12);
 }
 
 TEST_F(CliVehicle, RefusesToOverwriteWithoutForceAndNeverAnInput) {

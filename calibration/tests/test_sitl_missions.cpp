@@ -53,14 +53,19 @@ SitlRun run(const std::string& name) {
   ap.parameters = wattswath::logs::flightBehaviourParameters(params);
   const ms::Mission m = ms::readMission(sitl(name + ".waypoints"));
   const auto steps = ms::sequenceMission(m);
-  // The airframe's drag identified from the same log (its lean angle against its speed).
-  const auto drag = wattswath::logs::estimateAirframeDrag(sitl(name + ".BIN"));
+  // The airframe identified from the same log, as `vehicle params` writes it: its drag (lean angle
+  // against speed) and its response (achieved against target acceleration).
+  const auto airframe = wattswath::logs::estimateAirframe(sitl(name + ".BIN"));
+  const auto& drag = airframe.drag;
   EXPECT_TRUE(drag.determined) << drag.reason;
-  std::printf("%s: airframe drag %.3f 1/s x v + %.4f 1/m x v^2 (R^2 %.3f, %zu samples from %s)\n", name.c_str(),
-              drag.drag_linear_per_s, drag.drag_quadratic_per_m, drag.r2, drag.samples, drag.velocity_source.c_str());
+  EXPECT_TRUE(airframe.response.determined) << airframe.response.reason;
+  std::printf("%s: airframe drag %.3f 1/s x v + %.4f 1/m x v^2 (R^2 %.3f, %zu samples from %s), response %.3f s (R^2 %.4f)\n",
+              name.c_str(), drag.drag_linear_per_s, drag.drag_quadratic_per_m, drag.r2, drag.samples, drag.velocity_source.c_str(),
+              airframe.response.response_s, airframe.response.r2);
   ms::FlightSettings fs;
   fs.airframe.drag_linear_per_s = drag.drag_linear_per_s;
   fs.airframe.drag_quadratic_per_m = drag.drag_quadratic_per_m;
+  fs.airframe.response_s = airframe.response.response_s;
   const ms::FlownMission f = ms::flyMission(steps, ap, fs);
   // The SITL times count from lift-off; ours from the take-off command (MOT_SPOOL_TIME earlier).
   const double liftoff = ap.get("MOT_SPOOL_TIME");

@@ -1,4 +1,5 @@
-// The airframe's drag from an ArduPilot log's attitude and EKF velocity (airframe.hpp).
+// The airframe's drag from an ArduPilot log's attitude and EKF velocity, and its response from the
+// position controller's target and achieved acceleration (airframe.hpp).
 #include "wattswath/logs/airframe.hpp"
 
 #include <algorithm>
@@ -74,15 +75,41 @@ void fit(const std::vector<double>& s, const std::vector<double>& y, double& c1,
   }
 }
 
-}  // namespace
-
-AirframeDragEstimate estimateAirframeDrag(const std::string& path, const LogReadOptions& options) {
+dataflash::Log readDataflash(const std::string& path, const LogReadOptions& options) {
   auto bytes = binary::readFileBytes(path, options.max_file_bytes);
   if (bytes.size() < 2 || bytes[0] != 0xA3 || bytes[1] != 0x95) {
     throw std::runtime_error(path + ": not an ArduPilot DataFlash (.bin) log; the airframe's drag is identified from "
                                     "DataFlash logs only (PX4 ULog: not supported yet)");
   }
-  const auto L = dataflash::Log::parseAcceptingCutEnd(std::move(bytes), path, options.lenient);
+  return dataflash::Log::parseAcceptingCutEnd(std::move(bytes), path, options.lenient);
+}
+
+// One axis of the response fit: target and achieved acceleration [m/s^2] at the sample times.
+struct AccelAxis {
+  std::vector<double> target, achieved;
+};
+
+// Sum of squared errors of a first-order lag `tau` [s] from target to achieved over the samples
+// `t` [s], simulated in 5 ms steps with the target interpolated, restarted after gaps over 0.5 s.
+double lagError(const std::vector<double>& t, const AccelAxis& a, double tau) {
+  constexpr double kStep = 0.005, kGap = 0.5;
+  double sse = 0.0, x = a.achieved.front();
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (t[i] - t[i - 1] > kGap) {
+      x = a.achieved[i];
+      continue;
+    }
+    const int n = std::max(1, static_cast<int>(std::lround((t[i] - t[i - 1]) / kStep)));
+    for (int k = 0; k < n; ++k) {
+      const double w = static_cast<double>(k) / n;  // the target at the step's start
+      x += (a.target[i - 1] + w * (a.target[i] - a.target[i - 1]) - x) * (1.0 - std::exp(-(t[i] - t[i - 1]) / n / tau));
+    }
+    sse += (x - a.achieved[i]) * (x - a.achieved[i]);
+  }
+  return sse;
+}
+
+AirframeDragEstimate dragOf(const dataflash::Log& L, const LogReadOptions& options) {
   AirframeDragEstimate out;
   const Series v = velocity(L);
   if (v.t.empty() || !L.has("ATT", "Roll") || !L.has("ATT", "Pitch") || !L.has("ATT", "Yaw")) {
@@ -134,6 +161,66 @@ AirframeDragEstimate estimateAirframeDrag(const std::string& path, const LogRead
   out.determined = out.r2 >= 0.8;
   if (!out.determined) out.reason = "the fit explains only " + std::to_string(out.r2 * 100.0) + " % of the drag's variance (wind or manual flying?)";
   return out;
+}
+
+// The response of the airframe's acceleration to the position controller's target.
+ResponseEstimate estimateResponse(const dataflash::Log& L, const LogReadOptions& options) {
+  ResponseEstimate out;
+  if (!(L.has("PSCN", "TAN") && L.has("PSCN", "AN") && L.has("PSCE", "TAE") && L.has("PSCE", "AE"))) {
+    out.reason = "the log has no PSCN/PSCE target and achieved acceleration (ArduCopter logs them from 4.5 on)";
+    return out;
+  }
+  const auto tn = L.times("PSCN");
+  const auto tan_ = L.column("PSCN", "TAN"), an = L.column("PSCN", "AN"), tae = L.column("PSCE", "TAE"), ae = L.column("PSCE", "AE");
+  std::vector<double> t;
+  AccelAxis north, east;
+  for (std::size_t i = 0; i < tn.size() && i < tae.size() && i < ae.size(); ++i) {
+    if (tn[i] < options.from_s || tn[i] > options.to_s || (!t.empty() && tn[i] <= t.back())) continue;
+    t.push_back(tn[i]);
+    north.target.push_back(tan_[i]);
+    north.achieved.push_back(an[i]);
+    east.target.push_back(tae[i]);
+    east.achieved.push_back(ae[i]);
+  }
+  out.samples = 2 * t.size();
+  if (t.size() < 150) {
+    out.reason = std::to_string(out.samples) + " samples of target and achieved acceleration; at least 300 are needed";
+    return out;
+  }
+  const auto sse = [&](double tau) { return lagError(t, north, tau) + lagError(t, east, tau); };
+  double lo = 0.02, hi = 1.0;  // golden-section search of the lag
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  double a = hi - g * (hi - lo), b = lo + g * (hi - lo), fa = sse(a), fb = sse(b);
+  for (int it = 0; it < 40; ++it) {
+    if (fa < fb) {
+      hi = b, b = a, fb = fa, a = hi - g * (hi - lo), fa = sse(a);
+    } else {
+      lo = a, a = b, fa = fb, b = lo + g * (hi - lo), fb = sse(b);
+    }
+  }
+  out.response_s = 0.5 * (lo + hi);
+  double mean = 0.0, sst = 0.0;
+  for (const auto* axis : {&north, &east})
+    for (double x : axis->achieved) mean += x / out.samples;
+  for (const auto* axis : {&north, &east})
+    for (double x : axis->achieved) sst += (x - mean) * (x - mean);
+  out.r2 = sst > 0.0 ? 1.0 - sse(out.response_s) / sst : 0.0;
+  out.determined = out.r2 >= 0.8 && out.response_s < 0.99;
+  if (!out.determined) {
+    out.reason = "a first-order lag explains only " + std::to_string(out.r2 * 100.0) + " % of the achieved acceleration's variance";
+  }
+  return out;
+}
+
+}  // namespace
+
+AirframeDragEstimate estimateAirframeDrag(const std::string& path, const LogReadOptions& options) {
+  return dragOf(readDataflash(path, options), options);
+}
+
+AirframeEstimate estimateAirframe(const std::string& path, const LogReadOptions& options) {
+  const auto L = readDataflash(path, options);
+  return {dragOf(L, options), estimateResponse(L, options)};
 }
 
 }  // namespace wattswath::logs
