@@ -100,9 +100,10 @@ double lagError(const std::vector<double>& t, const AccelAxis& a, double tau) {
       continue;
     }
     const int n = std::max(1, static_cast<int>(std::lround((t[i] - t[i - 1]) / kStep)));
+    const double alpha = 1.0 - std::exp(-(t[i] - t[i - 1]) / n / tau);
     for (int k = 0; k < n; ++k) {
       const double w = static_cast<double>(k) / n;  // the target at the step's start
-      x += (a.target[i - 1] + w * (a.target[i] - a.target[i - 1]) - x) * (1.0 - std::exp(-(t[i] - t[i - 1]) / n / tau));
+      x += (a.target[i - 1] + w * (a.target[i] - a.target[i - 1]) - x) * alpha;
     }
     sse += (x - a.achieved[i]) * (x - a.achieved[i]);
   }
