@@ -42,9 +42,8 @@ std::optional<std::string> calibrationNote(const std::vector<mission::NavStep>& 
 
 planner::FlightScoring withSetup(planner::FlightScoring scoring, const PredictionSetup& setup) {
   scoring.model = &setup.model;
-  scoring.autopilot = setup.autopilot;
+  planner::setAutopilot(scoring, setup.autopilot);
   scoring.settings = setup.settings;
-  scoring.mission.firmware = setup.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
   return scoring;
 }
 

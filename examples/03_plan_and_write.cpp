@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   scoring.home_altitude_amsl_m = area.home_alt_m.value_or(area.frame->origin().alt_m);
   scoring.vehicle = &vehicle;
   scoring.model = &model;
-  scoring.autopilot = wattswath::mission::parseAutopilot(vehicle.autopilot_json, vehicle.name);
+  pl::setAutopilot(scoring, wattswath::mission::parseAutopilot(vehicle.autopilot_json, vehicle.name));
   const auto flights = pl::scoreByFlight({{"plan", &plan}}, scoring);
   for (const auto& f : flights)
     std::printf("flown: %s, %.0f J, %.0f s\n", f.label.c_str(), f.prediction.total.energy_j, f.prediction.total.time_s);

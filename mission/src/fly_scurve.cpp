@@ -229,9 +229,9 @@ Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Ve
         cur = next;
         cur.started = true;
         ++i;
-        const double planned = cur.prof.peakSpeed();
+        const double peak_before = cur.prof.peakSpeed();
         cur.changeSpeed(legs[i].speed_xy, legs[i].speed_up, legs[i].speed_dn);
-        if (cur.prof.peakSpeed() > planned + 0.05) ++fl.replanned_faster;  // a second acceleration
+        if (cur.prof.peakSpeed() > peak_before + 0.05) ++fl.replanned_faster;  // a second acceleration
         prepareNext();
         continue;
       }

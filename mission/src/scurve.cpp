@@ -191,15 +191,19 @@ SCurveProfile SCurveProfile::between(double length, double origin_speed, double 
   return p;
 }
 
+// Segment k as given: its kind, (peak) jerk and its state at its end.
+void SCurveProfile::set(int k, Kind kind, double jerk, double time, double acc, double vel, double pos) {
+  kind_[k] = kind;
+  jerk_[k] = jerk;
+  end_time_[k] = time;
+  end_acc_[k] = acc;
+  end_vel_[k] = vel;
+  end_pos_[k] = pos;
+}
+
+// Segments first..last empty, at the time, speed and position segment `ref` ends with.
 void SCurveProfile::hold(int first, int last, int ref) {
-  for (int k = first; k <= last; ++k) {
-    kind_[k] = Kind::ConstJerk;
-    jerk_[k] = 0.0;
-    end_time_[k] = end_time_[ref];
-    end_acc_[k] = 0.0;
-    end_vel_[k] = end_vel_[ref];
-    end_pos_[k] = end_pos_[ref];
-  }
+  for (int k = first; k <= last; ++k) set(k, Kind::ConstJerk, 0.0, end_time_[ref], 0.0, end_vel_[ref], end_pos_[ref]);
 }
 
 // Lengthens the cruise so that the leg ends at its length (SCurve's "t15").
@@ -217,19 +221,10 @@ void SCurveProfile::stretchCruise() {
 
 // In the speed change: it becomes the acceleration phase, leaving room for another change.
 void SCurveProfile::restartAfterSpeedChange() {
-  kind_[0] = Kind::ConstJerk;
-  jerk_[0] = 0.0;
-  end_time_[0] = end_time_[kAccelEnd];
-  end_acc_[0] = end_acc_[kAccelEnd];
-  end_vel_[0] = end_vel_[kAccelEnd];
-  end_pos_[0] = end_pos_[kAccelEnd];
+  set(0, Kind::ConstJerk, 0.0, end_time_[kAccelEnd], end_acc_[kAccelEnd], end_vel_[kAccelEnd], end_pos_[kAccelEnd]);
   for (int k = 1; k <= kAccelEnd; ++k) {
-    kind_[k] = kind_[k + 7];
-    jerk_[k] = jerk_[k + 7];
-    end_time_[k] = end_time_[k + 7];
-    end_acc_[k] = end_acc_[k + 7];
-    end_vel_[k] = end_vel_[k + 7];
-    end_pos_[k] = end_pos_[k + 7];
+    const int from = k + (kSpeedChangeEnd - kAccelEnd);
+    set(k, kind_[from], jerk_[from], end_time_[from], end_acc_[from], end_vel_[from], end_pos_[from]);
   }
   hold(kAccelEnd + 1, kSpeedChangeEnd, kAccelEnd);
 }
@@ -237,20 +232,8 @@ void SCurveProfile::restartAfterSpeedChange() {
 // In the cruise: the acceleration and speed-change phases become the cruise flown so far.
 void SCurveProfile::restartInCruise(double time) {
   const TrackState now = at(time);
-  kind_[0] = Kind::ConstJerk;
-  jerk_[0] = 0.0;
-  end_time_[0] = end_time_[kSpeedChangeEnd];
-  end_acc_[0] = 0.0;
-  end_vel_[0] = end_vel_[kSpeedChangeEnd];
-  end_pos_[0] = end_pos_[kSpeedChangeEnd];
-  for (int k = 1; k <= kSpeedChangeEnd; ++k) {
-    kind_[k] = Kind::ConstJerk;
-    jerk_[k] = 0.0;
-    end_time_[k] = time;
-    end_acc_[k] = 0.0;
-    end_vel_[k] = now.vel;
-    end_pos_[k] = now.pos;
-  }
+  hold(0, 0, kSpeedChangeEnd);
+  for (int k = 1; k <= kSpeedChangeEnd; ++k) set(k, Kind::ConstJerk, 0.0, time, 0.0, now.vel, now.pos);
 }
 
 // A slower speed before the constant acceleration has ended: the acceleration is re-planned to

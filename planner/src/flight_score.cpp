@@ -47,6 +47,11 @@ void onThreads(std::size_t n, int threads, const std::function<void(std::size_t)
 
 }  // namespace
 
+void setAutopilot(FlightScoring& scoring, const mission::AutopilotConfig& autopilot) {
+  scoring.autopilot = autopilot;
+  scoring.mission.firmware = autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
+}
+
 mission::MissionPrediction flyWrittenMission(const PlanMission& written, const FlightScoring& s, const std::string& source) {
   // The very text `wattswath predict mission.plan` reads.
   return flyPlanText(mission::toQgcPlan(written.mission), s, source);

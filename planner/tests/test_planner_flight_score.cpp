@@ -98,7 +98,7 @@ TEST(FlightScore, ForArduCopterBefore41SpeedCommandsAWaypointEarlyAreOfferedAndF
   const PlanResult& r = p->r;
   ASSERT_TRUE(r.plan.valid);
   FlightScoring s = p->s;
-  s.autopilot = mission::parseAutopilot(p->v.autopilot_json, p->v.name);
+  setAutopilot(s, mission::parseAutopilot(p->v.autopilot_json, p->v.name));
   ASSERT_EQ(s.autopilot.family, mission::AutopilotFamily::ArduCopterLeash);
   const auto scores = scoreByFlight({{"plan", &r.plan}}, s);
   const FlightScore* late = nullptr;
@@ -117,7 +117,7 @@ TEST(FlightScore, ForArduCopterBefore41SpeedCommandsAWaypointEarlyAreOfferedAndF
   EXPECT_LT(early->prediction.total.time_s, 0.8 * late->prediction.total.time_s);
   EXPECT_LT(early->prediction.total.energy_j, 0.8 * late->prediction.total.energy_j);
   // An autopilot that applies a speed at once: no variant.
-  s.autopilot = mission::parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test");
+  setAutopilot(s, mission::parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test"));
   for (const auto& f : scoreByFlight({{"plan", &r.plan}}, s)) EXPECT_FALSE(f.speeds_a_waypoint_early) << f.label;
 }
 

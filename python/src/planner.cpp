@@ -104,8 +104,7 @@ pl::FlightScore flownMission(const pl::PlanResult& r, const pl::SurveyProblem& p
   scoring.home_altitude_amsl_m = home_alt_m;
   scoring.vehicle = &v;
   scoring.model = &model;
-  scoring.autopilot = mission::parseAutopilot(v.autopilot_json, v.name);
-  scoring.mission.firmware = scoring.autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
+  pl::setAutopilot(scoring, mission::parseAutopilot(v.autopilot_json, v.name));
   scoring.threads = threads;
   std::vector<pl::FlightScore> scores;
   {

@@ -81,6 +81,7 @@ class SCurveProfile {
   void push(int& i, Kind kind, double duration, double jerk);
   void pushJerkRamp(int& i, double tj, double jerk, double t_const);
   void pushPhase(int& i, double tj, double jerk, double t2, double t4);
+  void set(int k, Kind kind, double jerk, double time, double acc, double vel, double pos);
   void hold(int first, int last, int ref);
   void stretchCruise();
   void restartAfterSpeedChange();

@@ -45,6 +45,10 @@ struct FlightScore {
   mission::MissionPrediction prediction;  ///< its flight, take-off to landing
 };
 
+/// Sets the autopilot that flies the missions and the mission dialect it reads
+/// (FlightScoring::mission.firmware: PX4, else ArduPilot), which go together.
+void setAutopilot(FlightScoring& scoring, const mission::AutopilotConfig& autopilot);
+
 /// `written` flown by the autopilot model exactly as `predict` flies the `.plan` text of it
 /// (`source` names that text in errors).
 mission::MissionPrediction flyWrittenMission(const PlanMission& written, const FlightScoring& scoring, const std::string& source);
