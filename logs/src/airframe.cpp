@@ -78,7 +78,7 @@ void fit(const std::vector<double>& s, const std::vector<double>& y, double& c1,
 dataflash::Log readDataflash(const std::string& path, const LogReadOptions& options) {
   auto bytes = binary::readFileBytes(path, options.max_file_bytes);
   if (bytes.size() < 2 || bytes[0] != 0xA3 || bytes[1] != 0x95) {
-    throw std::runtime_error(path + ": not an ArduPilot DataFlash (.bin) log; the airframe's drag is identified from "
+    throw std::runtime_error(path + ": not an ArduPilot DataFlash (.bin) log; the airframe (drag and response) is identified from "
                                     "DataFlash logs only (PX4 ULog: not supported yet)");
   }
   return dataflash::Log::parseAcceptingCutEnd(std::move(bytes), path, options.lenient);
