@@ -46,7 +46,8 @@ double firstWithin(std::size_t n, Pos p, const Eigen::Vector2d& home, double rad
 // The log carries no version text; its message formats (TimeUS, NKF1, CURR with cell voltages, no
 // FMTU) date it between 3.4 and 3.6, which the model flies alike (the leash model with 3.4's
 // Pythagorean slack). The vehicle touched down 1.3 m above home by its own altitude estimate (POS
-// RelHomeAlt), which the model, landing at home's altitude, flies as 2.6 s more at LAND_SPEED.
+// RelHomeAlt) where the model lands at home's altitude; the log descends a little faster than
+// LAND_SPEED below LAND_ALT_LOW, and the two almost cancel (docs/validation.md 5.1).
 TEST(RealReturns, ArduCopter35ReturnFrom61MetresOutIsPredictedWithin3Percent) {
   const std::string path = realLog("arducopter-3.5_quad_rtl.bin");
   const auto log = wattswath::logs::readFlightLog(path);
