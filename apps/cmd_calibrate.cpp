@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cli.hpp"
+#include "log_inputs.hpp"
 #include "replay_mission.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
@@ -99,9 +100,16 @@ void registerCalibrateCommand(CLI::App& app) {
     std::vector<cal::MissionFlight> flights;
     ms::ReadOptions ro;
     ro.lenient = o->lenient;
+    std::vector<std::string> window_notes;
+    nlohmann::json windows = nlohmann::json::array();
     for (std::size_t i = 0; i < o->logs.size(); ++i) {
       progress("calibrate: reading " + o->logs[i] + " and " + o->missions[i]);
-      flights.push_back({o->logs[i], ms::readMission(o->missions[i], ro), logs::readFlightLog(o->logs[i], o->read)});
+      MissionLog ml = readMissionLog(o->logs[i], o->read);
+      if (!ml.note.empty()) window_notes.push_back(ml.note);
+      ml.window["log"] = o->logs[i];
+      ml.window["note"] = ml.note;
+      windows.push_back(ml.window);
+      flights.push_back({o->logs[i], ms::readMission(o->missions[i], ro), std::move(ml.log)});
     }
     cal::CalibrationSettings cs;
     cs.max_evaluations = o->evaluations;
@@ -122,6 +130,7 @@ void registerCalibrateCommand(CLI::App& app) {
                                                                    {"vertical", r.tracking.error.vertical_m},
                                                                    {"samples", r.tracking.samples}}
                                                   : nlohmann::json(nullptr);
+      j["log_windows"] = windows;  // the part of each log compared with its mission's prediction
       j["fitted"] = r.fitted;
       j["notes"] = r.notes;
       j["kept_at_start"] = r.kept_at_start;  // behaviour parameters the flights do not call to change
@@ -136,6 +145,7 @@ void registerCalibrateCommand(CLI::App& app) {
       printJson(j);
       return;
     }
+    for (const auto& n : window_notes) std::cout << "note: " << n << "\n";
     printComparisons("before (firmware defaults / given parameters, vehicle physics):", r.before);
     printComparisons("after calibration:", r.after);
     std::cout << "fitted:\n";

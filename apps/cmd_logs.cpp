@@ -161,6 +161,7 @@ void registerReplay(CLI::App& app) {
       return;
     }
     o->measurement.print();
+    for (const auto& n : missions.notes) std::cout << "note: " << n << "\n";
     if (!o->missions.empty()) printMissionReplays(missions.json);
     printMetrics("model " + o->effects, m);
     for (const auto& r : reps) {

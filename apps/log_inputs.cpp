@@ -2,6 +2,7 @@
 #include "log_inputs.hpp"
 
 #include <cmath>
+#include <limits>
 #include <iostream>
 #include <stdexcept>
 
@@ -53,6 +54,22 @@ std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::str
                            {"notes", c.notes}});
     out.push_back(calibration::prepareLog(log));
   }
+  return out;
+}
+
+MissionLog readMissionLog(const std::string& path, const logs::LogReadOptions& read) {
+  logs::LogReadOptions whole = read;
+  whole.max_gap_s = std::numeric_limits<double>::infinity();  // checked on the part kept, below
+  MissionLog out;
+  out.log = logs::readFlightLog(path, whole);
+  const bool user = out.log.metadata.count("window") != 0;
+  const logs::MissionCut cut = logs::cutToMission(out.log);
+  logs::checkSampleGaps(out.log, read.max_gap_s);
+  out.note = cut.note;
+  const bool cut_here = !cut.source.empty();
+  out.window = {{"from_s", cut_here ? cut.from_s : out.log.samples.front().t},
+                {"to_s", cut_here ? cut.to_s : out.log.samples.back().t},
+                {"source", cut_here ? cut.source : user ? "--from / --to / --airborne" : "the CSV as given"}};
   return out;
 }
 

@@ -39,4 +39,19 @@ std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::str
                                                       const logs::LogReadOptions& read,
                                                       const energy::Vehicle& vehicle, MeasurementReport& report);
 
+/// A log of a flown mission, read for calibrate and replay --mission, with what was compared.
+struct MissionLog {
+  logs::FlightLog log;  ///< the samples compared with the mission's prediction
+  std::string note;     ///< which part of the log that is and why (empty: the log as given, a CSV)
+  nlohmann::json window;  ///< {"from_s", "to_s", "source"}: the part compared, on the log's clock
+};
+
+/// Reads a log of a flown mission. A DataFlash or ULog log given without --from / --to / --airborne
+/// is cut to its mission span (logs::missionSpan: from the switch into AUTO / AUTO_MISSION, where
+/// the take-off command runs, to the landing), as a prediction from the mission file counts; with
+/// no such switch logged, to its airborne part (the take-off delay is then counted from lift-off),
+/// or kept whole when no airborne part is found. The note says which. The sample-gap check
+/// (`read.max_gap_s`) applies to the part kept.
+MissionLog readMissionLog(const std::string& path, const logs::LogReadOptions& read);
+
 }  // namespace wattswath::apps

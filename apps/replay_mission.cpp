@@ -2,6 +2,8 @@
 // and the replay report's mission section.
 #include "replay_mission.hpp"
 
+#include "log_inputs.hpp"
+
 #include "predict_spread.hpp"
 
 #include <cmath>
@@ -120,8 +122,8 @@ MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup
   out.report.model = effects + (use_cal ? " (the vehicle file's calibration)" : " (--effects)");
   out.report.autopilot = mission::toString(setup.autopilot.family);
   for (std::size_t i = 0; i < log_paths.size(); ++i) {
-    calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]),
-                                 logs::readFlightLog(log_paths[i], read)};
+    MissionLog ml = readMissionLog(log_paths[i], read);
+    calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]), std::move(ml.log)};
     // As predict: the calibration flights of the mission's kind decide a disputed acceleration.
     mission::AutopilotConfig ap = setup.autopilot;
     const auto choice = kindChoiceOf(calibration::missionKind(mission::sequenceMission(f.mission), ap), setup);
@@ -133,6 +135,9 @@ MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup
                                     : reps[i].flight.modelled_j;
     out.json.push_back(
         flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
+    ml.window["note"] = ml.note;
+    out.json.back()["log_window"] = ml.window;  // the part of the log compared with the prediction
+    if (!ml.note.empty()) out.notes.push_back(ml.note);
     out.json.back()["calibration_chosen"] =
         choice ? nlohmann::json{{"parameter", setup.disputed_parameter}, {"value", choice->value}, {"flights", choice->flights}}
                : nlohmann::json(nullptr);

@@ -20,6 +20,7 @@ namespace wattswath::apps {
 struct MissionReplays {
   nlohmann::json json = nlohmann::json::array();  ///< one object per flight (mission_prediction in --json)
   report::MissionReplayData report;               ///< the report's mission section
+  std::vector<std::string> notes;                 ///< which part of each log was compared (readMissionLog)
 };
 
 /// Compares each log of `log_paths` with the prediction, under `setup` (as `predict` flies it), of

@@ -455,3 +455,30 @@ TEST(AirframeDrag, SitlFlightsOfOneQuadAgreeAndARealWindyLogIsNotDetermined) {
   EXPECT_NE(real.reason.find("variance"), std::string::npos) << real.reason;
   EXPECT_THROW(wattswath::logs::estimateAirframeDrag(dir + "/autopilot-logs/px4-1.9_quad_mission_rtl.ulg"), std::runtime_error);
 }
+
+// The part of a log that flew a mission (logs::missionSpan), as calibrate and replay --mission
+// compare it: the SITL square from the switch to AUTO (where its NAV_TAKEOFF starts; the quad lifts
+// off 3.2 s later, its throttle slewing up) to the landing; the PX4 1.9 log, which begins in the air
+// in AUTO_MISSION, to its landing, said to start in the air; the 3.5 log, all RTL, has none; a CSV
+// never has one (its rows are taken as given).
+TEST(MissionSpan, FromTheSwitchIntoTheMissionModeToTheLanding) {
+  const std::string dir = std::string(WATTSWATH_SHARED_DATA_DIR);
+  const auto sitl = wattswath::logs::readFlightLog(dir + "/sitl/square_5mps.BIN");
+  const auto s = wattswath::logs::missionSpan(sitl);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->from_s, 54.099, 0.002);
+  EXPECT_NEAR(s->liftoff_s, 57.35, 0.01);
+  EXPECT_NEAR(s->to_s, 180.34, 0.01);
+  EXPECT_FALSE(s->started_airborne);
+  EXPECT_NE(s->from_what.find("AUTO (3)"), std::string::npos) << s->from_what;
+
+  const auto px4 = wattswath::logs::readFlightLog(logPath(kPx19));
+  const auto p = wattswath::logs::missionSpan(px4);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_TRUE(p->started_airborne);
+  EXPECT_TRUE(std::isnan(p->liftoff_s));
+  EXPECT_NEAR(p->to_s, 5119.4, 0.2);  // vehicle_land_detected.landed
+
+  EXPECT_FALSE(wattswath::logs::missionSpan(wattswath::logs::readFlightLog(logPath(kAc35))).has_value());
+  EXPECT_FALSE(wattswath::logs::missionSpan(wattswath::logs::readFlightLog(dir + "/iris-flights/2017-10-18_1436_energy14.csv")).has_value());
+}

@@ -8,6 +8,7 @@
 
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
+#include "wattswath/logs/autopilot_log.hpp"
 #include "wattswath/mission/autopilot.hpp"
 
 namespace wattswath::python {
@@ -55,7 +56,14 @@ py::dict calibrate(const energy::Vehicle& vehicle, const std::vector<logs::Fligh
   const energy::EnergyModel model = energy::buildModel(vehicle, energy::splitEffectList(effects));
   const ms::AutopilotConfig ap = ms::parseAutopilot(vehicle.autopilot_json, vehicle.name);
   std::vector<cal::MissionFlight> flights;
-  for (std::size_t i = 0; i < flight_logs.size(); ++i) flights.push_back({flight_logs[i].source, missions[i], flight_logs[i]});
+  std::vector<std::string> window_notes;
+  for (std::size_t i = 0; i < flight_logs.size(); ++i) {
+    logs::FlightLog log = flight_logs[i];
+    // An autopilot log read whole is compared from the switch into the mission mode to the landing.
+    const logs::MissionCut cut = logs::cutToMission(log);
+    if (!cut.note.empty()) window_notes.push_back(cut.note);
+    flights.push_back({log.source, missions[i], std::move(log)});
+  }
   cal::CalibrationSettings cs;
   cs.max_evaluations = evaluations;
   cs.fit_energy = !keep_energy;
@@ -78,7 +86,9 @@ py::dict calibrate(const energy::Vehicle& vehicle, const std::vector<logs::Fligh
   d["tracking_error_m"] = r.tracking.measured ? py::object(py::make_tuple(r.tracking.error.horizontal_m, r.tracking.error.vertical_m))
                                               : py::none();
   d["fitted"] = r.fitted;
-  d["notes"] = r.notes;
+  std::vector<std::string> notes = window_notes;
+  notes.insert(notes.end(), r.notes.begin(), r.notes.end());
+  d["notes"] = notes;
   d["kept_at_start"] = r.kept_at_start;
   d["flights_agree"] = r.flights_agree;
   d["per_flight"] = per_flight;

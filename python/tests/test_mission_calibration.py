@@ -2,7 +2,7 @@
 import pytest
 import wattswath as ws
 
-from conftest import IRIS_PLUS, SHARED, cli_json, needs_shared
+from conftest import DATA, IRIS_PLUS, SHARED, cli_json, needs_shared
 
 FLIGHTS = ["2017-10-18_1436_energy14", "2017-10-18_1449_normal29"]
 HELD_OUT = "2017-11-20_1610_energy14"
@@ -72,3 +72,17 @@ def test_logs_and_missions_must_pair():
         ws.calibrate_missions(vehicle, [log], [], evaluations=EVALUATIONS)
     with pytest.raises(ValueError, match="evaluations"):
         ws.calibrate_missions(vehicle, [log], [ws.read_mission(str(mission_path(FLIGHTS[0])))], evaluations=5)
+
+
+@needs_shared
+def test_an_autopilot_log_read_whole_is_compared_from_the_switch_to_auto(tmp_path):
+    """As the CLI: a DataFlash log of a mission is compared from AUTO to the landing, and the notes say so."""
+    iris = str(DATA / "vehicles" / "iris.json")
+    log = SHARED / "sitl" / "square_5mps.BIN"
+    mission = SHARED / "sitl" / "square_5mps.waypoints"
+    got = ws.calibrate_missions(ws.load_vehicle(iris), [ws.read_log(str(log))], [ws.read_mission(str(mission))],
+                                evaluations=EVALUATIONS, keep_energy=True)
+    assert any("compared from the switch to AUTO (3) at 54.10 s" in n for n in got["notes"]), got["notes"]
+    ref = cli_json("calibrate", "--vehicle", iris, "--log", log, "--mission", mission, "--out", tmp_path / "v.json",
+                   "--evaluations", EVALUATIONS, "--keep-energy")
+    assert got["takeoff_delay_s"] == pytest.approx(ref["takeoff_delay_s"], rel=1e-12)

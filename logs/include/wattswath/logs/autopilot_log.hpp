@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,37 @@ FlightLog readFlightLog(const std::string& path, const LogReadOptions& options =
 /// options.airborne_only), clips log.airborne and log.events to it and records the window in
 /// metadata `window`. Throws when fewer than two samples remain, naming the window and the span.
 void applyTimeWindow(FlightLog& log, const LogReadOptions& options);
+
+/// The part of an autopilot log that flew a mission, as a prediction from the mission file counts it:
+/// from the take-off command (the switch into the mission mode, where a mission starting with
+/// NAV_TAKEOFF runs it) to the landing.
+struct MissionSpan {
+  double from_s = 0.0;            ///< [s] log clock: the first switch into ArduPilot AUTO or PX4 AUTO_MISSION / AUTO_TAKEOFF
+  double to_s = 0.0;              ///< [s] log clock: the end of the last airborne window after it (the landing)
+  double liftoff_s = 0.0;         ///< [s] log clock: the first airborne window's start after from_s (NaN when started in the air)
+  bool started_airborne = false;  ///< true when the vehicle was already flying at from_s (no take-off in the span)
+  std::string from_what;          ///< what gave the start, e.g. "the switch to AUTO (3) at 54.10 s"
+  std::string to_what;            ///< what gave the end, e.g. "the landing at 180.34 s"
+};
+
+/// The mission span of a DataFlash or ULog log (see MissionSpan); nullopt for a CSV (whose rows
+/// are taken as given), or when the log records no switch into the mission mode followed by an
+/// airborne window.
+std::optional<MissionSpan> missionSpan(const FlightLog& log);
+
+/// What cutToMission() did to a log.
+struct MissionCut {
+  std::string note;    ///< "FILE: compared from ... to ..." (empty: the log was left as it is)
+  std::string source;  ///< "mission mode to landing", "mission mode, started in the air", "airborne part", "whole log" or empty
+  double from_s = std::numeric_limits<double>::quiet_NaN();  ///< [s] log clock: start of the part kept (NaN: left as it is)
+  double to_s = std::numeric_limits<double>::quiet_NaN();    ///< [s] log clock: end of the part kept (NaN: left as it is)
+};
+
+/// Cuts a DataFlash or ULog log that no time window has cut yet (no metadata `window`) to the part
+/// a mission's prediction is compared with: its mission span, else its airborne part (a take-off
+/// delay then counts from lift-off), else the whole log, and says which. A CSV, or a log already
+/// cut, is left as it is.
+MissionCut cutToMission(FlightLog& log);
 
 /// Throws std::runtime_error naming log.source, the two times and the limit when consecutive
 /// samples of `log` are more than `max_gap_s` [s] apart: the energy over such a gap (the logger
