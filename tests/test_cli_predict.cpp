@@ -111,7 +111,7 @@ TEST(CliPredict, ASplineWaypointIsFlownByArduCopterAndRefusedForPx4) {
 #ifdef WATTSWATH_TEST_SHARED_DATA
 // A DataFlash log of a mission holds the whole session (here 26 s on the ground before arming):
 // calibrate and replay --mission compare the part from the switch to AUTO, where the take-off
-// command runs, to the landing, as the prediction counts it, and say so; the fitted take-off
+// command runs, to LAND_COMPLETE, as the prediction counts it, and say so; the fitted take-off
 // delay is then the autopilot's own (the SITL quad lifts off 3.2 s after AUTO: spool-up and its
 // throttle slew). --from / --to pick another part.
 TEST(CliPredict, AnAutopilotLogOfAMissionIsComparedFromTheSwitchToAutoToTheLanding) {
@@ -123,7 +123,7 @@ TEST(CliPredict, AnAutopilotLogOfAMissionIsComparedFromTheSwitchToAutoToTheLandi
   ASSERT_EQ(c["log_windows"].size(), 1u) << c.dump();
   EXPECT_EQ(c["log_windows"][0]["source"], "mission mode to landing");
   EXPECT_NEAR(c["log_windows"][0]["from_s"].get<double>(), 54.10, 0.01);
-  EXPECT_NEAR(c["log_windows"][0]["to_s"].get<double>(), 180.34, 0.01);
+  EXPECT_NEAR(c["log_windows"][0]["to_s"].get<double>(), 181.14, 0.01);  // LAND_COMPLETE
   EXPECT_NE(c["log_windows"][0]["note"].get<std::string>().find("compared from the switch to AUTO (3)"), std::string::npos);
   // Before, with the 4.5 defaults and no fit: the flight's time within 3 % (the whole log would be 168 s).
   EXPECT_NEAR(c["before"][0]["time_error_pct"].get<double>(), 0.0, 3.0);

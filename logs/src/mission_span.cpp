@@ -15,6 +15,8 @@ bool missionMode(const std::string& text) {
   return text.rfind("AUTO (", 0) == 0 || text.rfind("AUTO_MISSION", 0) == 0 || text.rfind("AUTO_TAKEOFF", 0) == 0;
 }
 
+constexpr double kLandCompleteWithin = 5.0;  // [s] LAND_COMPLETE after the airborne window's end, at most
+
 std::string at(double t) {
   char b[32];
   std::snprintf(b, sizeof b, "%.2f s", t);
@@ -49,6 +51,15 @@ std::optional<MissionSpan> missionSpan(const FlightLog& log) {
   }
   if (!found) return std::nullopt;
   s.to_what = "the landing at " + at(s.to_s);
+  // ArduCopter: the airborne window ends at the first landed event, LAND_COMPLETE_MAYBE; the
+  // landing a prediction counts (its land detector) is LAND_COMPLETE, logged after it.
+  for (const auto& e : log.events) {
+    if (e.kind == "event" && e.text == "EV 18 LAND_COMPLETE" && e.t >= s.to_s && e.t <= s.to_s + kLandCompleteWithin) {
+      s.to_what = "LAND_COMPLETE at " + at(e.t);
+      s.to_s = e.t;
+      break;
+    }
+  }
   return s;
 }
 

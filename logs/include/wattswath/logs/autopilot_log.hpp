@@ -89,7 +89,7 @@ void applyTimeWindow(FlightLog& log, const LogReadOptions& options);
 /// NAV_TAKEOFF runs it) to the landing.
 struct MissionSpan {
   double from_s = 0.0;            ///< [s] log clock: the first switch into ArduPilot AUTO or PX4 AUTO_MISSION / AUTO_TAKEOFF
-  double to_s = 0.0;              ///< [s] log clock: the end of the last airborne window after it (the landing)
+  double to_s = 0.0;              ///< [s] log clock: the landing: ArduCopter's LAND_COMPLETE, else the end of the last airborne window after from_s
   double liftoff_s = 0.0;         ///< [s] log clock: the first airborne window's start after from_s (NaN when started in the air)
   bool started_airborne = false;  ///< true when the vehicle was already flying at from_s (no take-off in the span)
   std::string from_what;          ///< what gave the start, e.g. "the switch to AUTO (3) at 54.10 s"
