@@ -134,6 +134,29 @@ TEST(CliPredict, AnAutopilotLogOfAMissionIsComparedFromTheSwitchToAutoToTheLandi
   std::remove(out.c_str());
 }
 
+// Calibrated on the two SITL squares, whose logged parameters are the truth: the climb and descent
+// speeds, which a 10 m square barely exercises, are not called for and keep their values. Climb:
+// its return costs 2.7 % of the time misfit, more than the 1 % share, but not significantly by the
+// F-test of the two fits (F 0.2 against 5.3 at 95 % for 12 times and 4 fitted values).
+TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValuesTheFlightsDoNotCallToChange) {
+  const std::string sitl = sharedData("sitl/");
+  const std::string base = tempPath("sitl_vehicle.json"), out = tempPath("sitl_calibrated.json");
+  std::remove(base.c_str());
+  std::remove(out.c_str());
+  ASSERT_EQ(run(cli("vehicle params " + sitl + "square_5mps.BIN --vehicle " + sourcePath("data/vehicles/iris.json") + " --out " + base +
+                    " 2>&1")).status, 0);
+  const json c = runJson("calibrate --vehicle " + base + " --log " + sitl + "square_5mps.BIN --mission " + sitl +
+                         "square_5mps.waypoints --log " + sitl + "square_10mps.BIN --mission " + sitl +
+                         "square_10mps.waypoints --out " + out + " --keep-energy --json");
+  const auto kept = c["kept_at_start"].get<std::vector<std::string>>();
+  EXPECT_NE(std::find(kept.begin(), kept.end(), "WPNAV_SPEED_UP"), kept.end()) << c["notes"].dump();
+  EXPECT_NE(std::find(kept.begin(), kept.end(), "WPNAV_SPEED_DN"), kept.end()) << c["notes"].dump();
+  EXPECT_NE(c["notes"].dump().find("not significantly (F = "), std::string::npos) << c["notes"].dump();
+  for (const auto& f : c["after"]) EXPECT_LT(std::abs(f["time_error_pct"].get<double>()), 2.0) << f.dump();
+  std::remove(base.c_str());
+  std::remove(out.c_str());
+}
+
 TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
   const std::string flight = "2017-10-18_1436_energy14";
   const std::string log = sharedData("iris-flights/" + flight + ".csv");

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <boost/math/distributions/fisher_f.hpp>
 #include <nlohmann/json.hpp>
 
 #include "median.hpp"
@@ -242,6 +243,14 @@ double timeCost(const FlightTimes& m, const FlightTimes& p) {
   }
   return sq(relErr(p.total_s, m.total_s)) + sq(relErr(p.takeoff_s, m.takeoff_s)) + sq(relErr(p.return_s, m.return_s)) +
          (n > 0 ? legs / n : 0.0);
+}
+
+// The number of terms of timeCost: the finite total, take-off and return times and the matched legs.
+int timeTerms(const FlightTimes& m) {
+  int n = 0;
+  for (double x : {m.total_s, m.takeoff_s, m.return_s}) n += std::isfinite(x) ? 1 : 0;
+  for (double x : m.leg_s) n += std::isfinite(x) && x > 0.0 ? 1 : 0;
+  return n;
 }
 
 }  // namespace
@@ -529,15 +538,21 @@ std::vector<double> fitBehaviour(const BehaviourProblem& bp, int max_evaluations
 
 // The behaviour parameters the flights do not call to change, returned to their starting values one
 // at a time: each still fitted parameter is set back with the others re-fitted (Nelder-Mead), and the
-// one that raises the time misfit least goes back when that rise is at most `share` of the misfit; again
-// until none does. A parameter the flights do not determine, or whose start they fit as well, stays
-// where it was. Returns the parameters; lists those set back in `r.kept_at_start` and `r.notes`.
+// one that raises the time misfit least goes back when that rise is not significant: at most `share`
+// of the misfit, or an F statistic rise / (misfit / (n - k)) below the F(1, n - k) quantile at
+// 1 - `alpha` (n: the misfit's terms, k: the parameters still fitted and the take-off delay); again
+// until none goes back. A parameter the flights do not determine, or whose start they fit as well,
+// stays where it was; with n <= k every parameter does. Returns the parameters; lists those set back
+// in `r.kept_at_start` and `r.notes`.
 std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<double> x, int variant, int max_evaluations,
-                                        double share, CalibrationResult& r) {
+                                        double share, double alpha, CalibrationResult& r) {
   const std::vector<double> x0 = bp.start();
   std::vector<bool> fixed(bp.free.size(), false);
+  int n = 0;
+  for (const auto& p : bp.prepared) n += timeTerms(p.measured);
   double cost = bp.cost(x, variant);
   for (;;) {
+    const int k = 1 + static_cast<int>(std::count(fixed.begin(), fixed.end(), false));  // the open parameters and the delay
     double best_rise = 1e300;
     std::size_t best_i = bp.free.size();
     std::vector<double> best_x;
@@ -550,7 +565,7 @@ std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<
       xi[i] = x0[i];
       auto full = [&](const std::vector<double>& y) {
         std::vector<double> z = xi;
-        for (std::size_t k = 0; k < open.size(); ++k) z[open[k]] = y[k];
+        for (std::size_t q = 0; q < open.size(); ++q) z[open[q]] = y[q];
         return z;
       };
       std::vector<double> y0;
@@ -560,17 +575,32 @@ std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<
       const double rise = bp.cost(xr, variant) - cost;
       if (rise < best_rise) best_rise = rise, best_i = i, best_x = xr;
     }
-    if (best_i == bp.free.size() || !(best_rise <= share * cost)) return x;  // <=: a perfect fit keeps what it need not change
+    if (best_i == bp.free.size()) return x;
+    const int dof = n - k;
+    std::string why;
     const double pct = 100.0 * std::max(best_rise, 0.0) / std::max(cost, 1e-12);
+    if (best_rise <= share * cost) {  // <=: a perfect fit keeps what it need not change
+      why = "the time misfit rises by " + num(pct) + " % (at most " + num(100.0 * share) + " %)";
+    } else if (alpha > 0.0 && dof <= 0) {
+      why = "the flights give " + std::to_string(n) + " time(s) for " + std::to_string(k) +
+            " fitted values (with the take-off delay): too few to call for any change";
+    } else if (alpha > 0.0) {
+      const double f = best_rise / (cost / dof);
+      const double crit = boost::math::quantile(boost::math::fisher_f(1.0, dof), 1.0 - alpha);
+      if (!(f <= crit)) return x;
+      why = "the time misfit rises by " + num(pct) + " %, not significantly (F = " + num(f) + ", below the " +
+            num(100.0 * (1.0 - alpha)) + " % point " + num(crit) + " of F(1, " + std::to_string(dof) + "))";
+    } else {
+      return x;
+    }
     fixed[best_i] = true;
     x = best_x;
     cost += std::max(best_rise, 0.0);
     const FreeParameter& fp = bp.free[best_i];
     r.kept_at_start.push_back(fp.name);
     r.notes.push_back(fp.name + " kept at its starting value " + num(fp.lo + x0[best_i] * (fp.hi - fp.lo)) + " " + fp.unit +
-                      ": set back there with the others re-fitted, the time misfit rises by " + num(pct) + " % (at most " +
-                      num(100.0 * share) + " %), so these flights do not call for a change (they fit as well, or do not "
-                      "determine it)");
+                      ": set back there with the others re-fitted, " + why +
+                      ", so these flights do not call for a change (they fit as well, or do not determine it)");
   }
 }
 
@@ -634,6 +664,10 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   if (!(s.keep_share >= 0.0 && s.keep_share <= 1.0)) {
     throw std::invalid_argument("CalibrationSettings.keep_share = " + std::to_string(s.keep_share) + ", expected 0..1");
   }
+  if (!(s.keep_significance >= 0.0 && s.keep_significance <= 0.5)) {
+    throw std::invalid_argument("CalibrationSettings.keep_significance = " + std::to_string(s.keep_significance) +
+                                ", expected 0..0.5");
+  }
   std::vector<Prepared> prepared;
   for (const auto& f : flights) prepared.push_back(prepare(f));
   CalibrationResult r;
@@ -647,7 +681,8 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   const BehaviourProblem bp{prepared, autopilot, free, mission::airframeOfVehicle(v, v.name), s.sim_dt, r.tracking.error};
   int chosen = 0;
   std::vector<double> x = fitBehaviour(bp, s.max_evaluations, r, chosen);
-  if (s.keep_share > 0.0) x = keepUnneededChanges(bp, x, chosen, s.max_evaluations, s.keep_share, r);
+  if (s.keep_share > 0.0 || s.keep_significance > 0.0)
+    x = keepUnneededChanges(bp, x, chosen, s.max_evaluations, s.keep_share, s.keep_significance, r);
   bp.apply(x, r.autopilot, r.takeoff_delay_s);
   reportBehaviour(free, autopilot, r);
   if (prepared.size() >= 2 && !free.empty()) {

@@ -206,7 +206,8 @@ TEST(MissionCalibration, BehaviourParametersTheFlightsDoNotCallToChangeKeepTheir
   // A log of the square flown with WPNAV_ACCEL 60 cm/s/s and every other parameter at its default.
   // Its corners and speed-ups call for the lower acceleration, so WPNAV_ACCEL is fitted (near 60);
   // a parameter whose return to its starting value (the others re-fitted) costs at most 1 % of the
-  // time misfit keeps that value and is said to. With keep_share 0 every fitted value is kept.
+  // time misfit keeps that value and is said to. With keep_share and keep_significance 0 every
+  // fitted value is kept.
   const IrisPlus ip;
   const auto& [v, model, ap] = ip;
   CalibrationSettings cs = behaviourOnly(60);
@@ -227,8 +228,12 @@ TEST(MissionCalibration, BehaviourParametersTheFlightsDoNotCallToChangeKeepTheir
   const auto stored = nlohmann::json::parse(calibrationToJson(r));
   EXPECT_EQ(stored["kept_at_start"].size(), r.kept_at_start.size());
   cs.keep_share = 0.0;
+  cs.keep_significance = 0.0;
   EXPECT_TRUE(calibrateMissions({slow}, v, model, ap, cs).kept_at_start.empty());
   cs.keep_share = 1.5;
+  EXPECT_THROW(calibrateMissions({slow}, v, model, ap, cs), std::invalid_argument);
+  cs.keep_share = 0.01;
+  cs.keep_significance = 0.6;
   EXPECT_THROW(calibrateMissions({slow}, v, model, ap, cs), std::invalid_argument);
 }
 

@@ -45,7 +45,7 @@ py::list comparisonList(const std::vector<cal::FlightComparison>& cs) {
 // result's "vehicle" is the vehicle with the fitted autopilot and its extensions.calibration.
 py::dict calibrate(const energy::Vehicle& vehicle, const std::vector<logs::FlightLog>& flight_logs,
                    const std::vector<ms::Mission>& missions, const std::string& effects, int evaluations, bool keep_energy,
-                   double keep_share) {
+                   double keep_share, double keep_significance) {
   if (flight_logs.size() != missions.size() || flight_logs.empty()) {
     throw std::invalid_argument("calibrate_missions: " + std::to_string(flight_logs.size()) + " logs and " +
                                 std::to_string(missions.size()) + " missions; give one mission per log, in the same order");
@@ -68,6 +68,7 @@ py::dict calibrate(const energy::Vehicle& vehicle, const std::vector<logs::Fligh
   cs.max_evaluations = evaluations;
   cs.fit_energy = !keep_energy;
   cs.keep_share = keep_share;
+  cs.keep_significance = keep_significance;
   const cal::CalibrationResult r = cal::calibrateMissions(flights, vehicle, model, ap, cs);
   const energy::Vehicle out = cal::calibratedVehicle(vehicle, r);
   py::dict params;
@@ -102,14 +103,15 @@ py::dict calibrate(const energy::Vehicle& vehicle, const std::vector<logs::Fligh
 void bindMissionCalibration(py::module_& m) {
   m.def("calibrate_missions", &calibrate, py::arg("vehicle"), py::arg("logs"), py::arg("missions"),
         py::arg("effects") = "hover,kinetic,parasitic_drag,climb,translational_lift", py::arg("evaluations") = 150,
-        py::arg("keep_energy") = false, py::arg("keep_share") = 0.01,
+        py::arg("keep_energy") = false, py::arg("keep_share") = 0.01, py::arg("keep_significance") = 0.05,
         "Fits the autopilot's flight behaviour (accelerations, gains, climb and descent speeds, take-off delay, corner "
         "and speed-change rules) and, unless keep_energy, the energy coefficients of `effects` to logged flights "
         "(FlightLog, read_log) of known missions (Mission, read_mission), one mission per log in order, as `wattswath "
         "calibrate` does: dict vehicle (the calibrated Vehicle, for predict_mission), parameters, takeoff_delay_s, "
         "stop_at_waypoints, speed_change_late, tracking_error_m (horizontal, vertical) or None, fitted, notes, "
         "kept_at_start (parameters the flights do not call to change: a return to the start costing at most "
-        "keep_share of the time misfit), flights_agree, per_flight, before and after (per flight: time and energy "
+        "keep_share of the time misfit, or not significantly at level keep_significance by an F-test of the nested "
+        "fits), flights_agree, per_flight, before and after (per flight: time and energy "
         "errors [%], leg-time MAPE [%], legs).");
 }
 

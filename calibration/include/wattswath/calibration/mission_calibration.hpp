@@ -136,6 +136,14 @@ struct CalibrationSettings {
   /// time misfit by at most this share keeps its starting value: the flights do not call for a
   /// change (they fit as well, or do not determine it); 0 keeps every fitted value. 0..1
   double keep_share = 0.01;
+  /// [-] Significance level of the test that a behaviour parameter's fitted value is called for: it
+  /// keeps its starting value unless returning it there (the others re-fitted) raises the time misfit
+  /// significantly, by an F-test of the two nested fits with the misfit's terms (each flight's total,
+  /// take-off and return time and each matched leg time) as observations and the free parameters and
+  /// the take-off delay as fitted; with no more observations than those, every parameter keeps its
+  /// start. A return within keep_share keeps the start whatever the test says. 0: keep_share alone
+  /// decides. 0..0.5
+  double keep_significance = 0.05;
 };
 
 /// One flight's own value of the acceleration parameter (WPNAV_ACCEL, MPC_ACC_HOR), the other
