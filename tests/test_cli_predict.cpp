@@ -125,8 +125,11 @@ TEST(CliPredict, AnAutopilotLogOfAMissionIsComparedFromTheSwitchToAutoToTheLandi
   EXPECT_NEAR(c["log_windows"][0]["from_s"].get<double>(), 54.10, 0.01);
   EXPECT_NEAR(c["log_windows"][0]["to_s"].get<double>(), 181.14, 0.01);  // LAND_COMPLETE
   EXPECT_NE(c["log_windows"][0]["note"].get<std::string>().find("compared from the switch to AUTO (3)"), std::string::npos);
-  // Before, with the 4.5 defaults and no fit: the flight's time within 3 % (the whole log would be 168 s).
-  EXPECT_NEAR(c["before"][0]["time_error_pct"].get<double>(), 0.0, 3.0);
+  // Before, with the 4.5 defaults and no fit: the flight's time within 4 % (the whole log would be
+  // 168 s against 123 s), the prediction missing the quad's 3.2 s on the ground before lift-off;
+  // after the fit, which finds that delay, within 1.5 %.
+  EXPECT_NEAR(c["before"][0]["time_error_pct"].get<double>(), 0.0, 4.0);
+  EXPECT_NEAR(c["after"][0]["time_error_pct"].get<double>(), 0.0, 1.5);
   EXPECT_NEAR(c["takeoff_delay_s"].get<double>(), 3.2, 1.0);
   const json r = runJson("replay --vehicle " + sourcePath("data/vehicles/iris.json") + " --log " + log + " --mission " + mission +
                          " --from 54.1 --json");
@@ -134,11 +137,12 @@ TEST(CliPredict, AnAutopilotLogOfAMissionIsComparedFromTheSwitchToAutoToTheLandi
   std::remove(out.c_str());
 }
 
-// Calibrated on the two SITL squares, whose logged parameters are the truth: the climb and descent
-// speeds, which a 10 m square barely exercises, are not called for and keep their values. Climb:
-// its return costs 2.7 % of the time misfit, more than the 1 % share, but not significantly by the
-// F-test of the two fits (F 0.2 against 5.3 at 95 % for 12 times and 4 fitted values).
-TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValuesTheFlightsDoNotCallToChange) {
+// Calibrated on the two SITL squares, whose logged parameters (and the airframe identified from
+// the log) are the truth, the fit keeps them: WPNAV_ACCEL, WPNAV_SPEED_UP and WPNAV_SPEED_DN at the
+// logs' values, WPNAV_JERK within 25 % of its 1 m/s^3, and the flights' times within 1 %. The
+// mission's home is placed through the logs' EKF origin, and the last waypoint, over home, is passed
+// at altitude, not where the quad sat after landing (docs/validation.md 5.2).
+TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValues) {
   const std::string sitl = sharedData("sitl/");
   const std::string base = tempPath("sitl_vehicle.json"), out = tempPath("sitl_calibrated.json");
   std::remove(base.c_str());
@@ -148,12 +152,37 @@ TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValuesTheFlightsDoNotCall
   const json c = runJson("calibrate --vehicle " + base + " --log " + sitl + "square_5mps.BIN --mission " + sitl +
                          "square_5mps.waypoints --log " + sitl + "square_10mps.BIN --mission " + sitl +
                          "square_10mps.waypoints --out " + out + " --keep-energy --json");
-  const auto kept = c["kept_at_start"].get<std::vector<std::string>>();
-  EXPECT_NE(std::find(kept.begin(), kept.end(), "WPNAV_SPEED_UP"), kept.end()) << c["notes"].dump();
-  EXPECT_NE(std::find(kept.begin(), kept.end(), "WPNAV_SPEED_DN"), kept.end()) << c["notes"].dump();
-  EXPECT_NE(c["notes"].dump().find("not significantly (F = "), std::string::npos) << c["notes"].dump();
-  for (const auto& f : c["after"]) EXPECT_LT(std::abs(f["time_error_pct"].get<double>()), 2.0) << f.dump();
+  const auto& p = c["autopilot"]["parameters"];
+  EXPECT_EQ(p["WPNAV_ACCEL"].get<double>(), 250.0);
+  EXPECT_EQ(p["WPNAV_SPEED_UP"].get<double>(), 250.0);
+  EXPECT_EQ(p["WPNAV_SPEED_DN"].get<double>(), 150.0);
+  EXPECT_NEAR(p["WPNAV_JERK"].get<double>(), 1.0, 0.25);
+  for (const auto& f : c["after"]) {
+    EXPECT_LT(std::abs(f["time_error_pct"].get<double>()), 1.0) << f.dump();
+    EXPECT_LT(f["leg_time_mape_pct"].get<double>(), 1.0) << f.dump();
+  }
   std::remove(base.c_str());
+  std::remove(out.c_str());
+}
+
+// On the IRIS+ November flight alone, POS_XY_P's fitted value lowers the time misfit by 9 % of it:
+// more than the 1 % share, but not significantly by the F-test of the two fits (F 2.1 against 4.3
+// at 95 %), so it keeps its 3.2 default and the note says why.
+TEST(CliPredict, ACalibrationKeepsAStartTheFlightsDoNotSignificantlyImproveOn) {
+  const std::string f = "2017-11-20_1610_energy14";
+  const std::string out = tempPath("calibrated_1610.json");
+  std::remove(out.c_str());
+  const json c = runJson("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " +
+                         sharedData("iris-flights/" + f + ".csv") + " --mission " +
+                         sharedData("iris-flights/mission__" + f + ".waypoints") + " --out " + out + " --keep-energy --json");
+  const auto kept = c["kept_at_start"].get<std::vector<std::string>>();
+  EXPECT_NE(std::find(kept.begin(), kept.end(), "POS_XY_P"), kept.end()) << c["notes"].dump();
+  bool said = false;
+  for (const auto& n : c["notes"]) {
+    const std::string t = n.get<std::string>();
+    said = said || (t.rfind("POS_XY_P kept", 0) == 0 && t.find("not significantly (F = ") != std::string::npos);
+  }
+  EXPECT_TRUE(said) << c["notes"].dump();
   std::remove(out.c_str());
 }
 

@@ -378,7 +378,15 @@ std::vector<Eigen::Vector3d> flownWaypoints(const std::vector<mission::NavStep>&
 mission::Mission missionFromLaunch(const MissionFlight& f, Eigen::Vector2d* offset, Eigen::Vector2d* launch) {
   std::vector<Eigen::Vector3d> track;
   for (const auto& s : f.log.samples) track.push_back(s.position);
-  const Eigen::Vector2d d = alignTrack(track, flownWaypoints(mission::sequenceMission(f.mission)));
+  Eigen::Vector2d d;
+  if (f.log.has_geodetic_origin) {
+    // The log's frame has a geodetic origin (an autopilot's EKF origin, or lat/lon columns): the
+    // mission's home row is placed in it exactly, not by laying the track onto the waypoints.
+    const geometry::LocalFrame frame(geometry::GeoPoint{f.log.origin_lat_deg, f.log.origin_lon_deg, f.log.origin_alt_m});
+    d = frame.toLocal(f.mission.home.lat_deg, f.mission.home.lon_deg);
+  } else {
+    d = alignTrack(track, flownWaypoints(mission::sequenceMission(f.mission)));
+  }
   const Eigen::Vector2d at = track.empty() ? Eigen::Vector2d::Zero() : Eigen::Vector2d(track.front().head<2>() - d);
   if (offset) *offset = d;
   if (launch) *launch = at;

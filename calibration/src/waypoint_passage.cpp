@@ -40,19 +40,22 @@ Passage waypointPassage(const std::vector<double>& t, const std::vector<Eigen::V
                         std::size_t from, double match_m) {
   Passage p;
   const long n = static_cast<long>(t.size()), first = static_cast<long>(from);
+  // The closest sample in three dimensions: a vehicle landing, or taking off, below a waypoint
+  // (one over home) is not at it.
   double best = 1e300;
   long at = first, last = n - 1;
   for (long i = first; i < n; ++i) {
-    const double dh = (pos[i] - w).head<2>().norm();
-    if (dh < best) best = dh, at = i;
-    if (best < match_m && dh > best + 10.0) {
+    const double di = (pos[i] - w).norm();
+    if (di < best) best = di, at = i;
+    if ((pos[at] - w).head<2>().norm() < match_m && di > best + 10.0) {
       last = i;
       break;
     }
   }
-  if (!(best <= match_m)) return p;
+  const double best_h = (pos[at] - w).head<2>().norm();
+  if (!(best_h <= match_m)) return p;
   p.index = at;
-  p.closest_m = best;
+  p.closest_m = best_h;
   // The dwell in three dimensions, so a take-off climb below a waypoint is not counted as at it;
   // distances only for the samples the walk out of the dwell visits.
   auto d = [&](long i) { return (pos[i] - w).norm(); };

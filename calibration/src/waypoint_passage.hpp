@@ -17,12 +17,12 @@ struct Passage {
   long index = -1;           ///< the sample closest to the waypoint (-1: not matched)
   double t = 0.0;            ///< [s] the middle of the dwell: between entering and leaving the sphere of
                              ///< the closest approach + kDwellMargin around the waypoint (linear between samples)
-  double closest_m = 0.0;    ///< [m] the closest horizontal approach of a sample
+  double closest_m = 0.0;    ///< [m] the horizontal distance of the closest sample
 };
 
 /// The passage of the track (`t` [s], `pos` [m]) by waypoint `w` [m] at or after sample `from`:
-/// its closest sample on the first pass within `match_m` [m] (the search stops 10 m beyond it),
-/// then the dwell around it. Unmatched (index -1) when the track never comes within `match_m`.
+/// its closest sample in three dimensions on the first pass whose horizontal distance is within
+/// `match_m` [m] (the search stops 10 m beyond it), then the dwell around it. Unmatched (index -1) when the track never comes within `match_m`.
 Passage waypointPassage(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& pos, const Eigen::Vector3d& w,
                         std::size_t from, double match_m);
 

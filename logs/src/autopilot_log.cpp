@@ -112,6 +112,10 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
   log.format = raw.format;
   log.velocity_derived = false;
   log.acceleration_derived = !raw.has_acc;
+  log.has_geodetic_origin = raw.has_origin;  // the EKF origin: the ENU positions are measured from it
+  log.origin_lat_deg = raw.origin_lat;
+  log.origin_lon_deg = raw.origin_lon;
+  log.origin_alt_m = raw.origin_alt;
   std::size_t before = 0, after = 0;
   double max_gap = 0.0;
   std::size_t j = 0;

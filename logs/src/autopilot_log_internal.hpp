@@ -44,6 +44,8 @@ struct Raw {
   std::string landed_source;                ///< where they came from
   std::vector<LogEvent> events;             ///< events for the timeline
   std::map<std::string, std::string> meta;  ///< metadata so far
+  bool has_origin = false;                  ///< the EKF origin of the positions is known geodetically
+  double origin_lat = 0.0, origin_lon = 0.0, origin_alt = 0.0;  ///< [deg], [deg], [m] that origin
   std::vector<std::string> warnings;        ///< warnings so far
 };
 

@@ -217,8 +217,21 @@ FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string&
   if (!frame.empty()) raw.vehicle += " (" + frame + ")";
   if (params.count("BATT_CAPACITY")) raw.meta["battery_capacity_mah"] = num(params["BATT_CAPACITY"]);
   if (L.has("ORGN", "Lat") && L.has("ORGN", "Lng")) {
+    // ORGN Type 0 is the EKF origin the positions are measured from (Type 1: home).
     const auto lat = L.column("ORGN", "Lat"), lng = L.column("ORGN", "Lng");
-    raw.meta["ekf_origin"] = num(lat.front(), 10) + ", " + num(lng.front(), 10);
+    const auto type = L.has("ORGN", "Type") ? L.column("ORGN", "Type") : std::vector<double>(lat.size(), 0.0);
+    const auto alt = L.has("ORGN", "Alt") ? L.column("ORGN", "Alt") : std::vector<double>(lat.size(), 0.0);
+    for (std::size_t k = 0; k < lat.size(); ++k) {
+      if (type[k] != 0.0 || !std::isfinite(lat[k]) || !std::isfinite(lng[k]) || std::abs(lat[k]) > 90.0 || std::abs(lng[k]) > 180.0 ||
+          (lat[k] == 0.0 && lng[k] == 0.0))
+        continue;
+      raw.meta["ekf_origin"] = num(lat[k], 10) + ", " + num(lng[k], 10);
+      raw.has_origin = true;
+      raw.origin_lat = lat[k];
+      raw.origin_lon = lng[k];
+      raw.origin_alt = std::isfinite(alt[k]) ? alt[k] : 0.0;
+      break;
+    }
   }
   dataflashBattery(L, opt, raw);
   dataflashPosition(L, opt, raw);

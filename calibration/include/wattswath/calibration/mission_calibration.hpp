@@ -77,8 +77,9 @@ struct FlightComparison {
 Eigen::Vector2d alignTrack(const std::vector<Eigen::Vector3d>& track, const std::vector<Eigen::Vector3d>& waypoints,
                            double search_m = 30.0);
 
-/// `f`'s mission flown from where its log took off: the home moved to the log's first sample (the
-/// track laid onto the waypoints by alignTrack), the items unchanged. ArduPilot and PX4 set home
+/// `f`'s mission flown from where its log took off: the home moved to the log's first sample (placed
+/// through the log's geodetic origin when it has one, an autopilot's EKF origin; else the track laid
+/// onto the waypoints by alignTrack), the items unchanged. ArduPilot and PX4 set home
 /// where the vehicle arms and return there, whatever the file's home row says. `offset` [m]
 /// receives the log frame minus the mission frame, `launch` [m] the take-off point east and north
 /// of the file's home.

@@ -46,7 +46,7 @@ struct FlightLog {
   std::string format;                              ///< "csv", "dataflash", "ulog", "simulated"
   std::map<std::string, std::string> metadata;     ///< `# key: value` comments and reader facts
   std::vector<LogSample> samples;                  ///< in time order
-  bool has_geodetic_origin = false;                ///< true when positions came from lat/lon
+  bool has_geodetic_origin = false;                ///< true when the ENU origin is known geodetically (lat/lon columns, or an autopilot log's EKF origin)
   double origin_lat_deg = 0.0;                     ///< [deg] ENU origin latitude (when geodetic)
   double origin_lon_deg = 0.0;                     ///< [deg] ENU origin longitude (when geodetic)
   double origin_alt_m = 0.0;                       ///< [m] ENU origin altitude (when geodetic)
