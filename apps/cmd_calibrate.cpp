@@ -138,7 +138,8 @@ void registerCalibrateCommand(CLI::App& app) {
       j["per_flight"] = nlohmann::json::array();
       for (const auto& f : r.per_flight) {
         j["per_flight"].push_back({{"flight", f.flight}, {"parameter", r.acceleration_parameter}, {"value", f.value},
-                                   {"time_misfit_alone", f.misfit_alone}, {"time_misfit_joint", f.misfit_joint}});
+                                   {"time_misfit_alone", f.misfit_alone}, {"time_misfit_joint", f.misfit_joint},
+                                   {"determined", f.determined}});
       }
       for (const auto& c : r.before) j["before"].push_back(comparisonJson(c));
       for (const auto& c : r.after) j["after"].push_back(comparisonJson(c));

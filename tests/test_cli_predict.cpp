@@ -157,6 +157,10 @@ TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValues) {
   EXPECT_EQ(p["WPNAV_SPEED_UP"].get<double>(), 250.0);
   EXPECT_EQ(p["WPNAV_SPEED_DN"].get<double>(), 150.0);
   EXPECT_NEAR(p["WPNAV_JERK"].get<double>(), 1.0, 0.25);
+  // A flight determines its own WPNAV_ACCEL when the joint value fits it more than 1 % worse.
+  for (const auto& f : c["per_flight"])
+    EXPECT_EQ(f["determined"].get<bool>(), f["time_misfit_joint"].get<double>() > 1.01 * f["time_misfit_alone"].get<double>())
+        << f.dump();
   for (const auto& f : c["after"]) {
     EXPECT_LT(std::abs(f["time_error_pct"].get<double>()), 1.0) << f.dump();
     EXPECT_LT(f["leg_time_mape_pct"].get<double>(), 1.0) << f.dump();

@@ -117,6 +117,7 @@ std::string calibrationToJson(const CalibrationResult& r) {
   if (!r.per_flight.empty()) {
     j["per_flight"]["parameter"] = r.acceleration_parameter;
     for (const auto& f : r.per_flight) {
+      if (!f.determined) continue;  // fits the joint value as well: no part in a dispute
       j["per_flight"]["values"].push_back(f.value);
       j["per_flight"]["flights"].push_back(f.flight);
       j["per_flight"]["kinds"].push_back(kindToJson(f.kind));

@@ -410,16 +410,18 @@ FlightComparison compareFlight(const MissionFlight& f, const energy::Vehicle& v,
 
 namespace {
 
-// Each flight's own value of the acceleration parameter `acc` (x[0]), the other parameters kept at
-// `x` (x[0] is the joint value): when the flights want values more than 25 % apart, one set of
-// parameters does not describe them all, and the note says so (changed settings, or a behaviour the
-// model lacks).
+// Each flight's own value of the acceleration parameter `acc` (the others as in `x`), into
+// `r.per_flight`, and whether the flights agree: a flight determines its value when its misfit at the
+// joint value exceeds its own minimum by more than `share` of it (else it fits the joint value as
+// well); the flights agree unless two that determine their values want values more than 25 %
+// apart. Says so in `r.fitted` and `r.notes`.
 template <class Cost>
 void checkAgreement(const std::vector<Prepared>& prepared, const FreeParameter& acc, const std::vector<double>& x,
-                    Cost flightCost, CalibrationResult& r) {
+                    Cost flightCost, double share, CalibrationResult& r) {
   r.acceleration_parameter = acc.name;
   double lo = 1e300, hi = -1e300;
-  std::ostringstream each;
+  int determined = 0;
+  std::ostringstream each, wanted;
   for (const auto& p : prepared) {
     std::vector<double> xf = x;
     xf[0] = gridThenGolden([&](double u) { xf[0] = u; return flightCost(xf, p); }, 45, 15);
@@ -428,16 +430,22 @@ void checkAgreement(const std::vector<Prepared>& prepared, const FreeParameter& 
     fa.value = acc.lo + xf[0] * (acc.hi - acc.lo);
     fa.misfit_alone = flightCost(xf, p);
     fa.misfit_joint = flightCost(x, p);
-    lo = std::min(lo, fa.value), hi = std::max(hi, fa.value);
-    each << (r.per_flight.empty() ? "" : ", ") << fa.flight << " " << num(fa.value);
+    fa.determined = fa.misfit_joint > (1.0 + share) * fa.misfit_alone;
+    if (fa.determined) {
+      lo = std::min(lo, fa.value), hi = std::max(hi, fa.value);
+      wanted << (determined ? ", " : "") << fa.flight << " " << num(fa.value);
+      ++determined;
+    }
+    each << (r.per_flight.empty() ? "" : ", ") << fa.flight << " " << num(fa.value)
+         << (fa.determined ? "" : " (not determined by it: it fits the joint value within " + num(100.0 * share) + " %)");
     r.per_flight.push_back(fa);
   }
   const double joint = acc.lo + x[0] * (acc.hi - acc.lo);
   r.fitted.push_back(acc.name + " of each flight alone: " + each.str() + " " + acc.unit + " (together " +
                      num(joint) + ")");
-  r.flights_agree = hi <= 1.25 * lo;
+  r.flights_agree = determined < 2 || hi <= 1.25 * lo;
   if (!r.flights_agree) {
-    r.notes.push_back("the flights do not agree on " + acc.name + ": each alone wants " + each.str() + " " + acc.unit +
+    r.notes.push_back("the flights do not agree on " + acc.name + ": each alone wants " + wanted.str() + " " + acc.unit +
                       ", together " + num(joint) + ". One set of parameters does not describe them all: the "
                       "setting may have changed between flights, or the model lacks a behaviour they differ in; the logs "
                       "cannot tell which, and a prediction of another flight may be off by this spread");
@@ -701,7 +709,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
     base.front() = x.front();
     checkAgreement(prepared, free.front(), base, [&](const std::vector<double>& xf, const Prepared& p) {
       return bp.flightCost(xf, chosen, p);
-    }, r);
+    }, s.keep_share, r);
     for (std::size_t i = 0; i < r.per_flight.size() && i < prepared.size(); ++i)
       r.per_flight[i].kind = missionKind(prepared[i].steps, autopilot);
   }

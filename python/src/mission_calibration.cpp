@@ -77,7 +77,7 @@ py::dict calibrate(const energy::Vehicle& vehicle, const std::vector<logs::Fligh
   for (const auto& f : r.per_flight)
     per_flight.append(py::dict(py::arg("flight") = f.flight, py::arg("parameter") = r.acceleration_parameter,
                                py::arg("value") = f.value, py::arg("misfit_alone") = f.misfit_alone,
-                               py::arg("misfit_joint") = f.misfit_joint));
+                               py::arg("misfit_joint") = f.misfit_joint, py::arg("determined") = f.determined));
   py::dict d;
   d["vehicle"] = out;
   d["parameters"] = params;

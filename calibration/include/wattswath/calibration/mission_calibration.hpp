@@ -155,6 +155,9 @@ struct FlightAcceleration {
   double value = 0.0;            ///< the parameter fitted on this flight alone [its unit]
   double misfit_alone = 0.0;     ///< [-] the flight's time misfit with its own value
   double misfit_joint = 0.0;     ///< [-] the flight's time misfit with the joint value (others as above)
+  /// true when the flight determines its value: its misfit at the joint value is more than
+  /// CalibrationSettings::keep_share above misfit_alone (else it fits the joint value as well)
+  bool determined = true;
   MissionKind kind;              ///< what the flight's mission asked for (waypoint kinds, speeds, legs)
 };
 
