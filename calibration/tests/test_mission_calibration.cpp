@@ -10,6 +10,7 @@
 
 #include "test_util.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
+#include "wattswath/geometry/frame.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/mission/flight.hpp"
 #include "wattswath/energy/vehicle.hpp"
@@ -253,6 +254,33 @@ TEST(MissionCalibration, TheFlightIsPredictedFromWhereTheLogTookOffNotFromTheFil
   EXPECT_LT(std::abs(c.predicted.return_s - c.measured.return_s), 1.0);
   const auto from_file = wattswath::mission::predictMission(f.mission, v, model, ap);
   EXPECT_GT(std::abs(from_file.total.time_s - c.measured.total_s), 3.0);  // what the comparison used to predict
+}
+
+TEST(MissionCalibration, ALogWithAGeodeticOriginPlacesTheMissionsHomeThroughIt) {
+  // An autopilot log measures its positions from its EKF origin, which it records (ORGN,
+  // vehicle_local_position.ref_lat/lon): the mission's home row is placed in the log's frame through
+  // it, exactly, not by laying the track onto the waypoints. Here the origin is 30 m west and 10 m
+  // north of the file's home, and the vehicle armed 20 m east and 15 m south of it: the log reads
+  // 50 m east and 25 m south of its origin at take-off, the offset is (30, -10) to the centimetre
+  // and the launch point (20, -15).
+  namespace geo = wattswath::geometry;
+  const auto v = wattswath::energy::loadVehicle(wattswath::test::sourcePath("data/vehicles/iris-plus-arducopter3.json"));
+  MissionFlight f = flownSquare("geodetic.bin", 100, v, {20.0, -15.0});
+  const geo::LocalFrame home(f.mission.home);
+  const geo::GeoPoint origin = home.toGeodetic(geo::Point(-30.0, 10.0));
+  const Eigen::Vector2d home_in_log = geo::LocalFrame(origin).toLocal(f.mission.home.lat_deg, f.mission.home.lon_deg);
+  // flownSquare's samples are measured from where it armed; as measured from the origin:
+  for (auto& s : f.log.samples) s.position.head<2>() += home_in_log + Eigen::Vector2d(20.0, -15.0);
+  f.log.has_geodetic_origin = true;
+  f.log.origin_lat_deg = origin.lat_deg;
+  f.log.origin_lon_deg = origin.lon_deg;
+  f.log.origin_alt_m = origin.alt_m;
+  Eigen::Vector2d offset, launch;
+  missionFromLaunch(f, &offset, &launch);
+  EXPECT_NEAR(offset.x(), 30.0, 0.01);
+  EXPECT_NEAR(offset.y(), -10.0, 0.01);
+  EXPECT_NEAR(launch.x(), 20.0, 0.01);
+  EXPECT_NEAR(launch.y(), -15.0, 0.01);
 }
 
 TEST(MissionCalibration, TrackingErrorIsTheMedianCruiseDistanceFromTheLegsCornersAndHoversLeftOut) {
