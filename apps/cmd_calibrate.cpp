@@ -107,7 +107,6 @@ void registerCalibrateCommand(CLI::App& app) {
       MissionLog ml = readMissionLog(o->logs[i], o->read);
       if (!ml.note.empty()) window_notes.push_back(ml.note);
       ml.window["log"] = o->logs[i];
-      ml.window["note"] = ml.note;
       windows.push_back(ml.window);
       flights.push_back({o->logs[i], ms::readMission(o->missions[i], ro), std::move(ml.log)});
     }

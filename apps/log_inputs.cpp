@@ -69,7 +69,8 @@ MissionLog readMissionLog(const std::string& path, const logs::LogReadOptions& r
   const bool cut_here = !cut.source.empty();
   out.window = {{"from_s", cut_here ? cut.from_s : out.log.samples.front().t},
                 {"to_s", cut_here ? cut.to_s : out.log.samples.back().t},
-                {"source", cut_here ? cut.source : user ? "--from / --to / --airborne" : "the CSV as given"}};
+                {"source", cut_here ? cut.source : user ? "--from / --to / --airborne" : "the CSV as given"},
+                {"note", out.note}};
   return out;
 }
 

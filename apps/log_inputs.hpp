@@ -43,7 +43,7 @@ std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::str
 struct MissionLog {
   logs::FlightLog log;  ///< the samples compared with the mission's prediction
   std::string note;     ///< which part of the log that is and why (empty: the log as given, a CSV)
-  nlohmann::json window;  ///< {"from_s", "to_s", "source"}: the part compared, on the log's clock
+  nlohmann::json window;  ///< {"from_s", "to_s", "source", "note"}: the part compared, on the log's clock
 };
 
 /// Reads a log of a flown mission. A DataFlash or ULog log given without --from / --to / --airborne

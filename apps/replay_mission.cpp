@@ -135,7 +135,6 @@ MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup
                                     : reps[i].flight.modelled_j;
     out.json.push_back(
         flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
-    ml.window["note"] = ml.note;
     out.json.back()["log_window"] = ml.window;  // the part of the log compared with the prediction
     if (!ml.note.empty()) out.notes.push_back(ml.note);
     out.json.back()["calibration_chosen"] =

@@ -42,17 +42,16 @@ Passage waypointPassage(const std::vector<double>& t, const std::vector<Eigen::V
   const long n = static_cast<long>(t.size()), first = static_cast<long>(from);
   // The closest sample in three dimensions: a vehicle landing, or taking off, below a waypoint
   // (one over home) is not at it.
-  double best = 1e300;
+  double best = 1e300, best_h = 1e300;  // [m] the closest sample's distance, and its horizontal part
   long at = first, last = n - 1;
   for (long i = first; i < n; ++i) {
     const double di = (pos[i] - w).norm();
-    if (di < best) best = di, at = i;
-    if ((pos[at] - w).head<2>().norm() < match_m && di > best + 10.0) {
+    if (di < best) best = di, best_h = (pos[i] - w).head<2>().norm(), at = i;
+    if (best_h < match_m && di > best + 10.0) {
       last = i;
       break;
     }
   }
-  const double best_h = (pos[at] - w).head<2>().norm();
   if (!(best_h <= match_m)) return p;
   p.index = at;
   p.closest_m = best_h;

@@ -24,6 +24,16 @@ std::string num(double x, int precision) {
   return os.str();
 }
 
+bool setOrigin(Raw& raw, double lat, double lon, double alt) {
+  if (!std::isfinite(lat) || !std::isfinite(lon) || std::abs(lat) > 90.0 || std::abs(lon) > 180.0 || (lat == 0.0 && lon == 0.0))
+    return false;
+  raw.has_origin = true;
+  raw.origin_lat = lat;
+  raw.origin_lon = lon;
+  raw.origin_alt = std::isfinite(alt) ? alt : 0.0;
+  return true;
+}
+
 double median(std::vector<double> x) {
   if (x.empty()) return kNaN;
   const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);

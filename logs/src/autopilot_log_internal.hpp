@@ -49,6 +49,11 @@ struct Raw {
   std::vector<std::string> warnings;        ///< warnings so far
 };
 
+/// Takes (`lat` [deg], `lon` [deg], `alt` [m]) as `raw`'s geodetic EKF origin when lat and lon are
+/// finite, in range and not both 0 (an origin not yet set); a non-finite `alt` counts as 0. Returns
+/// whether it did.
+bool setOrigin(Raw& raw, double lat, double lon, double alt);
+
 /// Median of `x` (NaN when empty).
 double median(std::vector<double> x);
 

@@ -222,14 +222,8 @@ FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string&
     const auto type = L.has("ORGN", "Type") ? L.column("ORGN", "Type") : std::vector<double>(lat.size(), 0.0);
     const auto alt = L.has("ORGN", "Alt") ? L.column("ORGN", "Alt") : std::vector<double>(lat.size(), 0.0);
     for (std::size_t k = 0; k < lat.size(); ++k) {
-      if (type[k] != 0.0 || !std::isfinite(lat[k]) || !std::isfinite(lng[k]) || std::abs(lat[k]) > 90.0 || std::abs(lng[k]) > 180.0 ||
-          (lat[k] == 0.0 && lng[k] == 0.0))
-        continue;
+      if (type[k] != 0.0 || !setOrigin(raw, lat[k], lng[k], alt[k])) continue;
       raw.meta["ekf_origin"] = num(lat[k], 10) + ", " + num(lng[k], 10);
-      raw.has_origin = true;
-      raw.origin_lat = lat[k];
-      raw.origin_lon = lng[k];
-      raw.origin_alt = std::isfinite(alt[k]) ? alt[k] : 0.0;
       break;
     }
   }

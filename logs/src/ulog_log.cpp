@@ -165,13 +165,7 @@ void readPosition(const ulog::Log& L, const std::string& source, const LogReadOp
     if (L.hasField(lp, "ref_lat") && L.hasField(lp, "ref_lon")) {
       const auto la = col("ref_lat"), lo = col("ref_lon"), al = col("ref_alt");
       if (!la.empty()) raw.meta["ekf_origin"] = num(la.back(), 10) + ", " + num(lo.back(), 10) + ", " + num(al.back(), 6) + " m";
-      if (!la.empty() && std::isfinite(la.back()) && std::isfinite(lo.back()) && std::abs(la.back()) <= 90.0 &&
-          std::abs(lo.back()) <= 180.0 && !(la.back() == 0.0 && lo.back() == 0.0)) {
-        raw.has_origin = true;
-        raw.origin_lat = la.back();
-        raw.origin_lon = lo.back();
-        raw.origin_alt = std::isfinite(al.back()) ? al.back() : 0.0;
-      }
+      if (!la.empty()) setOrigin(raw, la.back(), lo.back(), al.back());
     }
   }
 }
