@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
   libboost-dev libboost-graph-dev libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
   libboost-program-options-dev
-  libompl-dev libceres-dev libmuparser-dev libgeographiclib-dev nlohmann-json3-dev libcli11-dev
+  libompl-dev libceres-dev libnlopt-cxx-dev libmuparser-dev libgeographiclib-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libpng-dev
   libgdal-dev gdal-bin
   pybind11-dev python3-dev python3-numpy

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "median.hpp"
+#include "minimise.hpp"
 #include "waypoint_passage.hpp"
 #include "number_text.hpp"
 #include "wattswath/calibration/replay.hpp"
@@ -21,6 +22,8 @@
 namespace wattswath::calibration {
 namespace {
 
+using detail::gridThenBrent;
+using detail::nelderMead;
 using detail::num;
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -65,94 +68,6 @@ std::vector<FreeParameter> freeParameters(mission::AutopilotFamily f) {
               {"MPC_TKO_SPEED", 0.3, 5, "m/s"}, {"MPC_Z_V_AUTO_DN", 0.5, 4, "m/s"}};
   }
   return {};
-}
-
-// Nelder-Mead on [0, 1]^n (points clamped into the box); returns the best point.
-template <class F>
-std::vector<double> nelderMead(F cost, std::vector<double> x0, int max_evals) {
-  const std::size_t n = x0.size();
-  auto clampBox = [](std::vector<double> x) {
-    for (double& v : x) v = std::clamp(v, 0.0, 1.0);
-    return x;
-  };
-  std::vector<std::vector<double>> pts{clampBox(x0)};
-  for (std::size_t i = 0; i < n; ++i) {
-    auto p = x0;
-    p[i] += p[i] < 0.8 ? 0.15 : -0.15;
-    pts.push_back(clampBox(p));
-  }
-  std::vector<double> val;
-  int evals = 0;
-  auto eval = [&](const std::vector<double>& p) {
-    ++evals;
-    return cost(p);
-  };
-  for (const auto& p : pts) val.push_back(eval(p));
-  while (evals < max_evals) {
-    std::vector<std::size_t> ord(pts.size());
-    for (std::size_t i = 0; i < ord.size(); ++i) ord[i] = i;
-    std::sort(ord.begin(), ord.end(), [&](std::size_t a, std::size_t b) { return val[a] < val[b]; });
-    const std::size_t best = ord.front(), worst = ord.back(), second = ord[ord.size() - 2];
-    if (val[worst] - val[best] < 1e-9) break;
-    std::vector<double> c(n, 0.0);
-    for (std::size_t i : ord)
-      if (i != worst)
-        for (std::size_t k = 0; k < n; ++k) c[k] += pts[i][k] / static_cast<double>(n);
-    auto along = [&](double a) {
-      std::vector<double> p(n);
-      for (std::size_t k = 0; k < n; ++k) p[k] = c[k] + a * (pts[worst][k] - c[k]);
-      return clampBox(p);
-    };
-    const auto r = along(-1.0);
-    const double fr = eval(r);
-    if (fr < val[best]) {
-      const auto e = along(-2.0);
-      const double fe = eval(e);
-      if (fe < fr) pts[worst] = e, val[worst] = fe;
-      else pts[worst] = r, val[worst] = fr;
-    } else if (fr < val[second]) {
-      pts[worst] = r, val[worst] = fr;
-    } else {
-      const auto k = along(0.5);
-      const double fk = eval(k);
-      if (fk < val[worst]) {
-        pts[worst] = k, val[worst] = fk;
-      } else {
-        for (std::size_t i : ord)
-          if (i != best) {
-            for (std::size_t d = 0; d < n; ++d) pts[i][d] = 0.5 * (pts[i][d] + pts[best][d]);
-            val[i] = eval(pts[i]);
-          }
-      }
-    }
-  }
-  return pts[std::min_element(val.begin(), val.end()) - val.begin()];
-}
-
-// The minimum of `cost` on [0, 1]: the best of a grid of `grid` + 1 points, refined by a
-// golden-section search of `iters` steps between its neighbours (a time misfit is not unimodal:
-// waypoint passages move in steps).
-template <class F>
-double gridThenGolden(F cost, int grid, int iters) {
-  int best = 0;
-  double fbest = 1e300;
-  for (int i = 0; i <= grid; ++i) {
-    const double f = cost(static_cast<double>(i) / grid);
-    if (f < fbest) fbest = f, best = i;
-  }
-  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = std::max(0, best - 1) / static_cast<double>(grid), b = std::min(grid, best + 1) / static_cast<double>(grid);
-  double c = b - r * (b - a), d = a + r * (b - a);
-  double fc = cost(c), fd = cost(d);
-  for (int i = 0; i < iters; ++i) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc, c = b - r * (b - a), fc = cost(c);
-    } else {
-      a = c, c = d, fc = fd, d = a + r * (b - a), fd = cost(d);
-    }
-  }
-  const double u = fc < fd ? c : d;
-  return std::min(fc, fd) <= fbest ? u : static_cast<double>(best) / grid;
 }
 
 // The measured side of a flight, computed once, in the log's frame.
@@ -424,7 +339,7 @@ void checkAgreement(const std::vector<Prepared>& prepared, const FreeParameter& 
   std::ostringstream each, wanted;
   for (const auto& p : prepared) {
     std::vector<double> xf = x;
-    xf[0] = gridThenGolden([&](double u) { xf[0] = u; return flightCost(xf, p); }, 45, 15);
+    xf[0] = gridThenBrent([&](double u) { xf[0] = u; return flightCost(xf, p); }, 45, 15);
     FlightAcceleration fa;
     fa.flight = std::filesystem::path(p.flight->name).filename().string();
     fa.value = acc.lo + xf[0] * (acc.hi - acc.lo);

@@ -3,6 +3,8 @@
 
 #include <unsupported/Eigen/FFT>
 
+#include <boost/math/distributions/chi_squared.hpp>
+
 #include <algorithm>
 #include <complex>
 #include <cmath>
@@ -58,15 +60,8 @@ double whiteNoiseSigma(const std::vector<double>& x) {
 }
 
 double chiSquareQuantile(int k, double p) {
-  // Upper-tail normal quantile by bisection on erfc, then Wilson-Hilferty (within about 1 % of
-  // the exact value for k >= 1 and p >= 1e-9).
-  double lo = 0.0, hi = 40.0;
-  for (int it = 0; it < 200; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (0.5 * std::erfc(mid / std::sqrt(2.0)) > p ? lo : hi) = mid;
-  }
-  const double z = 0.5 * (lo + hi), h = 2.0 / (9.0 * k);
-  return k * std::pow(1.0 - h + z * std::sqrt(h), 3);
+  // Boost.Math's exact quantile (an approximation by Wilson-Hilferty until 2026-11-27).
+  return boost::math::quantile(boost::math::complement(boost::math::chi_squared(std::max(k, 1)), p));
 }
 
 double correlation(const std::vector<double>& a, const std::vector<double>& b) {

@@ -14,7 +14,7 @@ double autocorrelationTime(const std::vector<double>& x);
 /// |x_{i+1} - x_i| / sqrt(2), which a smooth structure (a missing effect) hardly changes.
 double whiteNoiseSigma(const std::vector<double>& x);
 
-/// Chi-square quantile with `k` degrees of freedom at upper-tail probability `p` (Wilson-Hilferty).
+/// Chi-square quantile with `k` (at least 1) degrees of freedom at upper-tail probability `p` in (0, 1) (Boost.Math).
 double chiSquareQuantile(int k, double p);
 
 /// Pearson correlation of `a` and `b` (0 when either is constant or fewer than 3 samples).

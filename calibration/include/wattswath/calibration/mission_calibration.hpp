@@ -5,7 +5,7 @@
 /// leg between waypoints, measured the same way on the log and on the predicted trajectory (each
 /// waypoint passed, in turn, at the middle of the track's dwell near it: the closest approach for a
 /// vehicle flying through, the middle of a stop for one that stops). Calibration fits the autopilot's
-/// flight-behaviour parameters to those times (Nelder-Mead on the simulated flights) and the energy
+/// flight-behaviour parameters to those times (NLopt's Nelder-Mead on the simulated flights) and the energy
 /// model's coefficients to the logged power on the logged kinematics (fitModel), and reports the
 /// errors before and after.
 
