@@ -16,7 +16,8 @@ using detail::Recorder;
 
 struct Params {
   double cruise, vel_max, acc, jerk, traj_p, up, down, acc_up, acc_down, vel_max_dn, tko_speed, tko_ramp, land_speed,
-      land_alt1, land_alt2, acc_rad, alt_rad, rtl_alt, rtl_descend, rtl_delay, spool;
+      land_alt1, land_alt2, acc_rad, alt_rad, rtl_alt, rtl_descend, rtl_delay, rtl_cone_deg, rtl_min_dist, spool;
+  int rtl_rule;  // the return altitude rule: 13 (PX4 1.13 and later), 10 (1.10-1.12), 0 (before the cone)
 };
 
 Params readParams(const AutopilotConfig& ap) {
@@ -42,6 +43,12 @@ Params readParams(const AutopilotConfig& ap) {
   p.rtl_alt = ap.get("RTL_RETURN_ALT");
   p.rtl_descend = ap.get("RTL_DESCEND_ALT");
   p.rtl_delay = std::max(0.0, ap.get("RTL_LAND_DELAY"));
+  p.rtl_cone_deg = ap.get("RTL_CONE_ANG");
+  p.rtl_min_dist = std::max(0.0, ap.get("RTL_MIN_DIST"));
+  // A version without a number (a vehicle file that says only "PX4") takes the current rule.
+  p.rtl_rule = versionAtLeast(ap.version, 1, 13) || !versionAtLeast(ap.version, 1, 0) ? 13
+               : versionAtLeast(ap.version, 1, 10)                                    ? 10
+                                                                                      : 0;
   p.spool = std::max(0.0, ap.get("COM_SPOOLUP_TIME"));
   return p;
 }
@@ -117,6 +124,36 @@ double cornerSpeed(const Eigen::Vector3d& from, const Eigen::Vector3d& here, con
   return std::sqrt(P.traj_p * P.acc * acc_rad * std::tan(0.5 * alpha));
 }
 
+// [m] The altitude above home at which RTL returns (PX4 navigator, RTL_TYPE 0, home as the
+// destination) from `here` [m, home at the origin], never below the current altitude.
+// 1.13 and later (`RTL::computeReturnAltitude`, before 1.15 `calculate_return_alt_from_cone_half_angle`),
+// with RTL_CONE_ANG > 0: RTL_RETURN_ALT; within RTL_MIN_DIST of home the cone's height there if
+// lower, yet at least 2 NAV_ACC_RAD; within NAV_ACC_RAD twice the distance; RTL_CONE_ANG 0:
+// RTL_RETURN_ALT. 1.10-1.12: within RTL_MIN_DIST RTL_DESCEND_ALT; else the cone's height capped at
+// RTL_RETURN_ALT (RTL_RETURN_ALT without a cone); never below RTL_DESCEND_ALT. Before 1.10 (no
+// RTL_CONE_ANG; the 1.9 log has none): RTL_RETURN_ALT.
+double returnAltitude(const Eigen::Vector3d& here, const Params& P) {
+  const double d = here.head<2>().norm();
+  const auto coneHeight = [&] { return d / std::tan(std::clamp(P.rtl_cone_deg, 1.0, 89.0) * M_PI / 180.0); };
+  if (P.rtl_rule == 0 || (P.rtl_rule == 13 && P.rtl_cone_deg <= 0.0)) return std::max(P.rtl_alt, here.z());
+  if (P.rtl_rule == 13) {
+    double alt = P.rtl_alt;
+    if (d <= P.acc_rad) {
+      alt = 2.0 * d;
+    } else {
+      if (d <= P.rtl_min_dist) alt = std::min(coneHeight(), alt);
+      alt = std::max(alt, 2.0 * P.acc_rad);
+    }
+    return std::max(alt, here.z());
+  }
+  double alt = here.z();
+  if (d <= P.rtl_min_dist) alt = P.rtl_descend;
+  else if (here.z() > P.rtl_alt || P.rtl_cone_deg >= 90.0) alt = here.z();
+  else if (P.rtl_cone_deg <= 0.0) alt = P.rtl_alt;
+  else alt = std::max(here.z(), std::min(coneHeight(), P.rtl_alt));
+  return std::max(alt, P.rtl_descend);
+}
+
 }  // namespace
 
 FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
@@ -149,7 +186,8 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       const bool rtl = st.kind == NavStep::Kind::ReturnToLaunch;
       const FlightPhase ph = rtl ? FlightPhase::Return : FlightPhase::Landing;
       if (rtl) {
-        f.vertical(std::max(P.rtl_alt, f.p.z()), P.up, P.acc_up, ph, ki);
+        // A return altitude below the vehicle (before 1.13, near home) is reached in the descent below.
+        if (const double ret = returnAltitude(f.p, P); ret > f.p.z()) f.vertical(ret, P.up, P.acc_up, ph, ki);
         f.flyTo({0.0, 0.0, f.p.z()}, cruise, 0.0, 0.5, ph, ki);
         if (f.p.z() > P.rtl_descend) f.vertical(P.rtl_descend, P.down, P.acc_down, ph, ki);
         f.hover(P.rtl_delay, ph, ki);
@@ -169,7 +207,9 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
   }
   rec.note("PX4 " + ap.version + " model: MPC_XY_CRUISE " + detail::num(P.cruise) + " m/s, MPC_ACC_HOR " +
            detail::num(P.acc) + " m/s/s, MPC_JERK_AUTO " + detail::num(P.jerk) + " m/s/s/s, NAV_ACC_RAD " +
-           detail::num(P.acc_rad) + " m; take-off at MPC_TKO_SPEED; RTL cone not modelled");
+           detail::num(P.acc_rad) + " m; take-off at MPC_TKO_SPEED; RTL returns at " +
+           std::string(P.rtl_rule == 13 ? "the 1.13+" : P.rtl_rule == 10 ? "the 1.10-1.12" : "the pre-1.10") +
+           " return altitude (RTL_RETURN_ALT, RTL_CONE_ANG, RTL_MIN_DIST)");
   return rec.take(steps);
 }
 

@@ -465,6 +465,39 @@ TEST(Px4, StraightLegAccelerationTakesVOverAPlusAOverJ) {
   EXPECT_NEAR(t99, 5.0 / 3.0 + 3.0 / 4.0, 0.5);
 }
 
+// The height RTL returns at, from PX4's navigator (RTL::computeReturnAltitude, 1.13 on; the rule
+// before it for 1.10-1.12; none before the cone), with the defaults RTL_RETURN_ALT 60 m, RTL_CONE_ANG 45 deg, RTL_MIN_DIST
+// 10 m, NAV_ACC_RAD 10 m, RTL_DESCEND_ALT 30 m. The last waypoint, at 10 m, is reached within
+// 0.5 m (its param2), so RTL starts up to 0.5 m short of it: heights that follow the distance
+// are expected within 1 m.
+TEST(Px4, RtlClimbsToTheReturnAltitudeOfItsVersion) {
+  const auto returnHeight = [](const std::string& version, double x, const std::string& parameters = "{}") {
+    const AutopilotConfig px4 =
+        parseAutopilot(R"({"firmware":"PX4","version":")" + version + R"(","parameters":)" + parameters + "}", "test");
+    Mission m = localMission({{x, 0, 10}});
+    m.items[1].param[1] = 0.5;  // acceptance radius of the waypoint
+    const FlownMission f = flyMission(sequenceMission(m), px4);
+    double top = 0.0;
+    for (const auto& s : f.samples)
+      if (s.phase == FlightPhase::Return) top = std::max(top, s.position.z());
+    return top;
+  };
+  // 1.14 beyond RTL_MIN_DIST: RTL_RETURN_ALT.
+  EXPECT_NEAR(returnHeight("1.14", 200), 60.0, 0.5);
+  // 1.14, 8 m out, within NAV_ACC_RAD: twice the distance.
+  EXPECT_NEAR(returnHeight("1.14", 8), 16.0, 1.0);
+  // 1.14, 8 m out with NAV_ACC_RAD 1 m: the 30 deg cone's 8 / tan 30 = 13.9 m (within RTL_MIN_DIST).
+  EXPECT_NEAR(returnHeight("1.14", 8, R"({"NAV_ACC_RAD":1,"RTL_CONE_ANG":30})"), 13.86, 1.0);
+  // ... the 45 deg cone's 8 m is below the vehicle, which returns at its 10 m.
+  EXPECT_NEAR(returnHeight("1.14", 8, R"({"NAV_ACC_RAD":1})"), 10.0, 0.5);
+  // 1.12: the 45 deg cone at any distance, capped at RTL_RETURN_ALT; within RTL_MIN_DIST, RTL_DESCEND_ALT.
+  EXPECT_NEAR(returnHeight("1.12", 40), 40.0, 1.0);
+  EXPECT_NEAR(returnHeight("1.12", 200), 60.0, 0.5);
+  EXPECT_NEAR(returnHeight("1.12", 8), 30.0, 0.5);
+  // 1.9 had no cone (its logs carry no RTL_CONE_ANG): RTL_RETURN_ALT.
+  EXPECT_NEAR(returnHeight("1.9.0", 40), 60.0, 0.5);
+}
+
 TEST(ArduCopterLeash, StopWaypointIsReachedWithinTheRadiusAndHoldsStill) {
   AutopilotConfig ac3 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.3.3"})", "test");
   ASSERT_EQ(ac3.family, AutopilotFamily::ArduCopterLeash);
