@@ -126,8 +126,8 @@ TEST(CliPredict, AnAutopilotLogOfAMissionIsComparedFromTheSwitchToAutoToTheLandi
   EXPECT_NEAR(c["log_windows"][0]["to_s"].get<double>(), 181.14, 0.01);  // LAND_COMPLETE
   EXPECT_NE(c["log_windows"][0]["note"].get<std::string>().find("compared from the switch to AUTO (3)"), std::string::npos);
   // Before, with the 4.5 defaults and no fit: the flight's time within 4 % (the whole log would be
-  // 168 s against 123 s), the prediction missing the quad's 3.2 s on the ground before lift-off;
-  // after the fit, which finds that delay, within 1.5 %.
+  // 168 s against 123 s), the prediction missing the 2 s arming delay of the quad's 3.2 s on the
+  // ground before lift-off; after the fit, which finds that delay, within 1.5 %.
   EXPECT_NEAR(c["before"][0]["time_error_pct"].get<double>(), 0.0, 4.0);
   EXPECT_NEAR(c["after"][0]["time_error_pct"].get<double>(), 0.0, 1.5);
   EXPECT_NEAR(c["takeoff_delay_s"].get<double>(), 3.2, 1.0);

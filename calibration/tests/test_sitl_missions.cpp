@@ -70,8 +70,14 @@ SitlRun run(const std::string& name) {
   fs.airframe.drag_quadratic_per_m = drag.drag_quadratic_per_m;
   fs.airframe.response_s = airframe.response.response_s;
   const ms::FlownMission f = ms::flyMission(steps, ap, fs);
-  // The SITL times count from lift-off; ours from the take-off command (MOT_SPOOL_TIME earlier).
-  const double liftoff = ap.get("MOT_SPOOL_TIME");
+  // The SITL times count from lift-off; ours from the take-off command (MOT_SPOOL_TIME and the
+  // take-off throttle slew earlier).
+  double liftoff = 0.0;
+  for (const auto& s : f.samples)
+    if (s.airborne) {
+      liftoff = s.t;
+      break;
+    }
   const auto reached = reachedTimes(name);
   nlohmann::json times;
   std::ifstream(sitl(name + ".times.json")) >> times;

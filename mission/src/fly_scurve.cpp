@@ -24,7 +24,7 @@ constexpr double kHoldOffset = 0.01;  // [m] a vehicle's altitude off its positi
 struct Params {
   double speed_xy, speed_up, speed_dn, accel_xy, accel_z, jerk, snap, radius, accel_corner;
   double jerk_z, rtl_alt, rtl_alt_final, rtl_climb_min, rtl_speed, rtl_loiter_s, land_speed, land_speed_high,
-      land_alt_low, pos_z_p, spool_s, rtl_cone_slope;
+      land_alt_low, pos_z_p, spool_s, slew_s, rtl_cone_slope;
   double land_wind_down_s;  // [s] from touch-down until the throttle is at its lower limit (throttleWindDown)
   double spline_lateral;  // share of the acceleration limit a spline's curvature may use
   detail::PositionGains gains;
@@ -70,9 +70,13 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_speed_high = std::max(0.0, ap.get("LAND_SPEED_HIGH")) / 100.0;
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.pos_z_p = checkParameter("PSC_POSZ_P", ap.get("PSC_POSZ_P"), 0.1, 10, "1/s");
+  const double hover = checkParameter("MOT_THST_HOVER", ap.get("MOT_THST_HOVER"), 0.05, 0.95, "(throttle fraction)");
+  // On the ground: the spool-up, then `_TakeOff` slews the throttle up at 1 / TKOFF_SLEW_TIME per
+  // second until the vehicle rises, at the hover throttle (or TKOFF_THR_MAX, at most 0.9).
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
-  p.land_wind_down_s = detail::throttleWindDown(
-      checkParameter("MOT_THST_HOVER", ap.get("MOT_THST_HOVER"), 0.05, 0.95, "(throttle fraction)"), p.land_speed, p.pos_z_p,
+  p.slew_s = checkParameter("TKOFF_SLEW_TIME", ap.get("TKOFF_SLEW_TIME"), 0.25, 5, "s") *
+             std::min({hover, std::max(0.0, ap.get("TKOFF_THR_MAX")), 0.9});
+  p.land_wind_down_s = detail::throttleWindDown(hover, p.land_speed, p.pos_z_p,
       checkParameter("PSC_VELZ_P", ap.get("PSC_VELZ_P"), 0.1, 20, "1/s"), checkParameter("PSC_ACCZ_P", ap.get("PSC_ACCZ_P"), 0.01, 5, "-"),
       checkParameter("PSC_ACCZ_I", ap.get("PSC_ACCZ_I"), 0, 10, "1/s"));
   p.gains.pos_p = checkParameter("PSC_POSXY_P", ap.get("PSC_POSXY_P"), 0.1, 10, "1/s");
@@ -359,7 +363,7 @@ void land(Recorder& rec, const Params& P, double speed_dn, int step, const Fligh
 FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
   const Params P = readParams(ap);
   Recorder rec(s, steps.size());
-  rec.startOnGround(P.spool_s);
+  rec.startOnGround(P.spool_s + P.slew_s);
   Flight fl{rec, detail::PositionFollower(P.gains, s.airframe)};
   Eigen::Vector3d here = Eigen::Vector3d::Zero();
   FlightPhase phase = FlightPhase::Mission;
@@ -429,7 +433,9 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
   rec.note("ArduCopter " + ap.version + " S-curve model: WPNAV_SPEED " + detail::num(P.speed_xy) + " m/s, WPNAV_ACCEL " +
            detail::num(P.accel_xy) + " m/s/s, jerk " + detail::num(P.jerk) + " m/s/s/s, snap " +
            detail::num(P.snap) + " m/s^4, WPNAV_RADIUS " + detail::num(P.radius) + " m, RTL speed " +
-           detail::num(P.rtl_speed) + " m/s (RTL_SPEED, else WPNAV_SPEED)");
+           detail::num(P.rtl_speed) + " m/s (RTL_SPEED, else WPNAV_SPEED); lift-off " + detail::num(P.spool_s + P.slew_s) +
+           " s after the take-off command (MOT_SPOOL_TIME, then the take-off throttle slew TKOFF_SLEW_TIME x MOT_THST_HOVER; "
+           "ARMING_DELAY_SEC's 2 s from arming is not counted)");
   return rec.take(steps);
 }
 

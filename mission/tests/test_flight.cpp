@@ -303,14 +303,17 @@ TEST(ArduCopterSCurve, LandingWaitsForTheThrottleToWindDownThenTheDetector) {
   // On the ground the target keeps descending at LAND_SPEED 0.5 m/s: the throttle removed after t s
   // is 0.25 (0.5 (1 + t) + t + t^2 / 2) = 0.125 + 0.375 t + 0.125 t^2 (PSC_POSZ_P 1, PSC_VELZ_P 5,
   // PSC_ACCZ_P 0.5, PSC_ACCZ_I 1). It equals a hover throttle of 0.39 at t = 0.590 s and of 0.2 at
-  // t = 0.188 s; the landing detector's 1 s follows either way, so the flights differ by 0.402 s.
+  // t = 0.188 s; the landing detector's 1 s follows either way, so the flights differ by 0.402 s
+  // from lift-off (the take-off throttle slew before it also scales with the hover throttle).
   const Mission m = localMission({{30, 0, 10}});
   auto flightTime = [&](double hover) {
     AutopilotConfig ap;
     ap.parameters["MOT_THST_HOVER"] = hover;
     FlightSettings fs;
     fs.sample_dt = fs.dt;
-    return flyMission(sequenceMission(m), ap, fs).samples.back().t;
+    const FlownMission f = flyMission(sequenceMission(m), ap, fs);
+    const auto up = std::find_if(f.samples.begin(), f.samples.end(), [](const FlightSample& s) { return s.airborne; });
+    return f.samples.back().t - up->t;
   };
   EXPECT_NEAR(flightTime(0.39) - flightTime(0.2), 0.590 - 0.188, 0.03);
   // A hover throttle the first step already removes (0.1 < 0.125): no wait beyond the detector.
@@ -430,10 +433,33 @@ TEST(ArduCopterSCurve, TheLeanLagsTheCommandByAtcInputTcUnlessTheAirframeGivesIt
 TEST(ArduCopterSCurve, TakeoffClimbsAtWpnavSpeedUpAndLandingEndsOnTheGround) {
   const Mission m = localMission({{0, 50, 10}});
   const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
-  // 10 m at 2.5 m/s with 1 m/s^2 and 5 m/s^3: about 10/2.5 + 2.5 + jerk rounding, after 0.5 s spool.
-  EXPECT_NEAR(f.events[0].reached_s, 0.5 + 6.5, 0.6);
+  // 10 m at 2.5 m/s with 1 m/s^2 and 5 m/s^3: about 10/2.5 + 2.5 + jerk rounding, after 0.5 s spool
+  // and the take-off throttle slew to the hover throttle (2 s x 0.35).
+  EXPECT_NEAR(f.events[0].reached_s, 0.5 + 0.7 + 6.5, 0.6);
   EXPECT_NEAR(f.samples.back().position.z(), 0.0, 1e-9);
   EXPECT_FALSE(f.samples.back().airborne);
+}
+
+// Before lift-off ArduCopter 4.x spools up (MOT_SPOOL_TIME) and then `_TakeOff` slews the throttle
+// up at 1 / TKOFF_SLEW_TIME per second until the vehicle rises at its hover throttle, or at
+// TKOFF_THR_MAX (at most 0.9) when that is lower. The SITL quad (MOT_THST_HOVER 0.39) rose 0.78 s
+// into the slew (docs/autopilots.md).
+TEST(ArduCopterSCurve, LiftOffFollowsTheSpoolUpAndTheTakeoffThrottleSlew) {
+  const Mission m = localMission({{30, 0, 10}});
+  auto liftoff = [&](double hover, double slew, double thr_max) {
+    AutopilotConfig ap;
+    ap.parameters["MOT_THST_HOVER"] = hover;
+    ap.parameters["TKOFF_SLEW_TIME"] = slew;
+    ap.parameters["TKOFF_THR_MAX"] = thr_max;
+    FlightSettings fs;
+    fs.sample_dt = fs.dt;  // lift-off to the 0.01 s step
+    const FlownMission f = flyMission(sequenceMission(m), ap, fs);
+    return std::find_if(f.samples.begin(), f.samples.end(), [](const FlightSample& s) { return s.airborne; })->t;
+  };
+  EXPECT_NEAR(liftoff(0.39, 2.0, 0.9), 0.5 + 0.78, 0.015);
+  EXPECT_NEAR(liftoff(0.2, 2.0, 0.9), 0.5 + 0.4, 0.015);
+  EXPECT_NEAR(liftoff(0.39, 1.0, 0.9), 0.5 + 0.39, 0.015);
+  EXPECT_NEAR(liftoff(0.39, 2.0, 0.25), 0.5 + 0.5, 0.015);
 }
 
 TEST(Px4, CornerSpeedFollowsTheAcceptanceRadiusFormula) {
