@@ -165,7 +165,9 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const NavStep& st = steps[k];
     const int ki = static_cast<int>(k);
-    if (st.speed_xy > 0.0) cruise = std::min(st.speed_xy, P.vel_max);
+    // The cruise speed in force: a DO_CHANGE_SPEED's, capped at MPC_XY_VEL_MAX, or MPC_XY_CRUISE
+    // (the mission starts at it, and -1 returns to it).
+    cruise = st.speed_xy_px4 > 0.0 ? std::min(st.speed_xy_px4, P.vel_max) : P.cruise;
     if (st.kind == NavStep::Kind::Takeoff) {
       const double acc = P.tko_ramp > 0.0 ? std::min(P.acc_up, P.tko_speed / P.tko_ramp) : P.acc_up;
       f.vertical(std::max(st.target.z(), 0.5), P.tko_speed, acc, FlightPhase::Takeoff, ki);
@@ -188,7 +190,8 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       if (rtl) {
         // A return altitude below the vehicle (before 1.13, near home) is reached in the descent below.
         if (const double ret = returnAltitude(f.p, P); ret > f.p.z()) f.vertical(ret, P.up, P.acc_up, ph, ki);
-        f.flyTo({0.0, 0.0, f.p.z()}, cruise, 0.0, 0.5, ph, ki);
+        // RTL starts at the default cruise speed (RTL/RtlDirect::on_activation resets it).
+        f.flyTo({0.0, 0.0, f.p.z()}, P.cruise, 0.0, 0.5, ph, ki);
         if (f.p.z() > P.rtl_descend) f.vertical(P.rtl_descend, P.down, P.acc_down, ph, ki);
         f.hover(P.rtl_delay, ph, ki);
       } else if (st.has_position) {

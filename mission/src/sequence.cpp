@@ -36,6 +36,9 @@ struct Sequencer {
   std::vector<std::string>* warnings;
   std::vector<NavStep> steps;
   double speed_xy = 0.0, speed_up = 0.0, speed_down = 0.0;
+  // PX4's rule (Navigator's VEHICLE_CMD_DO_CHANGE_SPEED): param2 > 0 is the cruise speed whatever
+  // the speed type in param1, anything else returns to the default.
+  double speed_xy_px4 = 0.0;
 
   void warn(const std::string& w) {
     if (warnings) warnings->push_back(w);
@@ -48,12 +51,14 @@ struct Sequencer {
 
   void changeSpeed(const MissionItem& it) {
     const double v = it.param[1];
-    if (v == -1.0 || std::isnan(v)) return;  // "no change"
+    const int type = static_cast<int>(it.param[0]);
+    if (v == -1.0) speed_xy_px4 = 0.0;  // PX4: reset_cruising_speed()
+    if (v == -1.0 || std::isnan(v)) return;  // ArduPilot: "no change"
     if (!(v > 0.0) || !std::isfinite(v)) {
       throw std::invalid_argument(it.where + ": DO_CHANGE_SPEED speed (param2) = " + std::to_string(v) +
                                   " m/s, expected > 0 (or -1 for no change)");
     }
-    const int type = static_cast<int>(it.param[0]);
+    speed_xy_px4 = v;
     if (type == 2) speed_up = v;
     else if (type == 3) speed_down = v;
     else speed_xy = v;
@@ -64,6 +69,7 @@ struct Sequencer {
     s.kind = kind;
     s.item = index;
     s.speed_xy = speed_xy;
+    s.speed_xy_px4 = speed_xy_px4;
     s.speed_up = speed_up;
     s.speed_down = speed_down;
     return s;

@@ -491,6 +491,34 @@ TEST(Px4, StraightLegAccelerationTakesVOverAPlusAOverJ) {
   EXPECT_NEAR(t99, 5.0 / 3.0 + 3.0 / 4.0, 0.5);
 }
 
+// PX4's navigator takes every DO_CHANGE_SPEED's param2 as the cruise speed, whatever the speed type
+// in param1 (even a climb speed), returns to MPC_XY_CRUISE on -1 (ArduPilot: no change), and RTL
+// starts at MPC_XY_CRUISE again (RtlDirect::on_activation resets it).
+TEST(Px4, ChangeSpeedSetsTheCruiseWhateverItsTypeMinusOneAndRtlReturnToTheDefault) {
+  const AutopilotConfig px4 = parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test");
+  // Take-off, DO_CHANGE_SPEED 8 m/s, 300 m east, DO_CHANGE_SPEED (type, speed), 300 m north, RTL.
+  auto peaks = [&](double type, double speed) {
+    Mission m = localMission({{300, 0, 10}, {300, 300, 10}}, 0.0, 8.0);
+    MissionItem change = m.items[1];  // the DO_CHANGE_SPEED localMission wrote
+    change.param[0] = type;
+    change.param[1] = speed;
+    m.items.insert(m.items.begin() + 3, change);
+    for (std::size_t i = 0; i < m.items.size(); ++i) m.items[i].seq = static_cast<int>(i) + 1;
+    const FlownMission f = flyMission(sequenceMission(m), px4);
+    double second = 0.0, rtl = 0.0;
+    for (const auto& s : f.samples) {
+      const double v = s.velocity.head<2>().norm();
+      if (s.phase == FlightPhase::Mission && s.position.y() > 50 && s.position.y() < 250) second = std::max(second, v);
+      if (s.phase == FlightPhase::Return) rtl = std::max(rtl, v);
+    }
+    return std::make_pair(second, rtl);
+  };
+  EXPECT_NEAR(peaks(1, 6).first, 6.0, 0.05);   // a ground speed
+  EXPECT_NEAR(peaks(2, 3).first, 3.0, 0.05);   // a climb speed sets the cruise too
+  EXPECT_NEAR(peaks(1, -1).first, 5.0, 0.05);  // back to MPC_XY_CRUISE
+  EXPECT_NEAR(peaks(1, 6).second, 5.0, 0.05);  // RTL at MPC_XY_CRUISE
+}
+
 // The height RTL returns at, from PX4's navigator (RTL::computeReturnAltitude, 1.13 on; the rule
 // before it for 1.10-1.12; none before the cone), with the defaults RTL_RETURN_ALT 60 m, RTL_CONE_ANG 45 deg, RTL_MIN_DIST
 // 10 m, NAV_ACC_RAD 10 m, RTL_DESCEND_ALT 30 m. The last waypoint, at 10 m, is reached within

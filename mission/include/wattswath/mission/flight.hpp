@@ -35,6 +35,9 @@ struct NavStep {
   bool has_position = true;                                ///< false: Land / LoiterTime "here"
   double hold_s = 0.0;                                     ///< [s] hold after reaching (waypoint, loiter, delay)
   double speed_xy = 0.0;                                   ///< [m/s] horizontal speed in force (0: autopilot default)
+  /// [m/s] horizontal speed in force by PX4's rule, where every DO_CHANGE_SPEED sets it whatever
+  /// its speed type and -1 returns to the default (ArduPilot: no change); 0: default
+  double speed_xy_px4 = 0.0;
   double speed_up = 0.0;                                   ///< [m/s] climb speed in force (0: default)
   double speed_down = 0.0;                                 ///< [m/s] descent speed in force (0: default)
   double accept_radius_m = 0.0;                            ///< [m] item acceptance radius (0: default)
@@ -45,7 +48,8 @@ struct NavStep {
 bool isFlownTo(const NavStep& s);
 
 /// Throws std::invalid_argument when the mission cannot be sequenced: no navigation item, a
-/// speed of 0 or below (other than -1 "no change"), a position not finite. Items after a
+/// speed of 0 or below (other than -1: "no change" for ArduPilot, "back to the default" for PX4),
+/// a position not finite. Items after a
 /// NAV_RETURN_TO_LAUNCH or NAV_LAND are never reached and are ignored (listed in `warnings`).
 /// DO_JUMP is unrolled (bounded by `max_steps`). Altitudes: relative frames are above home,
 /// absolute ones minus the home altitude, terrain frames are taken as above home (flat terrain).
