@@ -105,7 +105,14 @@ struct Flyer {
 
   // Vertical flight to height `z` [m] at up to `speed` [m/s].
   void vertical(double z, double speed, double acc, FlightPhase phase, int k) {
+    vertical(z, [&](double) { return std::make_pair(speed, acc); }, phase, k);
+  }
+  // Vertical flight to height `z` [m], the speed and acceleration limits [m/s, m/s^2] a function of
+  // the height.
+  template <class Limits>
+  void vertical(double z, Limits limits, FlightPhase phase, int k) {
     while (std::abs(z - p.z()) > P.alt_rad * 0.5 || std::abs(v.z()) > 0.1) {
+      const auto [speed, acc] = limits(p.z());
       Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
       v_des.z() = std::clamp(detail::sqrtController(z - p.z(), 1.0, acc), -speed, speed);
       step(v_des, P.acc, acc, acc, phase, k);
@@ -169,8 +176,13 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
     // (the mission starts at it, and -1 returns to it).
     cruise = st.speed_xy_px4 > 0.0 ? std::min(st.speed_xy_px4, P.vel_max) : P.cruise;
     if (st.kind == NavStep::Kind::Takeoff) {
-      const double acc = P.tko_ramp > 0.0 ? std::min(P.acc_up, P.tko_speed / P.tko_ramp) : P.acc_up;
-      f.vertical(std::max(st.target.z(), 0.5), P.tko_speed, acc, FlightPhase::Takeoff, ki);
+      // FlightTaskAuto::_updateTrajConstraints: below MPC_LAND_ALT1 the take-off climbs at
+      // MPC_TKO_SPEED with the ramp's acceleration, above it at MPC_Z_V_AUTO_UP and MPC_ACC_UP_MAX.
+      const double ramp_acc = P.tko_ramp > 0.0 ? std::min(P.acc_up, P.tko_speed / P.tko_ramp) : P.acc_up;
+      const auto limits = [&](double h) {
+        return h < P.land_alt1 ? std::make_pair(std::min(P.tko_speed, P.up), ramp_acc) : std::make_pair(P.up, P.acc_up);
+      };
+      f.vertical(std::max(st.target.z(), 0.5), limits, FlightPhase::Takeoff, ki);
     } else if (isFlownTo(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : f.p;
       const double rad = st.accept_radius_m > 0.0 ? st.accept_radius_m : P.acc_rad;

@@ -491,6 +491,24 @@ TEST(Px4, StraightLegAccelerationTakesVOverAPlusAOverJ) {
   EXPECT_NEAR(t99, 5.0 / 3.0 + 3.0 / 4.0, 0.5);
 }
 
+// PX4's take-off climbs at MPC_TKO_SPEED (1.5 m/s) below MPC_LAND_ALT1 (10 m) and at
+// MPC_Z_V_AUTO_UP (3 m/s) above it (FlightTaskAuto::_updateTrajConstraints).
+TEST(Px4, TakeoffClimbsAtTheTakeoffSpeedBelowLandAlt1AndFasterAbove) {
+  const AutopilotConfig px4 = parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test");
+  const FlownMission f = flyMission(sequenceMission(localMission({{100, 0, 40}})), px4);
+  double below = 0.0, above = 0.0;
+  for (const auto& s : f.samples) {
+    if (s.phase != FlightPhase::Takeoff) continue;
+    (s.position.z() < 9.0 ? below : above) = std::max(s.position.z() < 9.0 ? below : above, s.velocity.z());
+  }
+  EXPECT_NEAR(below, 1.5, 0.05);
+  EXPECT_NEAR(above, 3.0, 0.05);
+  // 10 m at 1.5 m/s and 30 m at 3 m/s with their ramps: about 17 s after the 1 s spool-up, where
+  // 40 m at 1.5 m/s would take 27 s.
+  EXPECT_GT(f.events[0].reached_s, 16.0);
+  EXPECT_LT(f.events[0].reached_s, 22.0);
+}
+
 // PX4's navigator takes every DO_CHANGE_SPEED's param2 as the cruise speed, whatever the speed type
 // in param1 (even a climb speed), returns to MPC_XY_CRUISE on -1 (ArduPilot: no change), and RTL
 // starts at MPC_XY_CRUISE again (RtlDirect::on_activation resets it).
