@@ -14,14 +14,11 @@
 #include "plan_limits.hpp"
 #include "plan_fleet.hpp"
 #include "plan_sorties.hpp"
-#include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/energy/model.hpp"
-#include "wattswath/energy/path_profile.hpp"
 #include "report_data.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/report/reports.hpp"
-#include "wattswath/report/svg.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -56,127 +53,6 @@ struct PlanOpts {
   std::string wind;  // --wind SPEED,FROM (empty: still air)
 };
 
-/// Polyline of one leg for the map [m] (arcs sampled every 10 deg; a turn in place is one point).
-std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
-  if (leg.kind == geo::PrimitiveKind::TurnInPlace) return {leg.start};
-  if (leg.kind == geo::PrimitiveKind::Line) return {leg.start, leg.end};
-  const double a0 = std::atan2(leg.start.y() - leg.center.y(), leg.start.x() - leg.center.x());
-  const int n = std::max(2, static_cast<int>(std::ceil(std::abs(leg.turn_angle) / (M_PI / 18.0))) + 1);
-  std::vector<geo::Point> pts;
-  for (int i = 0; i < n; ++i) {
-    const double a = a0 + leg.turn_angle * i / (n - 1);
-    pts.emplace_back(leg.center.x() + leg.radius * std::cos(a), leg.center.y() + leg.radius * std::sin(a));
-  }
-  return pts;
-}
-
-/// The facts a pilot reads first: time in min:s, energy in Wh, battery share and packs needed,
-/// area in ha, farthest distance from home.
-report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr) {
-  const auto& f = r.plan.flown;
-  report::Facts facts = {{"flight time", report::formatMinSec(f.time) + " min:s (" + fixedText(f.time, 0) + " s)"},
-                         {"energy (Wh)", fixedText(f.energy / 3600.0, 1) + " Wh (" + fixedText(f.energy, 0) + " J)"},
-                         {"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"}};
-  if (r.battery && r.battery->usable_energy_j > 0.0) {
-    const double share = 100.0 * r.battery->mission_energy_j / r.battery->usable_energy_j;
-    facts.push_back({"battery", fixedText(share, 0) + " % of one battery's usable energy; " +
-                                    std::to_string(static_cast<int>(std::ceil(share / 100.0 - 1e-9))) + " battery(ies) needed"});
-  }
-  double farthest = 0.0;
-  for (const auto& leg : f.path.legs) farthest = std::max({farthest, (leg.start - pr.home).norm(), (leg.end - pr.home).norm()});
-  facts.push_back({"farthest from home", fixedText(farthest, 0) + " m"});
-  return facts;
-}
-
-/// The map legs and the Table III-style breakdown of the coverage and transit legs, each leg
-/// re-profiled with energy::profileFromPath and the same model, into `d`.
-void addLegsAndBreakdowns(report::PlanReportData& d, const pl::FlownPath& f, const energy::Vehicle& v,
-                          const energy::EnergyModel& model) {
-  const energy::ProfileLimits lim{v.max_acceleration_mps2, v.max_acceleration_mps2};
-  d.coverage = model.emptyBreakdown();
-  d.transit = model.emptyBreakdown();
-  bool any_transit = false;
-  for (size_t i = 0; i < f.path.legs.size(); ++i) {
-    const auto& leg = f.path.legs[i];
-    report::PlanLeg pl_leg;
-    pl_leg.points = legPolyline(leg);
-    pl_leg.role = geo::roleName(leg.role);
-    pl_leg.speed = f.speeds.cruise[i];
-    pl_leg.energy = f.leg_energy[i];
-    pl_leg.time = f.leg_time[i];
-    pl_leg.length = leg.length();
-    d.legs.push_back(pl_leg);
-    geo::CoveragePath one;
-    one.legs = {leg};
-    const energy::SpeedPlan sp{{f.speeds.cruise[i]}, {f.speeds.junction[i], f.speeds.junction[i + 1]}};
-    const bool transit = leg.role == geo::LegRole::Transit || leg.role == geo::LegRole::Climb;
-    any_transit = any_transit || transit;
-    model.accumulate(energy::profileFromPath(one, sp, lim, v.max_yaw_rate_radps), transit ? d.transit : d.coverage);
-  }
-  if (!any_transit) d.transit = energy::Breakdown{};
-}
-
-/// The plan and the sweep angles tried as scored candidates, the per-cell plans and the baselines.
-void addCandidates(report::PlanReportData& d, const pl::PlanResult& r) {
-  const auto cand = [&](const pl::PlanCandidate& c, bool chosen) {
-    return report::PlanCandidate{c.pattern, c.sweep_angle_deg * M_PI / 180.0, c.flown.energy, chosen};
-  };
-  d.candidates.push_back(cand(r.plan, true));
-  for (const auto& a : r.sweep_scan)
-    if (std::isfinite(a.energy_j)) d.candidates.push_back({"boustrophedon, one angle", a.sweep_angle_deg * M_PI / 180.0, a.energy_j, false});
-  for (const auto& cp : r.plan.cell_plans) d.cells.push_back({cp.pattern, cp.sweep_angle_deg * M_PI / 180.0, cp.energy_j, cp.area_m2});
-  d.baselines.push_back({"shortest path", r.shortest_path.flown.energy, r.shortest_path.flown.length,
-                         r.shortest_path.flown.time});
-  d.baselines.push_back({"ground-station default", r.ground_station_default.flown.energy,
-                         r.ground_station_default.flown.length, r.ground_station_default.flown.time});
-  if (r.best_spiral)
-    d.baselines.push_back({"best spiral", r.best_spiral->flown.energy, r.best_spiral->flown.length,
-                           r.best_spiral->flown.time});
-}
-
-/// The battery's state of charge and voltage along the plan's legs (Hwang et al.'s battery model).
-report::BatteryTrace batteryTrace(const pl::FlownPath& f, const energy::Battery& battery) {
-  std::vector<energy::PowerStep> steps;
-  for (size_t i = 0; i < f.leg_time.size(); ++i)
-    if (f.leg_time[i] > 0.0) steps.push_back({f.leg_time[i], f.leg_energy[i] / f.leg_time[i]});
-  const auto res = energy::simulateProfile(battery, steps);
-  report::BatteryTrace bt;
-  bt.model = "Hwang et al. 2018 Eq. 9-15 (Peukert, linear voltage drop)";
-  for (const auto& smp : res.series) {
-    bt.t.push_back(smp.t);
-    bt.soc.push_back(100.0 * smp.usable_left);
-    bt.voltage.push_back(smp.voltage_v);
-  }
-  return bt;
-}
-
-/// The plan report's data from the planner's result: the facts, map legs and breakdowns
-/// (addLegsAndBreakdowns), the plan and baselines as scored candidates, and the Hwang battery trace
-/// when the vehicle has a battery.
-report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyProblem& pr, const energy::Vehicle& v,
-                                      const energy::EnergyModel& model, const std::string& area_file) {
-  report::PlanReportData d;
-  d.title = "wattswath plan: " + fs::path(area_file).filename().string();
-  const auto& f = r.plan.flown;
-  const auto num = fixedText;
-  d.facts = {{"area", area_file},
-             {"vehicle", v.name},
-             {"plan", r.plan.pattern + " at " + num(r.plan.sweep_angle_deg, 0) + " deg, " + std::to_string(r.plan.cells) +
-                          " cell(s), coverage " + num(r.plan.coverage_pct, 1) + " %"},
-             {"energy", num(f.energy, 0) + " J over " + num(f.time, 0) + " s and " + num(f.length, 0) + " m"},
-             {"lower bound", num(r.lower_bound_j, 0) + " J (plan / bound " +
-                                 num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ")"},
-             {"spacing", num(pr.spacing, 2) + " m, altitude " + num(pr.altitude, 1) + " m"}};
-  const auto pilot = pilotFacts(r, pr);
-  d.facts.insert(d.facts.begin() + 1, pilot.begin(), pilot.end());
-  d.areas = {pr.area};
-  d.no_fly = pr.no_fly;
-  d.home = pr.home;
-  addLegsAndBreakdowns(d, f, v, model);
-  addCandidates(d, r);
-  if (v.battery) d.battery = batteryTrace(f, *v.battery);
-  return d;
-}
 
 /// [m] Farthest a take-off point may lie from the area's nearest vertex: the mission's local frame
 /// is a plane tangent at the area (a point 500 km away lands 42.7 km off), and no multirotor

@@ -14,6 +14,7 @@
 #include "wattswath/geometry/frame.hpp"
 #include "wattswath/mission/mission.hpp"
 #include "wattswath/mission/predict.hpp"
+#include "wattswath/planner/coverage.hpp"
 #include "wattswath/report/reports.hpp"
 
 namespace wattswath::apps {
@@ -48,5 +49,11 @@ std::vector<report::MissionMark> planMapItems(const mission::Mission& m, const g
 /// The mission report's trajectory, items, phase totals, battery and verdict from a prediction
 /// (facts are left to the command); `reserve_pct` [%] is the reserve line.
 report::MissionReportData missionReportData(const mission::MissionPrediction& p, double reserve_pct);
+
+/// The plan report's data from the planner's result for `area_file`: the facts a pilot reads first,
+/// the map legs with the coverage and transit breakdowns, the plan and baselines as scored
+/// candidates, and the battery trace when `v` has a battery.
+report::PlanReportData planReportData(const planner::PlanResult& r, const planner::SurveyProblem& pr, const energy::Vehicle& v,
+                                      const energy::EnergyModel& model, const std::string& area_file);
 
 }  // namespace wattswath::apps
