@@ -71,11 +71,13 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.pos_z_p = checkParameter("PSC_POSZ_P", ap.get("PSC_POSZ_P"), 0.1, 10, "1/s");
   const double hover = checkParameter("MOT_THST_HOVER", ap.get("MOT_THST_HOVER"), 0.05, 0.95, "(throttle fraction)");
-  // On the ground: the spool-up, then `_TakeOff` slews the throttle up at 1 / TKOFF_SLEW_TIME per
-  // second until the vehicle rises, at the hover throttle (or TKOFF_THR_MAX, at most 0.9).
+  // On the ground: the spool-up, then (from 4.2; 4.1 rises as the spool-up ends) the auto take-off
+  // slews the throttle up at 1 / TKOFF_SLEW_TIME per second until the vehicle rises, at the hover
+  // throttle (or TKOFF_THR_MAX, at most 0.9).
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
-  p.slew_s = checkParameter("TKOFF_SLEW_TIME", ap.get("TKOFF_SLEW_TIME"), 0.25, 5, "s") *
-             std::min({hover, std::max(0.0, ap.get("TKOFF_THR_MAX")), 0.9});
+  p.slew_s = versionAtLeast(ap.version, 4, 2) ? checkParameter("TKOFF_SLEW_TIME", ap.get("TKOFF_SLEW_TIME"), 0.25, 5, "s") *
+                                                    std::min({hover, std::max(0.0, ap.get("TKOFF_THR_MAX")), 0.9})
+                                              : 0.0;
   p.land_wind_down_s = detail::throttleWindDown(hover, p.land_speed, p.pos_z_p,
       checkParameter("PSC_VELZ_P", ap.get("PSC_VELZ_P"), 0.1, 20, "1/s"), checkParameter("PSC_ACCZ_P", ap.get("PSC_ACCZ_P"), 0.01, 5, "-"),
       checkParameter("PSC_ACCZ_I", ap.get("PSC_ACCZ_I"), 0, 10, "1/s"));

@@ -440,8 +440,8 @@ TEST(ArduCopterSCurve, TakeoffClimbsAtWpnavSpeedUpAndLandingEndsOnTheGround) {
   EXPECT_FALSE(f.samples.back().airborne);
 }
 
-// Before lift-off ArduCopter 4.x spools up (MOT_SPOOL_TIME) and then `_TakeOff` slews the throttle
-// up at 1 / TKOFF_SLEW_TIME per second until the vehicle rises at its hover throttle, or at
+// Before lift-off ArduCopter 4.2 and later spools up (MOT_SPOOL_TIME) and then the auto take-off
+// slews the throttle up at 1 / TKOFF_SLEW_TIME per second until the vehicle rises at its hover throttle, or at
 // TKOFF_THR_MAX (at most 0.9) when that is lower. The SITL quad (MOT_THST_HOVER 0.39) rose 0.78 s
 // into the slew (docs/autopilots.md).
 TEST(ArduCopterSCurve, LiftOffFollowsTheSpoolUpAndTheTakeoffThrottleSlew) {
@@ -460,6 +460,12 @@ TEST(ArduCopterSCurve, LiftOffFollowsTheSpoolUpAndTheTakeoffThrottleSlew) {
   EXPECT_NEAR(liftoff(0.2, 2.0, 0.9), 0.5 + 0.4, 0.015);
   EXPECT_NEAR(liftoff(0.39, 1.0, 0.9), 0.5 + 0.39, 0.015);
   EXPECT_NEAR(liftoff(0.39, 2.0, 0.25), 0.5 + 0.5, 0.015);
+  // 4.1 lifts off as the spool-up ends (Mode::auto_takeoff_run had no slew).
+  AutopilotConfig ap41 = parseAutopilot(R"({"firmware":"ArduCopter","version":"4.1.5"})", "test");
+  FlightSettings fs;
+  fs.sample_dt = fs.dt;
+  const FlownMission f41 = flyMission(sequenceMission(m), ap41, fs);
+  EXPECT_NEAR(std::find_if(f41.samples.begin(), f41.samples.end(), [](const FlightSample& s) { return s.airborne; })->t, 0.5, 0.015);
 }
 
 TEST(Px4, CornerSpeedFollowsTheAcceptanceRadiusFormula) {
