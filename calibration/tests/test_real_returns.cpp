@@ -1,4 +1,4 @@
-// A return to launch flown by a real ArduCopter (../shared/data/autopilot-logs/arducopter-3.5_quad_rtl.bin,
+// Returns to launch flown by a real ArduCopter (../shared/data/autopilot-logs/arducopter-3.5_quad_rtl.bin,
 // a 3S quad near Utrecht; the log starts as RTL begins and ends on the ground) against the leash
 // model flown with the log's own parameters. The figures are in docs/validation.md 5.1.
 #include <gtest/gtest.h>
@@ -98,4 +98,62 @@ TEST(RealReturns, ArduCopter35ReturnFrom61MetresOutIsPredictedWithin3Percent) {
               predicted, logged, 100.0 * (predicted / logged - 1.0), arrive_pred, arrive_log);
   EXPECT_NEAR(predicted / logged, 1.0, 0.03);
   EXPECT_NEAR(arrive_pred, arrive_log, 1.5);
+}
+
+// A return flown by a real PX4 (../shared/data/autopilot-logs/px4-1.9_quad_mission_rtl.ulg: v1.9.0,
+// the log starts in a mission). RTL begins 10.0 m above home and 12.9 m from it, with the vehicle
+// already heading home at about 4 m/s; it returns at its height (RTL_RETURN_ALT 10 m, no cone in 1.9)
+// and lands. The PX4 model, flown with the log's parameters from a hover at the same point, switches
+// to the landing within NAV_ACC_RAD (4 m here) of home and closes the rest while descending, as the
+// navigator does (with the 0.5 m acceptance it had before 2026-11-27 it predicted 25.1 s, +21 %).
+// Version 1.9 predates the trajectory generator the model follows (1.12+), so this checks the
+// navigator's return and the landing. What is left (-8 %) is the descent: the log comes down its
+// last 10 m at 0.67 m/s on average, about MPC_LAND_SPEED (0.7 m/s), where the land law of 1.12 and
+// later that the model flies allows up to 0.9 m/s between MPC_LAND_ALT2 (6 m) and MPC_LAND_ALT1.
+TEST(RealReturns, Px419ReturnAndLandingFrom13MetresOutIsPredictedWithin10Percent) {
+  const std::string path = realLog("px4-1.9_quad_mission_rtl.ulg");
+  const auto log = wattswath::logs::readFlightLog(path);
+  ASSERT_GE(log.samples.size(), 20u);
+  double rtl_start = NAN, landed = NAN;
+  for (const auto& e : log.events) {
+    if (e.kind == "mode" && e.text.find("RTL") != std::string::npos && std::isnan(rtl_start)) rtl_start = e.t;
+    if (e.kind == "landed" && e.text == "landed" && std::isfinite(rtl_start) && std::isnan(landed)) landed = e.t;
+  }
+  ASSERT_TRUE(std::isfinite(rtl_start) && std::isfinite(landed)) << "AUTO_RTL and landed events expected";
+  // The vehicle's position at the switch to RTL (interpolated between samples) and home, where it landed.
+  Eigen::Vector3d start = log.samples.front().position;
+  for (std::size_t i = 1; i < log.samples.size(); ++i) {
+    const auto &a = log.samples[i - 1], &b = log.samples[i];
+    if (a.t <= rtl_start && b.t >= rtl_start) {
+      start = a.position + (b.position - a.position) * ((rtl_start - a.t) / std::max(b.t - a.t, 1e-9));
+      break;
+    }
+  }
+  const Eigen::Vector3d home = log.samples.back().position;
+  const Eigen::Vector3d rel = start - home;
+  EXPECT_NEAR(rel.head<2>().norm(), 12.9, 0.3);
+  EXPECT_NEAR(rel.z(), 10.0, 0.3);
+
+  const auto params = wattswath::logs::readAutopilotParameters(path);
+  ms::AutopilotConfig ap;
+  ap.firmware = "PX4";
+  ap.version = params.firmware.version;
+  ap.family = ms::familyOf(ap.firmware, ap.version);
+  ap.parameters = wattswath::logs::flightBehaviourParameters(params);
+  EXPECT_EQ(ap.get("NAV_ACC_RAD"), 4.0);
+
+  std::vector<ms::NavStep> steps(3);
+  steps[0].kind = ms::NavStep::Kind::Takeoff;
+  steps[0].target = {0.0, 0.0, rel.z()};
+  steps[1].kind = ms::NavStep::Kind::Waypoint;
+  steps[1].target = rel;
+  steps[1].hold_s = 1.0;
+  steps[1].accept_radius_m = 0.5;
+  steps[2].kind = ms::NavStep::Kind::ReturnToLaunch;
+  steps[2].has_position = false;
+  const ms::FlownMission f = ms::flyMission(steps, ap, ms::FlightSettings{});
+  const double predicted = f.samples.back().t - f.events[1].completed_s, logged = landed - rtl_start;
+  std::printf("PX4 1.9 RTL: start to landed %.1f s predicted, %.1f s logged (%+.1f %%)\n", predicted, logged,
+              100.0 * (predicted / logged - 1.0));
+  EXPECT_NEAR(predicted / logged, 1.0, 0.10);
 }

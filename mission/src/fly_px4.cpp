@@ -82,19 +82,50 @@ struct Flyer {
     rec.tick(p, v, phase, k);
   }
 
+  // [m/s] The horizontal desired velocity towards `xy` at up to `cruise`, arriving at `v_exit`.
+  Eigen::Vector2d towards(const Eigen::Vector2d& xy, double cruise, double v_exit) const {
+    const Eigen::Vector2d d = xy - p.head<2>();
+    const double dxy = d.norm();
+    if (dxy <= 1e-6) return Eigen::Vector2d::Zero();
+    return d / dxy * std::min(cruise, brakingSpeed(P.jerk, P.acc, dxy, v_exit));
+  }
+
   // Flies to `to` at `cruise`, leaving it at `v_exit` [m/s]; returns when it is reached.
   void flyTo(const Eigen::Vector3d& to, double cruise, double v_exit, double acc_rad, FlightPhase phase, int k) {
     while (true) {
       const Eigen::Vector3d d = to - p;
-      const double dxy = d.head<2>().norm();
-      if (dxy <= acc_rad && std::abs(d.z()) <= P.alt_rad) return;
+      if (d.head<2>().norm() <= acc_rad && std::abs(d.z()) <= P.alt_rad) return;
       Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
-      if (dxy > 1e-6) {
-        const double speed = std::min(cruise, brakingSpeed(P.jerk, P.acc, dxy, v_exit));
-        v_des.head<2>() = d.head<2>() / dxy * speed;
-      }
+      v_des.head<2>() = towards(to.head<2>(), cruise, v_exit);
       v_des.z() = std::clamp(detail::sqrtController(d.z(), 1.0, P.acc_down), -P.down, P.up);
       step(v_des, P.acc, P.acc_up, P.acc_down, phase, k);
+    }
+  }
+
+  // Holds position over `xy` for `seconds` [s] (moving there first if it is not yet).
+  void holdOver(const Eigen::Vector2d& xy, double cruise, double seconds, FlightPhase phase, int k) {
+    const long n = std::lround(std::max(0.0, seconds) / rec.dt());
+    for (long i = 0; i < n; ++i) {
+      Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
+      v_des.head<2>() = towards(xy, cruise, 0.0);
+      step(v_des, P.acc, P.acc_up, P.acc_down, phase, k);
+    }
+  }
+
+  // Lands on the land position `xy` (FlightTaskAuto's land setpoints: the position held, or reached,
+  // horizontally while the descent follows `law(h)` [m/s] of the height h [m]); returns on touch-down.
+  template <class Law>
+  void land(const Eigen::Vector2d& xy, double cruise, Law law, int k) {
+    while (p.z() > 0.0) {
+      Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
+      v_des.head<2>() = towards(xy, cruise, 0.0);
+      v_des.z() = -law(p.z());
+      const double dt = rec.dt();
+      for (int i = 0; i < 2; ++i) trackAxis(v_des[i], P.acc, P.jerk, dt, v[i], a[i]);
+      trackAxis(v_des.z(), P.acc_down, P.jerk, dt, v[2], a[2]);
+      p += v * dt;
+      if (p.z() <= 0.0) p.z() = 0.0, v.setZero(), a.setZero();
+      rec.tick(p, v, FlightPhase::Landing, k);
     }
   }
 
@@ -199,15 +230,22 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
     } else {
       const bool rtl = st.kind == NavStep::Kind::ReturnToLaunch;
       const FlightPhase ph = rtl ? FlightPhase::Return : FlightPhase::Landing;
+      // The navigator's items of RTL and of a mission LAND's approach are reached within NAV_ACC_RAD
+      // (MissionBlock::setMoveToPositionMissionItem); the landing then holds the land position
+      // horizontally, so the vehicle closes the rest of the way while it descends.
+      Eigen::Vector2d land_xy = f.p.head<2>();
+      double land_cruise = cruise;
       if (rtl) {
+        land_xy.setZero();
+        land_cruise = P.cruise;  // RTL starts at the default cruise speed (RTL/RtlDirect::on_activation)
         // A return altitude below the vehicle (before 1.13, near home) is reached in the descent below.
         if (const double ret = returnAltitude(f.p, P); ret > f.p.z()) f.vertical(ret, P.up, P.acc_up, ph, ki);
-        // RTL starts at the default cruise speed (RTL/RtlDirect::on_activation resets it).
-        f.flyTo({0.0, 0.0, f.p.z()}, P.cruise, 0.0, 0.5, ph, ki);
-        if (f.p.z() > P.rtl_descend) f.vertical(P.rtl_descend, P.down, P.acc_down, ph, ki);
-        f.hover(P.rtl_delay, ph, ki);
+        f.flyTo({0.0, 0.0, f.p.z()}, P.cruise, 0.0, P.acc_rad, ph, ki);
+        if (f.p.z() > P.rtl_descend) f.flyTo({0.0, 0.0, P.rtl_descend}, P.cruise, 0.0, P.acc_rad, ph, ki);
+        f.holdOver(land_xy, P.cruise, P.rtl_delay, ph, ki);
       } else if (st.has_position) {
-        f.flyTo({st.target.x(), st.target.y(), f.p.z()}, cruise, 0.0, 0.5, ph, ki);
+        land_xy = st.target.head<2>();
+        f.flyTo({st.target.x(), st.target.y(), f.p.z()}, cruise, 0.0, P.acc_rad, ph, ki);
       }
       rec.reached(ki);
       auto law = [&](double h) {
@@ -215,7 +253,8 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
         if (h <= P.land_alt2) return P.land_speed;
         return P.land_speed + (P.vel_max_dn - P.land_speed) * (h - P.land_alt2) / (P.land_alt1 - P.land_alt2);
       };
-      detail::descendAndLand(rec, law, P.acc_down, ki, s.landed_detect_s);
+      f.land(land_xy, land_cruise, law, ki);
+      rec.hold(s.landed_detect_s, FlightPhase::Landing, ki, false);
     }
     if (st.kind == NavStep::Kind::Takeoff) rec.reached(ki);
     rec.completed(ki);
