@@ -36,6 +36,17 @@ double firstWithin(std::size_t n, Pos p, const Eigen::Vector2d& home, double rad
   return NAN;
 }
 
+// [s] The first switch to an RTL mode in `log` and the first event of `end_kind` with text
+// `end_text` after it (NaN when missing).
+std::pair<double, double> rtlAndEnd(const wattswath::logs::FlightLog& log, const std::string& end_kind, const std::string& end_text) {
+  double start = NAN, end = NAN;
+  for (const auto& e : log.events) {
+    if (e.kind == "mode" && e.text.find("RTL") != std::string::npos && std::isnan(start)) start = e.t;
+    if (e.kind == end_kind && e.text == end_text && std::isfinite(start) && std::isnan(end)) end = e.t;
+  }
+  return {start, end};
+}
+
 }  // namespace
 
 // The log begins as RTL is entered (MODE RTL, the vehicle hovering 7.2 m above home and 61 m from
@@ -52,11 +63,7 @@ TEST(RealReturns, ArduCopter35ReturnFrom61MetresOutIsPredictedWithin3Percent) {
   const std::string path = realLog("arducopter-3.5_quad_rtl.bin");
   const auto log = wattswath::logs::readFlightLog(path);
   ASSERT_GE(log.samples.size(), 100u);
-  double rtl_start = NAN, land_complete = NAN;
-  for (const auto& e : log.events) {
-    if (e.kind == "mode" && e.text.find("RTL") != std::string::npos && std::isnan(rtl_start)) rtl_start = e.t;
-    if (e.kind == "event" && e.text == "EV 18 LAND_COMPLETE" && std::isnan(land_complete)) land_complete = e.t;
-  }
+  const auto [rtl_start, land_complete] = rtlAndEnd(log, "event", "EV 18 LAND_COMPLETE");
   ASSERT_TRUE(std::isfinite(rtl_start) && std::isfinite(land_complete)) << "RTL mode and LAND_COMPLETE events expected";
 
   const df::Log bin = readDataflash(path);
@@ -114,11 +121,7 @@ TEST(RealReturns, Px419ReturnAndLandingFrom13MetresOutIsPredictedWithin10Percent
   const std::string path = realLog("px4-1.9_quad_mission_rtl.ulg");
   const auto log = wattswath::logs::readFlightLog(path);
   ASSERT_GE(log.samples.size(), 20u);
-  double rtl_start = NAN, landed = NAN;
-  for (const auto& e : log.events) {
-    if (e.kind == "mode" && e.text.find("RTL") != std::string::npos && std::isnan(rtl_start)) rtl_start = e.t;
-    if (e.kind == "landed" && e.text == "landed" && std::isfinite(rtl_start) && std::isnan(landed)) landed = e.t;
-  }
+  const auto [rtl_start, landed] = rtlAndEnd(log, "landed", "landed");
   ASSERT_TRUE(std::isfinite(rtl_start) && std::isfinite(landed)) << "AUTO_RTL and landed events expected";
   // The vehicle's position at the switch to RTL (interpolated between samples) and home, where it landed.
   Eigen::Vector3d start = log.samples.front().position;
