@@ -63,7 +63,8 @@ TEST(RealReturns, ArduCopter35ReturnFrom61MetresOutIsPredictedWithin3Percent) {
   const std::string path = realLog("arducopter-3.5_quad_rtl.bin");
   const auto log = wattswath::logs::readFlightLog(path);
   ASSERT_GE(log.samples.size(), 100u);
-  const auto [rtl_start, land_complete] = rtlAndEnd(log, "event", "EV 18 LAND_COMPLETE");
+  const auto events = rtlAndEnd(log, "event", "EV 18 LAND_COMPLETE");
+  const double rtl_start = events.first, land_complete = events.second;
   ASSERT_TRUE(std::isfinite(rtl_start) && std::isfinite(land_complete)) << "RTL mode and LAND_COMPLETE events expected";
 
   const df::Log bin = readDataflash(path);
@@ -121,7 +122,8 @@ TEST(RealReturns, Px419ReturnAndLandingFrom13MetresOutIsPredictedWithin10Percent
   const std::string path = realLog("px4-1.9_quad_mission_rtl.ulg");
   const auto log = wattswath::logs::readFlightLog(path);
   ASSERT_GE(log.samples.size(), 20u);
-  const auto [rtl_start, landed] = rtlAndEnd(log, "landed", "landed");
+  const auto events = rtlAndEnd(log, "landed", "landed");
+  const double rtl_start = events.first, landed = events.second;
   ASSERT_TRUE(std::isfinite(rtl_start) && std::isfinite(landed)) << "AUTO_RTL and landed events expected";
   // The vehicle's position at the switch to RTL (interpolated between samples) and home, where it landed.
   Eigen::Vector3d start = log.samples.front().position;
