@@ -87,7 +87,7 @@ std::vector<Item> items(const PlannedMission& m) {
     }
     Item wp;
     wp.command = kCmdWaypoint;
-    wp.params = {w.hold_s, 0, 0, NAN /* yaw unchanged */, w.position.lat_deg, w.position.lon_deg, w.altitude_m};
+    wp.params = {w.hold_s, w.acceptance_radius_m, 0, NAN /* yaw unchanged */, w.position.lat_deg, w.position.lon_deg, w.altitude_m};
     out.push_back(wp);
     if (w.camera_trigger_m) {
       // As QGC's survey (TransectStyleComplexItem::_appendCameraTriggerDistance): param3 1 takes one
@@ -160,6 +160,7 @@ void validate(const PlannedMission& m) {
       throw std::invalid_argument("mission: " + what + " altitude_m = " + std::to_string(w.altitude_m) +
                                   " must be above home (> 0)");
     checkNonNegative(w.hold_s, what + " hold_s");
+    checkNonNegative(w.acceptance_radius_m, what + " acceptance_radius_m");
     if (w.camera_trigger_m) checkNonNegative(*w.camera_trigger_m, what + " camera_trigger_m");
   }
   for (size_t i = 0; i < m.no_fly.size(); ++i) checkPolygon(m.no_fly[i], "no-fly polygon " + std::to_string(i));

@@ -209,8 +209,9 @@ PlanMission missionFromPlan(const FlownPath& flown, const SurveyProblem& problem
   m.firmware = options.firmware;
   auto wps = missionWaypoints(flown, options);
   double fastest = 0.0;
+  const double acceptance = options.firmware == mission::Firmware::PX4 ? kPx4AcceptanceRadius : 0.0;
   for (const auto& w : wps.waypoints) {
-    m.waypoints.push_back({frame.toGeodetic(w.position), problem.altitude, w.speed_mps, w.hold_s, w.camera_trigger_m});
+    m.waypoints.push_back({frame.toGeodetic(w.position), problem.altitude, w.speed_mps, w.hold_s, w.camera_trigger_m, acceptance});
     fastest = std::max(fastest, std::max(w.planned_speed_mps, kMinCommandedSpeed));
   }
   m.cruise_speed_mps = fastest > 0.0 ? fastest : kDefaultCruise;

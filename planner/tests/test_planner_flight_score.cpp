@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "wattswath/energy/model.hpp"
@@ -144,4 +146,38 @@ TEST(FlightScore, ForArduCopter41AndLaterSpeedCommandsAWaypointEarlySpareTheSwee
   EXPECT_LT(early->prediction.total.time_s, 0.96 * late->prediction.total.time_s);
   EXPECT_LT(early->prediction.total.energy_j, 0.97 * late->prediction.total.energy_j);
   EXPECT_EQ(scores[cheapestFlight(scores)].speeds_a_waypoint_early, true);
+}
+
+// PX4 switches to the next waypoint within the item's acceptance radius, NAV_ACC_RAD (10 m) when the
+// item gives none, so a survey written without one would end its sweeps up to 9 m short of the edge
+// (median 6 m on this area). Every waypoint of a PX4 mission carries kPx4AcceptanceRadius in
+// param2, and the PX4-flown plan passes within that of each; ArduCopter's missions leave it 0.
+TEST(FlightScore, APx4MissionNamesItsAcceptanceRadiusAndItsFlightPassesEveryWaypoint) {
+  const auto p = planned("data/areas/iris_area.geojson", 15.0, "data/vehicles/iris.json");
+  const PlanResult& r = p->r;
+  ASSERT_TRUE(r.plan.valid);
+  FlightScoring s = p->s;
+  setAutopilot(s, mission::parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test"));
+  const auto scores = scoreByFlight({{"plan", &r.plan}}, s);
+  ASSERT_FALSE(scores.empty());
+  const FlightScore& f = scores.front();
+  const geometry::LocalFrame frame(f.mission.mission.home);  // the prediction's frame: home at the origin
+  for (const auto& w : f.mission.mission.waypoints) {
+    EXPECT_EQ(w.acceptance_radius_m, kPx4AcceptanceRadius);
+    const geometry::Point at = frame.toLocal(w.position.lat_deg, w.position.lon_deg);
+    double closest = 1e9;
+    for (const auto& smp : f.prediction.flight.samples) closest = std::min(closest, (smp.position.head<2>() - at).norm());
+    EXPECT_LT(closest, kPx4AcceptanceRadius) << w.position.lat_deg << ", " << w.position.lon_deg;
+  }
+  // ... and the .plan carries it where QGroundControl and PX4 read it: NAV_WAYPOINT param2.
+  int waypoints = 0;
+  const nlohmann::json plan = nlohmann::json::parse(mission::toQgcPlan(f.mission.mission));
+  for (const auto& item : plan["mission"]["items"])
+    if (item["command"] == 16) {
+      EXPECT_EQ(item["params"][1].get<double>(), kPx4AcceptanceRadius);
+      ++waypoints;
+    }
+  EXPECT_EQ(waypoints, static_cast<int>(f.mission.mission.waypoints.size()));
+  setAutopilot(s, mission::parseAutopilot(R"({"firmware":"ArduCopter","version":"4.5"})", "test"));
+  for (const auto& w : scoreByFlight({{"plan", &r.plan}}, s).front().mission.mission.waypoints) EXPECT_EQ(w.acceptance_radius_m, 0.0);
 }

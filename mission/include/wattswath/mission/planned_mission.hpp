@@ -24,6 +24,8 @@ struct PlannedWaypoint {
   double hold_s = 0.0;      ///< [s] NAV_WAYPOINT param1: stop here and hold this long (0: fly through), >= 0
   std::optional<double> camera_trigger_m;  ///< [m] DO_SET_CAM_TRIGG_DIST written after this waypoint: photos
                                            ///< every this far from here on (0: photos stop), none when empty
+  double acceptance_radius_m = 0.0;  ///< [m] NAV_WAYPOINT param2: how close PX4 must come (0: its NAV_ACC_RAD;
+                                     ///< ArduCopter ignores it), >= 0
 };
 
 /// Autopilot family written into the `.plan` (QGroundControl's MAV_AUTOPILOT numbers).

@@ -42,6 +42,14 @@ inline constexpr double kMinCommandedSpeed = 1.0;
 /// waypoint), and keeps the hold in whole seconds, so 1 s is the least that makes it stop there.
 inline constexpr double kStopHoldSeconds = 1.0;
 
+/// [m] Acceptance radius written into every waypoint of a PX4 mission (NAV_WAYPOINT param2). PX4
+/// switches to the next waypoint as soon as the vehicle is within it (NAV_ACC_RAD, 10 m by default,
+/// when the item gives none) and turns towards the next from there, so with its default a survey's
+/// sweep lines would end up to 9 m short of the area's edge (measured on the bundled example:
+/// median 6 m). 2 m cuts corners as deep as ArduCopter's WPNAV_RADIUS default, which the planner's
+/// margins are built for; ArduCopter ignores the field.
+inline constexpr double kPx4AcceptanceRadius = 2.0;
+
 /// [m/s] A leg whose planned end speed is below this ends in a stop (a sharp corner, a turn in place).
 inline constexpr double kStopSpeed = 1e-6;
 
