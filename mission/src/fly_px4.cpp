@@ -102,12 +102,14 @@ struct Flyer {
     }
   }
 
-  // Holds position over `xy` for `seconds` [s] (moving there first if it is not yet).
-  void holdOver(const Eigen::Vector2d& xy, double cruise, double seconds, FlightPhase phase, int k) {
+  // Holds position at `at` for `seconds` [s], closing on it first if it is not there yet: the
+  // setpoint stays on an item that is reached within its acceptance radius while its time runs.
+  void holdAt(const Eigen::Vector3d& at, double cruise, double seconds, FlightPhase phase, int k) {
     const long n = std::lround(std::max(0.0, seconds) / rec.dt());
     for (long i = 0; i < n; ++i) {
       Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
-      v_des.head<2>() = towards(xy, cruise, 0.0);
+      v_des.head<2>() = towards(at.head<2>(), cruise, 0.0);
+      v_des.z() = std::clamp(detail::sqrtController(at.z() - p.z(), 1.0, P.acc_down), -P.down, P.up);
       step(v_des, P.acc, P.acc_up, P.acc_down, phase, k);
     }
   }
@@ -223,7 +225,7 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       if (!stop) v_exit = std::min(cruise, cornerSpeed(f.p, to, steps[k + 1].target, P, rad));
       f.flyTo(to, cruise, v_exit, rad, FlightPhase::Mission, ki);
       rec.reached(ki);
-      if (st.hold_s > 0.0) f.hover(st.hold_s, FlightPhase::Mission, ki);
+      if (st.hold_s > 0.0) f.holdAt(to, cruise, st.hold_s, FlightPhase::Mission, ki);
     } else if (st.kind == NavStep::Kind::Delay) {
       rec.reached(ki);
       f.hover(st.hold_s, FlightPhase::Mission, ki);
@@ -242,7 +244,7 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
         if (const double ret = returnAltitude(f.p, P); ret > f.p.z()) f.vertical(ret, P.up, P.acc_up, ph, ki);
         f.flyTo({0.0, 0.0, f.p.z()}, P.cruise, 0.0, P.acc_rad, ph, ki);
         if (f.p.z() > P.rtl_descend) f.flyTo({0.0, 0.0, P.rtl_descend}, P.cruise, 0.0, P.acc_rad, ph, ki);
-        f.holdOver(land_xy, P.cruise, P.rtl_delay, ph, ki);
+        f.holdAt({0.0, 0.0, f.p.z()}, P.cruise, P.rtl_delay, ph, ki);
       } else if (st.has_position) {
         land_xy = st.target.head<2>();
         f.flyTo({st.target.x(), st.target.y(), f.p.z()}, cruise, 0.0, P.acc_rad, ph, ki);
