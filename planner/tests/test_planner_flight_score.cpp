@@ -179,5 +179,6 @@ TEST(FlightScore, APx4MissionNamesItsAcceptanceRadiusAndItsFlightPassesEveryWayp
     }
   EXPECT_EQ(waypoints, static_cast<int>(f.mission.mission.waypoints.size()));
   setAutopilot(s, mission::parseAutopilot(R"({"firmware":"ArduCopter","version":"4.5"})", "test"));
-  for (const auto& w : scoreByFlight({{"plan", &r.plan}}, s).front().mission.mission.waypoints) EXPECT_EQ(w.acceptance_radius_m, 0.0);
+  const auto ardupilot = scoreByFlight({{"plan", &r.plan}}, s);  // kept: the loop reads into it
+  for (const auto& w : ardupilot.front().mission.mission.waypoints) EXPECT_EQ(w.acceptance_radius_m, 0.0);
 }
