@@ -47,6 +47,21 @@ std::pair<double, double> rtlAndEnd(const wattswath::logs::FlightLog& log, const
   return {start, end};
 }
 
+// The steps of a vehicle hovering at `at` [m from home] (a take-off to its height, then a waypoint
+// there with a 1 s hold, reached within `accept_radius_m`, 0: the autopilot's default), then RTL.
+std::vector<ms::NavStep> hoverThenReturn(const Eigen::Vector3d& at, double accept_radius_m = 0.0) {
+  std::vector<ms::NavStep> steps(3);
+  steps[0].kind = ms::NavStep::Kind::Takeoff;
+  steps[0].target = {0.0, 0.0, at.z()};
+  steps[1].kind = ms::NavStep::Kind::Waypoint;
+  steps[1].target = at;
+  steps[1].hold_s = 1.0;
+  steps[1].accept_radius_m = accept_radius_m;
+  steps[2].kind = ms::NavStep::Kind::ReturnToLaunch;
+  steps[2].has_position = false;
+  return steps;
+}
+
 }  // namespace
 
 // The log begins as RTL is entered (MODE RTL, the vehicle hovering 7.2 m above home and 61 m from
@@ -83,15 +98,8 @@ TEST(RealReturns, ArduCopter35ReturnFrom61MetresOutIsPredictedWithin3Percent) {
   ASSERT_EQ(ap.family, ms::AutopilotFamily::ArduCopterLeash);
   ap.parameters = wattswath::logs::flightBehaviourParameters(params);
 
-  std::vector<ms::NavStep> steps(3);
-  steps[0].kind = ms::NavStep::Kind::Takeoff;
-  steps[0].target = {0.0, 0.0, start_above_home};
-  steps[1].kind = ms::NavStep::Kind::Waypoint;
-  steps[1].target = {start.x() - home.x(), start.y() - home.y(), start_above_home};
-  steps[1].hold_s = 1.0;
-  steps[2].kind = ms::NavStep::Kind::ReturnToLaunch;
-  steps[2].has_position = false;
-  const ms::FlownMission f = ms::flyMission(steps, ap, ms::FlightSettings{});
+  const ms::FlownMission f =
+      ms::flyMission(hoverThenReturn({start.x() - home.x(), start.y() - home.y(), start_above_home}), ap, ms::FlightSettings{});
 
   const double t0 = f.events[1].completed_s;
   const double predicted = f.samples.back().t - t0, logged = land_complete - rtl_start;
@@ -147,16 +155,7 @@ TEST(RealReturns, Px419ReturnAndLandingFrom13MetresOutIsPredictedWithin10Percent
   ap.parameters = wattswath::logs::flightBehaviourParameters(params);
   EXPECT_EQ(ap.get("NAV_ACC_RAD"), 4.0);
 
-  std::vector<ms::NavStep> steps(3);
-  steps[0].kind = ms::NavStep::Kind::Takeoff;
-  steps[0].target = {0.0, 0.0, rel.z()};
-  steps[1].kind = ms::NavStep::Kind::Waypoint;
-  steps[1].target = rel;
-  steps[1].hold_s = 1.0;
-  steps[1].accept_radius_m = 0.5;
-  steps[2].kind = ms::NavStep::Kind::ReturnToLaunch;
-  steps[2].has_position = false;
-  const ms::FlownMission f = ms::flyMission(steps, ap, ms::FlightSettings{});
+  const ms::FlownMission f = ms::flyMission(hoverThenReturn(rel, 0.5), ap, ms::FlightSettings{});
   const double predicted = f.samples.back().t - f.events[1].completed_s, logged = landed - rtl_start;
   std::printf("PX4 1.9 RTL: start to landed %.1f s predicted, %.1f s logged (%+.1f %%)\n", predicted, logged,
               100.0 * (predicted / logged - 1.0));

@@ -74,11 +74,16 @@ struct Flyer {
   const Params& P;
   Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
 
-  void step(const Eigen::Vector3d& v_des, double acc_xy, double acc_z_up, double acc_z_dn, FlightPhase phase, int k) {
+  // One time step of the jerk-limited tracking towards `v_des` [m/s], not yet recorded.
+  void advance(const Eigen::Vector3d& v_des, double acc_xy, double acc_z_up, double acc_z_dn) {
     const double dt = rec.dt();
     for (int i = 0; i < 2; ++i) trackAxis(v_des[i], acc_xy, P.jerk, dt, v[i], a[i]);
     trackAxis(v_des.z(), v_des.z() > v.z() ? acc_z_up : acc_z_dn, P.jerk, dt, v[2], a[2]);
     p += v * dt;
+  }
+
+  void step(const Eigen::Vector3d& v_des, double acc_xy, double acc_z_up, double acc_z_dn, FlightPhase phase, int k) {
+    advance(v_des, acc_xy, acc_z_up, acc_z_dn);
     rec.tick(p, v, phase, k);
   }
 
@@ -122,10 +127,7 @@ struct Flyer {
       Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
       v_des.head<2>() = towards(xy, cruise, 0.0);
       v_des.z() = -law(p.z());
-      const double dt = rec.dt();
-      for (int i = 0; i < 2; ++i) trackAxis(v_des[i], P.acc, P.jerk, dt, v[i], a[i]);
-      trackAxis(v_des.z(), P.acc_down, P.jerk, dt, v[2], a[2]);
-      p += v * dt;
+      advance(v_des, P.acc, P.acc_down, P.acc_down);
       if (p.z() <= 0.0) p.z() = 0.0, v.setZero(), a.setZero();
       rec.tick(p, v, FlightPhase::Landing, k);
     }

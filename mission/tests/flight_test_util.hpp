@@ -1,6 +1,7 @@
 #pragma once
 // What the flight-behaviour tests share: missions written in local metres and speed look-ups.
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,12 @@ inline Mission localMission(const std::vector<Eigen::Vector3d>& wps, double hold
   for (const auto& w : wps) add(command, w, hold_s);
   if (rtl) add(20, {0, 0, 0}, 0, 0, 2);
   return m;
+}
+
+/// [s] When `f` lifts off: its first airborne sample (after the spool-up and any throttle slew).
+inline double liftoffTime(const FlownMission& f) {
+  const auto up = std::find_if(f.samples.begin(), f.samples.end(), [](const FlightSample& s) { return s.airborne; });
+  return up == f.samples.end() ? NAN : up->t;
 }
 
 /// [m/s] The lowest speed of `f` between `t0` and `t1` [s].

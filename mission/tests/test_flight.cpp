@@ -12,6 +12,7 @@
 #include "wattswath/mission/scurve.hpp"
 
 using namespace wattswath::mission;
+using wattswath::mission::testing::liftoffTime;
 using wattswath::mission::testing::localMission;
 using wattswath::mission::testing::maxSpeedBetween;
 using wattswath::mission::testing::minSpeedBetween;
@@ -312,8 +313,7 @@ TEST(ArduCopterSCurve, LandingWaitsForTheThrottleToWindDownThenTheDetector) {
     FlightSettings fs;
     fs.sample_dt = fs.dt;
     const FlownMission f = flyMission(sequenceMission(m), ap, fs);
-    const auto up = std::find_if(f.samples.begin(), f.samples.end(), [](const FlightSample& s) { return s.airborne; });
-    return f.samples.back().t - up->t;
+    return f.samples.back().t - liftoffTime(f);
   };
   EXPECT_NEAR(flightTime(0.39) - flightTime(0.2), 0.590 - 0.188, 0.03);
   // A hover throttle the first step already removes (0.1 < 0.125): no wait beyond the detector.
@@ -454,7 +454,7 @@ TEST(ArduCopterSCurve, LiftOffFollowsTheSpoolUpAndTheTakeoffThrottleSlew) {
     FlightSettings fs;
     fs.sample_dt = fs.dt;  // lift-off to the 0.01 s step
     const FlownMission f = flyMission(sequenceMission(m), ap, fs);
-    return std::find_if(f.samples.begin(), f.samples.end(), [](const FlightSample& s) { return s.airborne; })->t;
+    return liftoffTime(f);
   };
   EXPECT_NEAR(liftoff(0.39, 2.0, 0.9), 0.5 + 0.78, 0.015);
   EXPECT_NEAR(liftoff(0.2, 2.0, 0.9), 0.5 + 0.4, 0.015);
@@ -465,7 +465,7 @@ TEST(ArduCopterSCurve, LiftOffFollowsTheSpoolUpAndTheTakeoffThrottleSlew) {
   FlightSettings fs;
   fs.sample_dt = fs.dt;
   const FlownMission f41 = flyMission(sequenceMission(m), ap41, fs);
-  EXPECT_NEAR(std::find_if(f41.samples.begin(), f41.samples.end(), [](const FlightSample& s) { return s.airborne; })->t, 0.5, 0.015);
+  EXPECT_NEAR(liftoffTime(f41), 0.5, 0.015);
 }
 
 TEST(Px4, CornerSpeedFollowsTheAcceptanceRadiusFormula) {
