@@ -9,11 +9,12 @@ namespace ms = wattswath::mission;
 
 namespace {
 
-/// True for the steps drawn as numbered points on the map (they fly to a position of their own).
+/// True for the steps drawn as numbered points on the map (they fly to a position of their own; a
+/// LOITER_TURNS at its centre).
 bool drawnOnMap(const ms::NavStep& s) {
   using K = ms::NavStep::Kind;
-  return s.has_position &&
-         (s.kind == K::Waypoint || s.kind == K::SplineWaypoint || s.kind == K::LoiterTime || s.kind == K::Land);
+  return s.has_position && (s.kind == K::Waypoint || s.kind == K::SplineWaypoint || s.kind == K::LoiterTime ||
+                            s.kind == K::LoiterTurns || s.kind == K::Land);
 }
 
 report::MissionPhaseTotals phaseTotals(const std::string& name, const ms::Totals& t) {

@@ -23,6 +23,7 @@ const std::map<std::string, double> kArduCopter4 = {
     {"PSC_VELXY_D", 0.25},       {"PSC_VELXY_FLTE", 5.0}, {"PSC_VELXY_FLTD", 5.0},
     {"ANGLE_MAX", 3000},         {"PSC_ANGLE_MAX", 0},
     {"MOT_THST_HOVER", 0.35},    {"PSC_VELZ_P", 5.0},     {"PSC_ACCZ_P", 0.5},     {"PSC_ACCZ_I", 1.0},
+    {"PSC_JERK_XY", 5.0},        {"CIRCLE_RATE", 20.0},
 };
 
 // ArduCopter 3.x defaults (AC_WPNav.h of 3.2-3.6, AC_PosControl).
@@ -33,6 +34,7 @@ const std::map<std::string, double> kArduCopter3 = {
     {"RTL_ALT_FINAL", 0},   {"RTL_CLIMB_MIN", 0},    {"RTL_LOIT_TIME", 5000},  {"LAND_SPEED", 50},
     {"LAND_ALT_LOW", 1000}, {"MOT_SPOOL_TIME", 0.5}, {"ATC_SLEW_YAW", 6000},   {"WP_YAW_BEHAVIOR", 2},
     {"THR_MID", 500},       {"VEL_Z_P", 5.0},        {"ACCEL_Z_P", 0.5},       {"ACCEL_Z_I", 1.0},
+    {"CIRCLE_RATE", 20.0},
 };
 
 // PX4 multicopter defaults (FlightTaskAuto, mc_pos_control, navigator params).

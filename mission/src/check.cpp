@@ -98,6 +98,20 @@ void checkJump(const MissionItem& it) {
     badField(it, "param2 (repeat count)", repeat, "a whole repeat count in [0, 1000]");
 }
 
+// ArduPilot's AP_Mission keeps a LOITER_TURNS' turns and radius as whole numbers in one byte each
+// (radii above 255 m divided by 10, and not in every version): more than 255 turns, or a radius
+// below 1 m (0: a turn on the spot, whose behaviour changes between versions) or above 255 m, is
+// refused rather than flown by a guess.
+void checkLoiterTurns(const MissionItem& it) {
+  const double turns = it.param[0], radius = it.param[2];
+  if (!(std::isfinite(turns) && turns >= 0.0 && turns < 256.0))
+    badField(it, "param1 (turns)", turns, "a number of turns in [0, 255] (ArduPilot keeps whole turns in one byte)");
+  if (!(std::isfinite(radius) && std::abs(radius) >= 1.0 && std::abs(radius) < 256.0))
+    badField(it, "param3 (radius)", radius,
+             "a radius of 1 to 255 m, negative for counter-clockwise (0, a turn on the spot, and radii above 255 m, "
+             "which ArduPilot stores divided by 10, are not modelled)");
+}
+
 void checkParams(const MissionItem& it) {
   switch (static_cast<Command>(it.command)) {
     case Command::NavWaypoint:
@@ -105,6 +119,8 @@ void checkParams(const MissionItem& it) {
       return atLeastZero(it, it.param[0], "param1 (hold time)", "a hold time >= 0 s");
     case Command::NavLoiterTime:
       return atLeastZero(it, it.param[0], "param1 (loiter time)", "a time >= 0 s");
+    case Command::NavLoiterTurns:
+      return checkLoiterTurns(it);
     case Command::NavDelay:
       return atLeastZero(it, it.param[0], "param1 (delay)", "a delay >= 0 s (time-of-day delays, param1 = -1, are not supported)");
     case Command::ConditionDelay:

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <string>
 
+#include "circle.hpp"
 #include "flight_internal.hpp"
 #include "spline_curve.hpp"
 
@@ -27,6 +28,7 @@ struct Params {
   double speed, speed_up, speed_dn, accel, accel_z, radius, pos_xy_p, pos_z_p, vel_xy_p, vel_xy_i, vel_xy_imax, accel_max;
   double rtl_alt, rtl_alt_final, rtl_climb_min, rtl_loiter_s, land_speed, land_alt_low, spool_s;
   double land_wind_down_s;  // [s] from touch-down until the throttle is at its lower limit (throttleWindDown)
+  double circle_rate;       // [rad/s] CIRCLE_RATE: a LOITER_TURNS' angular rate, clockwise
   bool linear_slack;  // before 3.4: the leash slack shrinks linearly with the cross-track error
   // [s] Before 3.4 AC_WPNav::update_wpnav advances the carrot and triggers the horizontal position
   // controller every 0.1 s (WPNAV_WP_UPDATE_TIME), which then runs its four steps (position to
@@ -96,6 +98,7 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_alt_low = std::max(0.0, ap.get("LAND_ALT_LOW")) / 100.0;
   p.spool_s = std::max(0.0, ap.get("MOT_SPOOL_TIME"));
   p.land_wind_down_s = landWindDown(ap, p.land_speed, p.pos_z_p);
+  p.circle_rate = checkParameter("CIRCLE_RATE", ap.get("CIRCLE_RATE"), -90, 90, "deg/s") * M_PI / 180.0;
   p.linear_slack = linearSlackVersion(ap.version);
   p.nav_period = p.linear_slack ? 0.1 : 0.0;
   p.leash_up = leashLength(p.speed_up, p.accel_z, p.pos_z_p);
@@ -355,6 +358,40 @@ struct Flyer {
     carry = {!stop, out, t, scaler};
     return target;
   }
+  // Where the position controller would bring the vehicle to rest (AC_PosControl::get_stopping_point_xy
+  // of 3.x: linear below WPNAV_ACCEL / POS_XY_P, then v^2 / 2 WPNAV_ACCEL, within the leash at `speed`).
+  Eigen::Vector3d stoppingPoint(double speed) const {
+    const Eigen::Vector2d vh = veh.v.head<2>();
+    const double v = vh.norm();
+    if (v < 1e-9) return veh.p;
+    const double lin = P.accel / P.pos_xy_p;
+    double d = v < lin ? v / P.pos_xy_p : P.accel / (2.0 * P.pos_xy_p * P.pos_xy_p) + v * v / (2.0 * P.accel);
+    d = std::min(d, leashLength(speed, P.accel, P.pos_xy_p));
+    Eigen::Vector3d out = veh.p;
+    out.head<2>() += vh / v * d;
+    return out;
+  }
+  // NAV_LOITER_TURNS of 3.x (do_circle, auto_circle_movetoedge_start, AC_Circle): a stop leg from
+  // where the carrot is to the closest point of the circle, then the circle's target point, moved
+  // with the horizontal controller's period, chased like a carrot (position only, no feed-forward)
+  // until it has turned the turns; returns where the next leg starts (the stopping point:
+  // set_wp_destination with the waypoint controller idle for more than a second).
+  Eigen::Vector3d circle(const NavStep& st, const Eigen::Vector3d& from, double speed, int step) {
+    const Eigen::Vector3d center = st.has_position ? st.target : Eigen::Vector3d(from.x(), from.y(), st.target.z());
+    const Eigen::Vector3d edge = detail::circleEdge(center, st.loiter_radius_m, stoppingPoint(speed), veh.v.head<2>());
+    leg(from, edge, speed, false, FlightPhase::Mission, step);
+    rec.reached(step);
+    const double rate = st.loiter_ccw ? -std::abs(P.circle_rate) : std::abs(P.circle_rate);
+    detail::CircleTarget c(center, st.loiter_radius_m, st.loiter_turns, rate, speed, P.accel, veh.p);
+    Eigen::Vector3d target = stoppingPoint(speed);  // AC_Circle::init: the target at the stopping point
+    while (!c.done()) {
+      const double nav_dt = navStep(veh, P, rec.dt());
+      if (nav_dt > 0.0) target = c.step(nav_dt);
+      chase(veh, target, speed, P, af, rec.dt(), nav_dt);
+      rec.tick(veh.p, veh.v, FlightPhase::Mission, step);
+    }
+    return stoppingPoint(speed);
+  }
   // Hovers at `at` for `seconds`, the vehicle still converging on it.
   void hold(const Eigen::Vector3d& at, double seconds, double speed, FlightPhase phase, int step) {
     const long n = std::lround(seconds / rec.dt());
@@ -424,6 +461,8 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
     } else if (st.kind == NavStep::Kind::Delay) {
       rec.reached(ki);
       f.hold(target, st.hold_s, speed, FlightPhase::Mission, ki);
+    } else if (st.kind == NavStep::Kind::LoiterTurns) {
+      target = f.circle(st, target, speed, ki);
     } else if (st.kind == NavStep::Kind::ReturnToLaunch) {
       const double alt = std::max({P.rtl_alt, f.veh.p.z() + P.rtl_climb_min, f.veh.p.z()});
       const Eigen::Vector3d climb(target.x(), target.y(), alt), home(0.0, 0.0, alt);

@@ -6,6 +6,7 @@
 // NAV_MC_ALT_RAD vertically (docs/autopilots.md, section "PX4").
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "flight_internal.hpp"
 
@@ -199,6 +200,13 @@ double returnAltitude(const Eigen::Vector3d& here, const Params& P) {
 }  // namespace
 
 FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap, const FlightSettings& s) {
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (steps[k].kind == NavStep::Kind::LoiterTurns) {
+      throw std::invalid_argument("step " + std::to_string(k) + " (mission item index " + std::to_string(steps[k].item) +
+                                  "): NAV_LOITER_TURNS is not modelled for PX4 (its multicopter loiter is not read); "
+                                  "the ArduCopter models fly it");
+    }
+  }
   const Params P = readParams(ap);
   Recorder rec(s, steps.size());
   rec.startOnGround(P.spool);

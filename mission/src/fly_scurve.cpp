@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "circle.hpp"
 #include "flight_internal.hpp"
 #include "position_follower.hpp"
 #include "spline_curve.hpp"
@@ -27,6 +28,8 @@ struct Params {
       land_alt_low, pos_z_p, spool_s, slew_s, rtl_cone_slope;
   double land_wind_down_s;  // [s] from touch-down until the throttle is at its lower limit (throttleWindDown)
   double spline_lateral;  // share of the acceleration limit a spline's curvature may use
+  double circle_rate;     // [rad/s] CIRCLE_RATE: a LOITER_TURNS' angular rate, clockwise
+  double jerk_xy;         // [m/s^3] the position controller's shaping jerk (PSC_JERK_XY, attitude-limited)
   detail::PositionGains gains;
 };
 
@@ -94,6 +97,12 @@ Params readParams(const AutopilotConfig& ap) {
   p.gains.lean_accel = kGravity * std::tan(std::clamp(lean_deg, 10.0, 80.0) * M_PI / 180.0);
   p.gains.scaler_tc = p.accel_xy / p.jerk;
   p.spline_lateral = splineLateralShare(ap.version);
+  p.circle_rate = checkParameter("CIRCLE_RATE", ap.get("CIRCLE_RATE"), -90, 90, "deg/s") * M_PI / 180.0;
+  // AC_PosControl::set_max_speed_accel_xy: PSC_JERK_XY, at most what the attitude controller's rate
+  // and angular-acceleration limits allow.
+  p.jerk_xy = checkParameter("PSC_JERK_XY", ap.get("PSC_JERK_XY"), 0.1, 50, "m/s/s/s");
+  if (rate_max > 0.0) p.jerk_xy = std::min(p.jerk_xy, rate_max * M_PI / 180.0 * kGravity);
+  if (ang_accel > 0.0) p.jerk_xy = std::min(p.jerk_xy, 0.5 * std::sqrt(p.accel_xy * ang_accel / 100.0 * M_PI / 180.0 * kGravity));
   return p;
 }
 
@@ -350,6 +359,48 @@ std::vector<LegSpec> chainFrom(const std::vector<NavStep>& steps, std::size_t k,
   return legs;
 }
 
+// NAV_LOITER_TURNS (ModeAuto::do_circle): from `here`, where the leg before it stopped, fly to the
+// closest point of the circle (a stop leg, only when more than 3 m from it:
+// circle_movetoedge_start), then circle: AC_Circle's target point runs round at CIRCLE_RATE (or
+// what the speed and half the acceleration limit allow) and reaches it at WPNAV_ACCEL / radius; the
+// position controller takes it through its input shaper (no velocity given), whose desired state
+// the vehicle chases. Done when the target has turned the turns (verify_circle); the next leg then
+// starts afresh from the vehicle's stopping point (wp_start: the waypoint controller was idle).
+Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, FlightPhase phase, int k, Eigen::Vector3d here) {
+  const double speed = st.speed_xy > 0.0 ? st.speed_xy : P.speed_xy;
+  const Eigen::Vector3d center = st.has_position ? st.target : Eigen::Vector3d(here.x(), here.y(), st.target.z());
+  const Eigen::Vector2d heading = fl.veh.velocity().head<2>();
+  const Eigen::Vector3d edge = detail::circleEdge(center, st.loiter_radius_m, fl.veh.stoppingPoint(), heading);
+  if ((fl.veh.position() - edge).norm() > detail::kCircleEdgeDistance) {
+    LegSpec to_edge = specOf(st, P, k);
+    to_edge.target = edge;
+    to_edge.hold_s = 0.0;
+    here = flyChain(fl, {to_edge}, here, P, phase, P.jerk);
+  }
+  fl.rec.reached(k);
+  // circle_start: AC_Circle::init restarts the position controller at its stopping point.
+  const Eigen::Vector3d start = fl.veh.stoppingPoint();
+  const double rate = st.loiter_ccw ? -std::abs(P.circle_rate) : std::abs(P.circle_rate);
+  detail::CircleTarget circle(center, st.loiter_radius_m, st.loiter_turns, rate, speed, P.accel_xy, start);
+  detail::InputShaper shaper(speed, P.accel_xy, P.jerk_xy);
+  shaper.reset(start.head<2>());
+  const double z = here.z();
+  while (!circle.done()) {
+    const Eigen::Vector3d t = circle.step(fl.rec.dt());
+    shaper.step(t.head<2>(), fl.rec.dt());
+    const Eigen::Vector2d& p = shaper.position();
+    const Eigen::Vector2d& v = shaper.velocity();
+    const Eigen::Vector2d& a = shaper.acceleration();
+    fl.tick({p.x(), p.y(), z}, {v.x(), v.y(), 0.0}, {a.x(), a.y(), 0.0}, phase, k);
+  }
+  fl.rec.completed(k);
+  // wp_start: the waypoint controller, idle while circling, starts at the stopping point.
+  const Eigen::Vector3d stop = fl.veh.stoppingPoint();
+  fl.veh.restartController();
+  fl.clock = 1.0;
+  return {stop.x(), stop.y(), z};
+}
+
 void land(Recorder& rec, const Params& P, double speed_dn, int step, const FlightSettings& s) {
   const double v_hi = std::max(P.land_speed_high > 0.0 ? P.land_speed_high : speed_dn, P.land_speed);
   const double alt_low = std::max(P.land_alt_low, 1.0);
@@ -385,6 +436,9 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       rec.reached(ki);
       fl.hold(here, st.hold_s, phase, ki);
       rec.completed(ki);
+      ++k;
+    } else if (st.kind == NavStep::Kind::LoiterTurns) {
+      here = flyLoiterTurns(fl, st, P, phase, ki, here);
       ++k;
     } else if (st.kind == NavStep::Kind::ReturnToLaunch) {
       // Return altitude (ModeRTL::compute_return_target): RTL_ALT (at least RTL_CLIMB_MIN above

@@ -17,7 +17,7 @@ struct CommandInfo {
 constexpr CommandInfo kCommands[] = {
     {16, "NAV_WAYPOINT", true},
     {17, "NAV_LOITER_UNLIM", false},
-    {18, "NAV_LOITER_TURNS", false},
+    {18, "NAV_LOITER_TURNS", true},
     {19, "NAV_LOITER_TIME", true},
     {20, "NAV_RETURN_TO_LAUNCH", true},
     {21, "NAV_LAND", true},
@@ -91,6 +91,7 @@ bool isPositional(int command) {
     case Command::NavWaypoint:
     case Command::NavSplineWaypoint:
     case Command::NavLoiterTime:
+    case Command::NavLoiterTurns:
     case Command::NavLand:
       return true;
     default:

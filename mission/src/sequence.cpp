@@ -1,6 +1,7 @@
 // The mission as the autopilot executes it: DO commands applied where AP_Mission runs them (a DO
 // command between two navigation items takes effect when the first is complete, so it governs
 // the leg into the second), DO_JUMP unrolled, positions in the local ENU frame of home.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -100,6 +101,19 @@ struct Sequencer {
         steps.push_back(s);
         return true;
       }
+      case Command::NavLoiterTurns: {
+        // AP_Mission (mavlink_int_to_mission_cmd) keeps min(255, param1) turns and |param3| metres
+        // as whole numbers (the conversions truncate); param3 < 0 circles counter-clockwise.
+        NavStep s = step(NavStep::Kind::LoiterTurns, index);
+        s.has_position = hasLatLon(it);
+        if (s.has_position) s.target = position(it);
+        else s.target.z() = altitudeAboveHome(it, m);
+        s.loiter_turns = std::floor(std::min(255.0, std::max(0.0, it.param[0])));
+        s.loiter_radius_m = std::floor(std::abs(it.param[2]));
+        s.loiter_ccw = it.param[2] < 0.0;
+        steps.push_back(s);
+        return true;
+      }
       case Command::NavDelay: {
         NavStep s = step(NavStep::Kind::Delay, index);
         s.has_position = false;
@@ -121,7 +135,8 @@ struct Sequencer {
     }
     throw std::invalid_argument(it.where + ": " + commandName(it.command) +
                                 " cannot be flown by the flight model (supported: NAV_TAKEOFF, NAV_WAYPOINT, "
-                                "NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_DELAY, NAV_RETURN_TO_LAUNCH, NAV_LAND)");
+                                "NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_LOITER_TURNS, NAV_DELAY, NAV_RETURN_TO_LAUNCH, "
+                                "NAV_LAND)");
   }
 };
 

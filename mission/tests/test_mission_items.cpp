@@ -49,6 +49,7 @@ Mission everyCommand() {
       item(++s, Command::NavWaypoint, 3, {2, 1.5, 0, kNaN}, lat + 1e-4, lon, 12.25),
       item(++s, Command::NavSplineWaypoint, 6, {0, 0, 0, 0}, lat + 2e-4, lon + 1e-4, 15),
       item(++s, Command::NavLoiterTime, 0, {5, 0, 0, 0}, lat + 3e-4, lon, 40.5),
+      item(++s, Command::NavLoiterTurns, 3, {2, 0, -25, 0}, lat + 6e-4, lon, 40.5),
       item(++s, Command::NavWaypoint, 10, {0, 0, 0, 0}, 43.71613579, 10.46161234, 20),
       item(++s, Command::NavWaypoint, 5, {0, 0, 0, 0}, 43.7162, 10.4617, 30),
       item(++s, Command::NavWaypoint, 11, {0, 0, 0, 0}, 43.7163, 10.4618, 25),
@@ -84,6 +85,7 @@ TEST(MissionItems, CommandsAndFrames) {
   EXPECT_FALSE(isNavCommand(178));
   EXPECT_TRUE(isSupportedCommand(206));
   EXPECT_FALSE(isSupportedCommand(17));   // loiter forever: the mission never ends
+  EXPECT_TRUE(isSupportedCommand(18));    // loiter turns: flown by the ArduCopter models
   EXPECT_FALSE(isSupportedCommand(179));  // DO_SET_HOME moves the return point
   EXPECT_EQ(altitudeFrame(6), AltitudeFrame::Relative);
   EXPECT_EQ(altitudeFrame(11), AltitudeFrame::Terrain);
@@ -137,7 +139,7 @@ TEST(MissionItems, EveryCommandRoundTripsThroughTheWaypointsFormat) {
 TEST(MissionItems, WritersRenumberAndFollowJumpTargets) {
   Mission m = everyCommand();
   for (auto& it : m.items) it.seq += 10;  // e.g. after a lenient read dropped items
-  m.items[23].param[0] = 13;              // the DO_JUMP to the waypoint, now item 13
+  m.items[24].param[0] = 13;              // the DO_JUMP to the waypoint, now item 13
   const Mission back = parseQgcPlan(toQgcPlan(m), "renumbered.plan");
   EXPECT_EQ(back, everyCommand());
 }

@@ -29,7 +29,7 @@ const char* toString(FlightPhase p);
 /// One navigation step the autopilot executes, in the local ENU frame of the home position.
 struct NavStep {
   /// What the step does.
-  enum class Kind { Takeoff, Waypoint, SplineWaypoint, LoiterTime, Delay, ReturnToLaunch, Land };
+  enum class Kind { Takeoff, Waypoint, SplineWaypoint, LoiterTime, LoiterTurns, Delay, ReturnToLaunch, Land };
   Kind kind = Kind::Waypoint;                              ///< what the step does
   Eigen::Vector3d target = Eigen::Vector3d::Zero();        ///< [m] ENU position (Takeoff: z only)
   bool has_position = true;                                ///< false: Land / LoiterTime "here"
@@ -41,6 +41,11 @@ struct NavStep {
   double speed_up = 0.0;                                   ///< [m/s] climb speed in force (0: default)
   double speed_down = 0.0;                                 ///< [m/s] descent speed in force (0: default)
   double accept_radius_m = 0.0;                            ///< [m] item acceptance radius (0: default)
+  /// LoiterTurns: the number of turns and the radius [m] as ArduPilot keeps them (whole numbers),
+  /// circled clockwise seen from above unless `loiter_ccw`; `target` is the centre
+  double loiter_turns = 0.0;
+  double loiter_radius_m = 0.0;                            ///< [m] LoiterTurns: radius of the circle
+  bool loiter_ccw = false;                                 ///< LoiterTurns: counter-clockwise (param3 < 0)
   int item = -1;                                           ///< index into Mission::items (-1: none)
 };
 

@@ -16,7 +16,7 @@ namespace wattswath::mission {
 enum class Command : int {
   NavWaypoint = 16,          ///< fly to a position; param1 hold [s], param2 acceptance radius [m]
   NavLoiterUnlimited = 17,   ///< loiter forever (a mission never ends after it)
-  NavLoiterTurns = 18,       ///< loiter a number of turns
+  NavLoiterTurns = 18,       ///< circle a point; param1 turns, param3 radius [m] (< 0: counter-clockwise)
   NavLoiterTime = 19,        ///< fly to a position and hold there; param1 time [s]
   NavReturnToLaunch = 20,    ///< return home and land
   NavLand = 21,              ///< land at a position (0, 0: where the vehicle is)
@@ -88,13 +88,15 @@ std::string commandName(int command);
 bool isNavCommand(int command);
 
 /// True for the commands the readers accept: NAV_TAKEOFF, NAV_WAYPOINT, NAV_SPLINE_WAYPOINT,
-/// NAV_LOITER_TIME, NAV_RETURN_TO_LAUNCH, NAV_LAND, NAV_DELAY, DO_CHANGE_SPEED, DO_SET_CAM_TRIGG_DIST,
-/// DO_JUMP, CONDITION_YAW, CONDITION_DELAY and the camera, gimbal, servo, relay and ROI commands of
-/// Command. Not: loiters without end (17, 18), DO_SET_HOME (moves the return point) or any other.
+/// NAV_LOITER_TIME, NAV_LOITER_TURNS, NAV_RETURN_TO_LAUNCH, NAV_LAND, NAV_DELAY, DO_CHANGE_SPEED,
+/// DO_SET_CAM_TRIGG_DIST, DO_JUMP, CONDITION_YAW, CONDITION_DELAY and the camera, gimbal, servo, relay
+/// and ROI commands of Command. Not: the loiter without end (17), DO_SET_HOME (moves the return
+/// point) or any other.
 bool isSupportedCommand(int command);
 
 /// True for the commands flown to a position given by lat/lon/alt (NAV_TAKEOFF, NAV_WAYPOINT,
-/// NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_LAND); their frame must be a global one (0, 3, 10, 5, 6, 11).
+/// NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_LOITER_TURNS, NAV_LAND); their frame must be a global
+/// one (0, 3, 10, 5, 6, 11).
 bool isPositional(int command);
 
 /// True when `item` is positional and gives a position: lat/lon finite and not both 0 (ArduPilot
