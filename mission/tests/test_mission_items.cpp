@@ -71,6 +71,9 @@ Mission everyCommand() {
       item(++s, Command::DoJump, 2, {3, 2, 0, 0}),
       item(++s, Command::NavReturnToLaunch, 2, {0, 0, 0, 0}),
       item(++s, Command::NavLand, 3, {0, 0, 0, kNaN}, 0, 0, 0),
+      item(++s, static_cast<Command>(195), 3, {0, 0, 0, 0}, lat, lon, 5),  // DO_SET_ROI_LOCATION (QGroundControl ROI)
+      item(++s, static_cast<Command>(189), 0, {0, 0, 0, 0}, 0, 0, 0),     // DO_LAND_START (a marker)
+      item(++s, static_cast<Command>(114), 2, {30, 0, 0, 0}),             // CONDITION_DISTANCE
   };
   m.items[5].autocontinue = false;
   return m;
@@ -86,6 +89,8 @@ TEST(MissionItems, CommandsAndFrames) {
   EXPECT_TRUE(isSupportedCommand(206));
   EXPECT_FALSE(isSupportedCommand(17));   // loiter forever: the mission never ends
   EXPECT_TRUE(isSupportedCommand(18));    // loiter turns: flown by the ArduCopter models
+  EXPECT_TRUE(isSupportedCommand(197));   // DO_SET_ROI_NONE: does not move the vehicle
+  EXPECT_FALSE(isSupportedCommand(211));  // DO_GRIPPER: a released payload changes the mass
   EXPECT_FALSE(isSupportedCommand(179));  // DO_SET_HOME moves the return point
   EXPECT_EQ(altitudeFrame(6), AltitudeFrame::Relative);
   EXPECT_EQ(altitudeFrame(11), AltitudeFrame::Terrain);

@@ -89,9 +89,12 @@ bool isNavCommand(int command);
 
 /// True for the commands the readers accept: NAV_TAKEOFF, NAV_WAYPOINT, NAV_SPLINE_WAYPOINT,
 /// NAV_LOITER_TIME, NAV_LOITER_TURNS, NAV_RETURN_TO_LAUNCH, NAV_LAND, NAV_DELAY, DO_CHANGE_SPEED,
-/// DO_SET_CAM_TRIGG_DIST, DO_JUMP, CONDITION_YAW, CONDITION_DELAY and the camera, gimbal, servo, relay
-/// and ROI commands of Command. Not: the loiter without end (17), DO_SET_HOME (moves the return
-/// point) or any other.
+/// DO_SET_CAM_TRIGG_DIST, DO_JUMP, CONDITION_YAW, CONDITION_DELAY, and the commands that do not
+/// move the vehicle: camera, video, gimbal, mount, servo, relay and ROI commands (with their repeat,
+/// configure and ROI-variant forms), CONDITION_DISTANCE, DO_FENCE_ENABLE and the DO_LAND_START
+/// marker (docs/missions.md). Not: the loiter without end (17), DO_SET_HOME (moves the return
+/// point), payload commands that change the mass (DO_GRIPPER, DO_SPRAYER), mode changes, VTOL
+/// commands or any other.
 bool isSupportedCommand(int command);
 
 /// True for the commands flown to a position given by lat/lon/alt (NAV_TAKEOFF, NAV_WAYPOINT,
