@@ -19,6 +19,7 @@ struct Params {
   double cruise, vel_max, acc, jerk, traj_p, up, down, acc_up, acc_down, vel_max_dn, tko_speed, tko_ramp, land_speed,
       land_alt1, land_alt2, acc_rad, alt_rad, rtl_alt, rtl_descend, rtl_delay, rtl_cone_deg, rtl_min_dist, spool;
   int rtl_rule;  // the return altitude rule: 13 (PX4 1.13 and later), 10 (1.10-1.12), 0 (before the cone)
+  bool land_step;  // before 1.11: MPC_LAND_SPEED below MPC_LAND_ALT1, no slow-down between ALT1 and ALT2
 };
 
 Params readParams(const AutopilotConfig& ap) {
@@ -51,6 +52,10 @@ Params readParams(const AutopilotConfig& ap) {
                : versionAtLeast(ap.version, 1, 10)                                    ? 10
                                                                                       : 0;
   p.spool = std::max(0.0, ap.get("COM_SPOOLUP_TIME"));
+  // FlightTaskAutoMapper2::_prepareLandSetpoints (the 1.9 and 1.10 sources): the descent is at
+  // MPC_LAND_SPEED below MPC_LAND_ALT1 and at the descent limit above; later versions
+  // (FlightTaskAutoMapper::_getLandSpeed, math::gradual) slow down between MPC_LAND_ALT1 and _ALT2.
+  p.land_step = versionAtLeast(ap.version, 1, 0) && !versionAtLeast(ap.version, 1, 11);
   return p;
 }
 
@@ -262,7 +267,7 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       rec.reached(ki);
       auto law = [&](double h) {
         if (h >= P.land_alt1) return P.vel_max_dn;
-        if (h <= P.land_alt2) return P.land_speed;
+        if (h <= P.land_alt2 || P.land_step) return P.land_speed;
         return P.land_speed + (P.vel_max_dn - P.land_speed) * (h - P.land_alt2) / (P.land_alt1 - P.land_alt2);
       };
       f.land(land_xy, land_cruise, law, ki);
@@ -275,7 +280,9 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
            detail::num(P.acc) + " m/s/s, MPC_JERK_AUTO " + detail::num(P.jerk) + " m/s/s/s, NAV_ACC_RAD " +
            detail::num(P.acc_rad) + " m; take-off at MPC_TKO_SPEED below MPC_LAND_ALT1, MPC_Z_V_AUTO_UP above; RTL returns at MPC_XY_CRUISE, at " +
            std::string(P.rtl_rule == 13 ? "the 1.13+" : P.rtl_rule == 10 ? "the 1.10-1.12" : "the pre-1.10") +
-           " return altitude (RTL_RETURN_ALT, RTL_CONE_ANG, RTL_MIN_DIST)");
+           " return altitude (RTL_RETURN_ALT, RTL_CONE_ANG, RTL_MIN_DIST); landing at " +
+           std::string(P.land_step ? "MPC_LAND_SPEED below MPC_LAND_ALT1 (before 1.11)"
+                                   : "MPC_LAND_SPEED below MPC_LAND_ALT2, graded up to the descent limit at MPC_LAND_ALT1"));
   return rec.take(steps);
 }
 
