@@ -151,8 +151,9 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   if (autopilot.family == AutopilotFamily::PX4) {
     for (const MissionItem& it : m.items) {
       if (it.command == static_cast<int>(Command::NavLoiterTurns)) {
-        throw MissionError(it.where + ": NAV_LOITER_TURNS (18) is not modelled for a PX4 vehicle (how PX4's multicopter "
-                           "navigator flies it was not read); the ArduCopter models fly it (docs/autopilots.md)");
+        throw MissionError(it.where + ": NAV_LOITER_TURNS (18) is not modelled for a PX4 vehicle (the mission feasibility "
+                           "check of some PX4 versions rejects it as \"not yet supported\", and how the others fly it was not "
+                           "read); the ArduCopter models fly it (docs/autopilots.md)");
       }
       if (it.command != static_cast<int>(Command::NavSplineWaypoint)) continue;
       throw MissionError(it.where + ": NAV_SPLINE_WAYPOINT (82): PX4 refuses a mission that holds one (the upload is answered "
