@@ -33,6 +33,7 @@ void readCoverageGeometry(const nlohmann::json& c, const std::string& where, Mis
   }
   if (c.contains("turn_deg_max")) k.turn_hi_deg = number(c["turn_deg_max"], "turn_deg_max", -1);
   if (c.contains("leg_climb_m_max")) k.climb_hi_m = number(c["leg_climb_m_max"], "leg_climb_m_max", -1);
+  if (c.contains("loiter_circles")) k.circles = static_cast<int>(number(c["loiter_circles"], "loiter_circles", 0));
 }
 
 // A MissionKind as stored (calibrationToJson's kindToJson); `where` names it in errors.
@@ -55,12 +56,14 @@ MissionKind kindFromJson(const nlohmann::json& c, const std::string& where) {
 
 // A MissionKind as stored in extensions.calibration (`coverage`, `per_flight.kinds`).
 nlohmann::json kindToJson(const MissionKind& k) {
-  return {{"stop_waypoints", k.stop_waypoints},
+  nlohmann::json j = {{"stop_waypoints", k.stop_waypoints},
           {"fast_waypoints", k.fast_waypoints},
           {"speed_mps", {k.speed_lo_mps, k.speed_hi_mps}},
           {"leg_median_m", {k.leg_lo_m, k.leg_hi_m}},
           {"turn_deg_max", k.turn_hi_deg},
           {"leg_climb_m_max", k.climb_hi_m}};
+  if (k.circles >= 0) j["loiter_circles"] = k.circles;  // absent: not recorded (files before 2026-11-27)
+  return j;
 }
 
 // per_flight's `flights` and `kinds`, one each per value (absent in older files: nothing read).

@@ -39,6 +39,9 @@ MissionKind missionKind(const std::vector<mission::NavStep>& steps, const missio
   std::vector<Eigen::Vector2d> headings;         // the horizontal direction of the leg into each
   std::vector<const mission::NavStep*> froms;    // where that leg starts
   std::vector<double> legs;                      // [m] the horizontal legs' lengths
+  k.circles = static_cast<int>(std::count_if(steps.begin(), steps.end(), [](const mission::NavStep& s) {
+    return s.kind == mission::NavStep::Kind::LoiterTurns;
+  }));
   for (const auto& s : steps) {
     if (!mission::isFlownTo(s) || !s.has_position) {
       if (s.kind == mission::NavStep::Kind::Takeoff) prev = &s;
@@ -87,6 +90,7 @@ MissionKind combine(const MissionKind& a, const MissionKind& b) {
   k.leg_hi_m = std::max(a.leg_hi_m, b.leg_hi_m);
   k.turn_hi_deg = std::max(a.turn_hi_deg, b.turn_hi_deg);
   k.climb_hi_m = std::max(a.climb_hi_m, b.climb_hi_m);
+  k.circles = a.circles < 0 || b.circles < 0 ? std::max(a.circles, b.circles) : a.circles + b.circles;
   return k;
 }
 
@@ -117,6 +121,10 @@ std::vector<std::string> outsideCalibration(const MissionKind& m, const MissionK
   if (m.climb_hi_m >= 0.0 && c.climb_hi_m >= 0.0 && m.climb_hi_m > std::max(2.0 * c.climb_hi_m, c.climb_hi_m + 5.0)) {
     why.push_back("this mission's legs change height by up to " + metres(m.climb_hi_m) + " m; the calibration flights' by up to " +
                   metres(c.climb_hi_m) + " m");
+  }
+  if (m.circles > 0 && c.circles == 0) {
+    why.push_back("this mission circles " + std::to_string(m.circles) +
+                  " time(s) (NAV_LOITER_TURNS); the calibration flights did not circle");
   }
   return why;
 }

@@ -364,6 +364,15 @@ TEST(CalibrationCoverage, WaypointKindsAndSpeedsAreCountedAndTheOutsideIsSaidWhy
   EXPECT_DOUBLE_EQ(both.speed_lo_mps, 2.0);
   EXPECT_DOUBLE_EQ(both.speed_hi_mps, 7.5);
   EXPECT_TRUE(outsideCalibration(k, both).empty());
+  // A circle (NAV_LOITER_TURNS) the calibration never flew is named; a file that does not record circles is not compared.
+  MissionKind circling = k, no_circles = k, unrecorded = k;
+  circling.circles = 2;
+  no_circles.circles = 0;
+  unrecorded.circles = -1;
+  ASSERT_EQ(outsideCalibration(circling, no_circles).size(), 1u);
+  EXPECT_NE(outsideCalibration(circling, no_circles)[0].find("circles 2 time(s)"), std::string::npos);
+  EXPECT_TRUE(outsideCalibration(circling, unrecorded).empty());
+  EXPECT_EQ(k.circles, 0);
   const auto slow = outsideCalibration(k, MissionKind{5, 30, 5.0, 6.0});  // 4 m/s is below 5 / 1.1
   ASSERT_EQ(slow.size(), 1u);
   EXPECT_NE(slow[0].find("commands 4 to 8 m/s; the calibration flights 5 to 6 m/s"), std::string::npos) << slow[0];

@@ -24,6 +24,7 @@ struct MissionKind {
   double leg_hi_m = 0.0;      ///< [m] see leg_lo_m
   double turn_hi_deg = -1.0;  ///< [deg] sharpest turn at a waypoint without a hold time (-1: none, or not recorded)
   double climb_hi_m = -1.0;   ///< [m] largest height change on a leg between waypoints (-1: none, or not recorded)
+  int circles = -1;           ///< NAV_LOITER_TURNS items flown (-1: not recorded)
 };
 
 /// The kind of `steps` flown by `autopilot`: its waypoints by hold time, and the horizontal speed
@@ -37,7 +38,8 @@ MissionKind combine(const MissionKind& a, const MissionKind& b);
 /// kinds the calibration never flew, speeds more than 10 % beyond its range, a median leg under half
 /// its lowest median leg (one short leg does not make a mission of short legs), turns through
 /// waypoints more than 20 deg sharper than its sharpest, height changes on legs above twice (and
-/// 5 m more than) its largest. A quantity not recorded is not compared.
+/// 5 m more than) its largest, circles (NAV_LOITER_TURNS) it never flew. A quantity not recorded is
+/// not compared.
 std::vector<std::string> outsideCalibration(const MissionKind& mission, const MissionKind& calibrated);
 
 }  // namespace wattswath::calibration
