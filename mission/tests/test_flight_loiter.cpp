@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "flight_test_util.hpp"
@@ -47,11 +48,13 @@ AutopilotConfig arduCopter(const std::string& version) {
 }
 
 /// [s] AC_Circle's time for `turns` at the limits: the target speeds up at
-/// alpha = max(accel / r, 2 deg/s^2) to omega = min(rate, min(speed, sqrt(accel r / 2)) / r).
+/// alpha = max(accel / r, 2 deg/s^2) to omega = min(rate, min(speed, sqrt(accel r / 2)) / r), or
+/// turns them all while still speeding up.
 double circleTime(double turns, double r, double rate_deg, double speed, double accel) {
   const double w = std::min(rate_deg * kPi / 180.0, std::min(speed, std::sqrt(0.5 * accel * r)) / r);
   const double alpha = std::max(accel / r, 2.0 * kPi / 180.0);
-  return w / alpha + (2.0 * kPi * turns - w * w / (2.0 * alpha)) / w;
+  const double angle = 2.0 * kPi * turns, ramp = w * w / (2.0 * alpha);
+  return angle <= ramp ? std::sqrt(2.0 * angle / alpha) : w / alpha + (angle - ramp) / w;
 }
 
 int loiterStep(const FlownMission& f) {
@@ -170,4 +173,36 @@ TEST(LoiterTurns, TurnsAndRadiusAreKeptAsWholeNumbersAsArduPilotStoresThem) {
   Mission bad = m;
   bad.items[2].param[2] = 0.5;  // below 1 m: ArduPilot keeps 0, a turn on the spot
   EXPECT_THROW(checkMission(bad), MissionError);
+}
+
+// Random circles (fixed seed): radius 1-120 m, 0-3 turns, either sense, speeds, accelerations and
+// CIRCLE_RATE across their ranges, in both ArduCopter models. Each takes the closed-form time of its
+// target (within a step; 3.x moves its target every 0.1 s); the vehicle starts within WPNAV_RADIUS
+// of the edge and is within half a metre of the circle, or inside it, over the second half.
+TEST(LoiterTurns, RandomCirclesTakeTheTargetsTimeAndStayInsideInBothModels) {
+  std::mt19937 rng(20261127);
+  std::uniform_real_distribution<double> radius(1.0, 120.0), speed(1.0, 15.0), accel(0.5, 5.0), rate(5.0, 90.0), turns(0.0, 3.0);
+  for (int i = 0; i < 24; ++i) {
+    const double r = std::floor(radius(rng)), n = std::floor(turns(rng)), v = speed(rng), a = accel(rng), w = rate(rng);
+    const bool ccw = i % 2 == 1;
+    for (const char* version : {"4.5.7", "3.2.1"}) {
+      AutopilotConfig ap = arduCopter(version);
+      ap.parameters = {{"WPNAV_SPEED", v * 100.0}, {"WPNAV_ACCEL", a * 100.0}, {"CIRCLE_RATE", w}};
+      const Eigen::Vector3d center(0, 40.0 + r, 12);
+      const FlownMission f = flyMission(sequenceMission(circleMission({0, 30, 12}, center, n, ccw ? -r : r)), ap);
+      const int k = loiterStep(f);
+      ASSERT_GE(k, 0);
+      const StepEvent& e = f.events[static_cast<std::size_t>(k)];
+      const bool three = version[0] == '3';
+      EXPECT_NEAR(e.completed_s - e.reached_s, circleTime(n, r, w, v, a), three ? 0.15 : 0.03)
+          << version << " r " << r << " turns " << n << " speed " << v << " accel " << a << " rate " << w;
+      // Circling starts within WPNAV_RADIUS (2 m) of the edge and settles inside the circle.
+      const double half = 0.5 * (e.reached_s + e.completed_s);
+      for (const FlightSample& s : f.samples) {
+        if (s.step != k || s.t < e.reached_s) continue;
+        const double d = (s.position - center).head<2>().norm();
+        EXPECT_LT(d, r + (s.t < half + 0.05 ? 2.5 : 0.5)) << version << " r " << r << " speed " << v << " accel " << a << " at " << s.t;
+      }
+    }
+  }
 }
