@@ -237,7 +237,8 @@ bool matchesAny(const std::string& name, const std::vector<std::string>& prefixe
 
 bool isArduPilotFlightParameter(const std::string& n) {
   static const std::vector<std::string> prefixes = {"WPNAV_", "PSC_JERK_", "PSC_POSXY_", "PSC_VELXY_", "PSC_POSZ_",
-      "PSC_VELZ_", "PSC_ACCZ_", "RTL_", "LAND_", "TKOFF_", "LOIT_", "POS_XY_", "POS_Z_", "VEL_XY_", "VEL_Z_", "ACCEL_Z_"};
+      "PSC_VELZ_", "PSC_ACCZ_", "RTL_", "LAND_", "TKOFF_", "LOIT_", "POS_XY_", "POS_Z_", "VEL_XY_", "VEL_Z_", "ACCEL_Z_",
+      "CIRCLE_"};
   static const std::vector<std::string> exact = {"PSC_ANGLE_MAX", "ANGLE_MAX", "ATC_INPUT_TC", "ATC_SLEW_YAW",
       "WP_YAW_BEHAVIOR", "PILOT_SPEED_UP", "PILOT_SPEED_DN", "PILOT_TKOFF_ALT", "WP_NAVALT_MIN", "RC_FEEL_RP",
       "PILOT_VELZ_MAX", "PILOT_ACCEL_Z", "MOT_THST_HOVER", "MOT_SPOOL_TIME", "THR_MID", "THR_ALT_P", "THR_RATE_P",

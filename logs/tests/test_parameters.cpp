@@ -227,7 +227,7 @@ TEST(Parameters, FlightBehaviourSelection) {
   for (const char* n : {"WPNAV_SPEED", "WPNAV_JERK", "PSC_JERK_XY", "ATC_INPUT_TC", "ATC_ACCEL_R_MAX", "ATC_RATE_Y_MAX",
                         "ATC_SLEW_YAW", "WP_YAW_BEHAVIOR", "RTL_ALT", "LAND_SPEED_HIGH", "PILOT_SPEED_UP",
                         "PILOT_TKOFF_ALT", "TKOFF_SLEW_TIME", "WP_NAVALT_MIN", "LOIT_SPEED", "ANGLE_MAX", "PSC_VELXY_P", "PSC_POSXY_P",
-                        "MOT_THST_HOVER", "PSC_ACCZ_P", "PSC_VELZ_P", "THR_MID", "THR_ACCEL_I", "MOT_SPOOL_TIME"})
+                        "MOT_THST_HOVER", "PSC_ACCZ_P", "PSC_VELZ_P", "THR_MID", "THR_ACCEL_I", "MOT_SPOOL_TIME", "CIRCLE_RATE"})
     EXPECT_TRUE(isFlightBehaviourParameter("ArduCopter", n)) << n;
   for (const char* n : {"MOT_THST_EXPO", "STAT_FLTTIME", "ATC_RAT_RLL_P", "BATT_CAPACITY", "ATC_ACCEL_R_FILT", "MPC_XY_CRUISE"})
     EXPECT_FALSE(isFlightBehaviourParameter("ArduCopter", n)) << n;

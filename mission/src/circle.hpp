@@ -6,6 +6,7 @@
 // docs/autopilots.md, "NAV_LOITER_TURNS".
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Core>
 
@@ -41,6 +42,10 @@ class CircleTarget {
       : c_(center), r_(radius), goal_(2.0 * M_PI * turns) {
     const double w_cap = std::min(speed, std::sqrt(0.5 * accel * radius)) / radius;
     w_max_ = std::clamp(rate, -w_cap, w_cap);
+    if (turns > 0.0 && std::abs(w_max_) < 1e-6) {
+      throw std::invalid_argument("autopilot parameter CIRCLE_RATE = 0 deg/s: a NAV_LOITER_TURNS would never end "
+                                  "(AC_Circle's target does not turn); expected a rate other than 0");
+    }
     alpha_ = std::max(accel / radius, kCircleAngularAccelMin);
     const Eigen::Vector2d d = (start - center).head<2>();
     angle_ = d.norm() > 1e-9 ? std::atan2(d.x(), d.y()) : 0.0;

@@ -153,6 +153,20 @@ TEST(LoiterTurns, ArduCopter3ChasesTheTargetOnTheCircleItsLagAllows) {
   EXPECT_EQ(c.sense, -1);
 }
 
+TEST(LoiterTurns, ACircleRateOfZeroIsAnErrorNotAFlightThatNeverEnds) {
+  const Mission m = circleMission({0, 50, 10}, {0, 94, 10}, 2, 20);
+  for (const char* version : {"4.5.7", "3.2.1"}) {
+    AutopilotConfig ap = arduCopter(version);
+    ap.parameters = {{"CIRCLE_RATE", 0.0}};
+    try {
+      flyMission(sequenceMission(m), ap);
+      ADD_FAILURE() << version << ": no error";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("CIRCLE_RATE = 0"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(LoiterTurns, Px4RefusesItNamingTheItem) {
   const Mission m = circleMission({0, 50, 10}, {0, 94, 10}, 2, 20);
   AutopilotConfig px4;
