@@ -127,7 +127,9 @@ TEST(RealReturns, ArduCopter35ReturnFrom61MetresOutIsPredictedWithin3Percent) {
 // MPC_LAND_SPEED (0.7 m/s): before 1.11 (FlightTaskAutoMapper2) the landing descends at
 // MPC_LAND_SPEED everywhere below MPC_LAND_ALT1 (12 m), which the model flies since 2026-11-27
 // (19.7 s, -5.0 %); the later law, graded up to 0.9 m/s between MPC_LAND_ALT2 (6 m) and ALT1, gave
-// 19.1 s (-7.9 %). What is left is the 2 s the log hovers near home before the descent begins.
+// 19.1 s (-7.9 %). What is left is the 2.5 s the log hovers near home turning to the heading home
+// was set with (the RTL descend item's yaw, 138 deg away) until within MIS_YAW_ERR (45 deg): the
+// model does not turn the heading.
 TEST(RealReturns, Px419ReturnAndLandingFrom13MetresOutIsPredictedWithin6Percent) {
   const std::string path = realLog("px4-1.9_quad_mission_rtl.ulg");
   const auto log = wattswath::logs::readFlightLog(path);
