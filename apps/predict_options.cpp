@@ -45,7 +45,8 @@ double optionNumber(const std::string& option, const std::string& value, const s
 int absoluteItems(const mission::Mission& m, const std::vector<mission::NavStep>& steps) {
   std::set<int> items;  // an item repeated by DO_JUMP counts once
   for (const auto& st : steps) {
-    const bool flies_height = st.kind == mission::NavStep::Kind::Takeoff || (mission::isFlownTo(st) && st.has_position);
+    const bool flies_height = st.kind == mission::NavStep::Kind::Takeoff || st.kind == mission::NavStep::Kind::LoiterTurns ||
+                              (mission::isFlownTo(st) && st.has_position);
     if (flies_height && st.item >= 0 && mission::altitudeFrame(m.items[static_cast<std::size_t>(st.item)].frame) == mission::AltitudeFrame::Absolute)
       items.insert(st.item);
   }
