@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/Core>
 
@@ -42,6 +43,7 @@ class CircleTarget {
       : c_(center), r_(radius), goal_(2.0 * M_PI * turns) {
     const double w_cap = std::min(speed, std::sqrt(0.5 * accel * radius)) / radius;
     w_max_ = std::clamp(rate, -w_cap, w_cap);
+    cap_ = std::abs(rate) <= w_cap ? "CIRCLE_RATE" : speed <= std::sqrt(0.5 * accel * radius) ? "the speed in force" : "half the acceleration limit";
     if (turns > 0.0 && std::abs(w_max_) < 1e-6) {
       throw std::invalid_argument("autopilot parameter CIRCLE_RATE = 0 deg/s: a NAV_LOITER_TURNS would never end "
                                   "(AC_Circle's target does not turn); expected a rate other than 0");
@@ -62,10 +64,24 @@ class CircleTarget {
   bool done() const { return std::abs(total_) >= goal_; }
   double angularSpeedMax() const { return std::abs(w_max_); }  ///< [rad/s] the rate the target keeps
   double angularAccel() const { return alpha_; }               ///< [rad/s^2] how it gets there
+  /// [s] How long the target takes: the ramp, then the rest at the rate kept (or all in the ramp).
+  double duration() const {
+    const double w = std::abs(w_max_), ramp = w * w / (2.0 * alpha_);
+    if (goal_ <= 0.0) return 0.0;
+    return goal_ <= ramp ? std::sqrt(2.0 * goal_ / alpha_) : w / alpha_ + (goal_ - ramp) / w;
+  }
+  /// A note for the prediction: turns, radius and sense, the rate kept and what caps it, the time.
+  std::string note(bool ccw) const {
+    return "NAV_LOITER_TURNS: " + num(goal_ / (2.0 * M_PI)) + " turn(s) of " + num(r_) + " m " +
+           (ccw ? "counter-clockwise" : "clockwise") + " at " + num(std::abs(w_max_) * 180.0 / M_PI) + " deg/s (" +
+           num(std::abs(w_max_) * r_) + " m/s on the circle; capped by " + cap_ + "), " + num(duration()) +
+           " s after reaching the circle; the vehicle flies a little inside it (it chases a target it lags)";
+  }
 
  private:
   Eigen::Vector3d c_;
   double r_, goal_, w_max_ = 0.0, alpha_ = 0.0, w_ = 0.0, angle_ = 0.0, total_ = 0.0;
+  const char* cap_ = "CIRCLE_RATE";
 };
 
 /// ArduCopter 4.x's kinematic input shaper for a position given without velocity

@@ -1,6 +1,7 @@
 #pragma once
 // Private to mission/src: what the behaviour models share (recording the trajectory, limits in SI,
 // the landing descent, hovering in place).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -50,8 +51,10 @@ class Recorder {
   void completed(int k) {
     if (k >= 0 && k < static_cast<int>(out_.events.size())) out_.events[k].completed_s = t_;
   }
-  /// Adds a note on what the model assumed.
-  void note(const std::string& n) { out_.notes.push_back(n); }
+  /// Adds a note on what the model assumed (once: a note already given is not repeated).
+  void note(const std::string& n) {
+    if (std::find(out_.notes.begin(), out_.notes.end(), n) == out_.notes.end()) out_.notes.push_back(n);
+  }
   /// Starts the record at home on the ground and waits the take-off delay (FlightSettings, or the
   /// autopilot's documented spool-up time `spool_s` [s] when the settings give none).
   void startOnGround(double spool_s) {

@@ -383,6 +383,7 @@ struct Flyer {
     rec.reached(step);
     const double rate = st.loiter_ccw ? -std::abs(P.circle_rate) : std::abs(P.circle_rate);
     detail::CircleTarget c(center, st.loiter_radius_m, st.loiter_turns, rate, speed, P.accel, veh.p);
+    rec.note(c.note(st.loiter_ccw));
     Eigen::Vector3d target = stoppingPoint(speed);  // AC_Circle::init: the target at the stopping point
     while (!c.done()) {
       const double nav_dt = navStep(veh, P, rec.dt());

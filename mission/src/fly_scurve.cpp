@@ -382,6 +382,7 @@ Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, F
   const Eigen::Vector3d start = fl.veh.stoppingPoint();
   const double rate = st.loiter_ccw ? -std::abs(P.circle_rate) : std::abs(P.circle_rate);
   detail::CircleTarget circle(center, st.loiter_radius_m, st.loiter_turns, rate, speed, P.accel_xy, start);
+  fl.rec.note(circle.note(st.loiter_ccw));
   detail::InputShaper shaper(speed, P.accel_xy, P.jerk_xy);
   shaper.reset(start.head<2>());
   const double z = here.z();

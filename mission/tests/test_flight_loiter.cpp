@@ -101,6 +101,12 @@ TEST(LoiterTurns, ArduCopter4CirclesForTheTargetsRampAndRateAfterFlyingToTheEdge
   const StepEvent& e = f.events[static_cast<std::size_t>(k)];
   EXPECT_NEAR(e.completed_s - e.reached_s, circleTime(2, 20, 20, 10, 2.5), 0.05);
   EXPECT_NEAR(circleTime(2, 20, 20, 10, 2.5), 51.27, 0.01);
+  // The prediction says how the circle is flown and what caps its rate.
+  const bool noted = std::any_of(f.notes.begin(), f.notes.end(), [](const std::string& n) {
+    return n.find("NAV_LOITER_TURNS: 2 turn(s) of 20 m clockwise") != std::string::npos &&
+           n.find("capped by half the acceleration limit") != std::string::npos && n.find("51.27 s") != std::string::npos;
+  });
+  EXPECT_TRUE(noted);
   // It first flew to the closest point of the circle, (0, 74), and stopped there (WPNAV_RADIUS 2 m).
   for (const FlightSample& s : f.samples) {
     if (std::abs(s.t - e.reached_s) > 0.051) continue;
