@@ -515,6 +515,39 @@ TEST(Px4, TakeoffClimbsAtTheTakeoffSpeedBelowLandAlt1AndFasterAbove) {
   EXPECT_LT(f.events[0].reached_s, 22.0);
 }
 
+// PX4's land law by version, landing from 10 m with MPC_LAND_ALT1 12 m, MPC_LAND_ALT2 6 m,
+// MPC_LAND_SPEED 0.7 m/s, MPC_Z_VEL_MAX_DN 1.5 m/s. Before 1.11 (FlightTaskAutoMapper2) the
+// descent is at 0.7 m/s below ALT1: 10 / 0.7 = 14.29 s. From 1.11 it is graded between ALT2 and
+// ALT1, v(h) = 0.7 + 0.8 (h - 6) / 6: 7.5 ln(1.233 / 0.7) + 6 / 0.7 = 4.25 + 8.57 = 12.82 s, 1.47 s
+// less; it starts at 1.23 m/s, whose ramp at MPC_ACC_DOWN_MAX (3 m/s^2) loses v / 2a = 0.21 s
+// against 0.12 s: 1.38 s less in all (the 0.1 s samples bound the start and the touch-down).
+TEST(Px4, Before111LandsAtLandSpeedBelowLandAlt1AndGradesFromAlt2Since) {
+  auto landing = [](const std::string& version) {
+    const AutopilotConfig px4 = parseAutopilot(R"({"firmware":"PX4","version":")" + version +
+                                                   R"(","parameters":{"MPC_LAND_ALT1":12,"MPC_LAND_ALT2":6}})", "test");
+    Mission m = localMission({{5, 0, 10}}, 0.0, 0.0, false);
+    MissionItem land = m.items.back();
+    land.seq += 1;
+    land.command = 21;
+    land.lat_deg = land.lon_deg = 0.0;  // land where the vehicle is
+    land.alt_m = 0.0;
+    m.items.push_back(land);
+    const FlownMission f = flyMission(sequenceMission(m), px4);
+    double start = -1.0, down = -1.0, fastest = 0.0;
+    for (const auto& s : f.samples) {
+      if (s.phase != FlightPhase::Landing) continue;
+      if (start < 0.0 && s.velocity.z() < -0.01) start = s.t;
+      if (down < 0.0 && s.position.z() <= 0.0) down = s.t;
+      fastest = std::max(fastest, -s.velocity.z());
+    }
+    return std::make_pair(down - start, fastest);
+  };
+  const auto old_law = landing("1.10.2"), new_law = landing("1.14.0");
+  EXPECT_NEAR(old_law.second, 0.7, 0.01);
+  EXPECT_NEAR(new_law.second, 1.233, 0.03);
+  EXPECT_NEAR(old_law.first - new_law.first, 1.38, 0.2);
+}
+
 // PX4's navigator takes every DO_CHANGE_SPEED's param2 as the cruise speed, whatever the speed type
 // in param1 (even a climb speed), returns to MPC_XY_CRUISE on -1 (ArduPilot: no change), and RTL
 // starts at MPC_XY_CRUISE again (RtlDirect::on_activation resets it).
