@@ -45,7 +45,7 @@ const std::map<std::string, double> kPx4 = {
     {"MPC_LAND_SPEED", 0.7},   {"MPC_LAND_ALT1", 10.0},    {"MPC_LAND_ALT2", 5.0},   {"NAV_ACC_RAD", 10.0},
     {"NAV_MC_ALT_RAD", 0.8},   {"MIS_TAKEOFF_ALT", 2.5},   {"RTL_RETURN_ALT", 60.0}, {"RTL_DESCEND_ALT", 30.0},
     {"RTL_LAND_DELAY", 0.0},   {"MPC_YAWRAUTO_MAX", 45.0}, {"COM_SPOOLUP_TIME", 1.0},  {"RTL_CONE_ANG", 45.0},
-    {"RTL_MIN_DIST", 10.0},
+    {"RTL_MIN_DIST", 10.0},    {"MIS_YAW_ERR", 12.0},
 };
 
 // Major and minor version numbers of "4.5.7", "V3.3.3", "v1.14.0-dev" (0, 0 when none).

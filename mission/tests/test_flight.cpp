@@ -548,6 +548,19 @@ TEST(Px4, Before111LandsAtLandSpeedBelowLandAlt1AndGradesFromAlt2Since) {
   EXPECT_NEAR(old_law.first - new_law.first, 1.38, 0.2);
 }
 
+// PX4's RTL turns to the heading the vehicle armed with before it lands, which a mission file does
+// not give: the prediction says how long that may take, (180 - MIS_YAW_ERR) / MPC_YAWRAUTO_MAX =
+// (180 - 12) / 45 = 3.73 s with the defaults.
+TEST(Px4, ReturnSaysTheHeadingTurnItLeavesOut) {
+  const AutopilotConfig px4 = parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test");
+  const FlownMission f = flyMission(sequenceMission(localMission({{50, 0, 10}})), px4);
+  EXPECT_TRUE(std::any_of(f.notes.begin(), f.notes.end(),
+                          [](const std::string& n) { return n.find("up to 3.733 s of hover") != std::string::npos; }));
+  const FlownMission no_rtl = flyMission(sequenceMission(localMission({{50, 0, 10}}, 0.0, 0.0, false)), px4);
+  EXPECT_TRUE(std::none_of(no_rtl.notes.begin(), no_rtl.notes.end(),
+                           [](const std::string& n) { return n.find("heading the vehicle armed with") != std::string::npos; }));
+}
+
 // PX4's navigator takes every DO_CHANGE_SPEED's param2 as the cruise speed, whatever the speed type
 // in param1 (even a climb speed), returns to MPC_XY_CRUISE on -1 (ArduPilot: no change), and RTL
 // starts at MPC_XY_CRUISE again (RtlDirect::on_activation resets it).
