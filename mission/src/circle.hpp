@@ -31,24 +31,34 @@ inline Eigen::Vector3d circleEdge(const Eigen::Vector3d& center, double radius, 
   return {p.x(), p.y(), center.z()};
 }
 
+/// The centre of a LOITER_TURNS step: its position, or where the vehicle is (`here`, lat = lon = 0 in
+/// the item) at the item's height.
+inline Eigen::Vector3d circleCenter(const NavStep& st, const Eigen::Vector3d& here) {
+  return st.has_position ? st.target : Eigen::Vector3d(here.x(), here.y(), st.target.z());
+}
+
 /// AC_Circle's target: an angle that speeds up at max(accel / radius, 2 deg/s^2) to the rate asked
 /// (CIRCLE_RATE, negative counter-clockwise), capped at min(speed, sqrt(0.5 accel radius)) / radius,
 /// and the point of the circle at that angle (a bearing: 0 north, clockwise positive).
 class CircleTarget {
  public:
-  /// `rate` [rad/s] signed, `speed` [m/s] and `accel` [m/s^2] the position controller's limits;
-  /// the angle starts at the bearing of `start` from the centre (AC_Circle::init_start_angle).
-  CircleTarget(const Eigen::Vector3d& center, double radius, double turns, double rate, double speed, double accel,
+  /// The circle of LOITER_TURNS step `st` round `center` [m]: CIRCLE_RATE `rate_param` [rad/s] in
+  /// the step's sense (ModeAuto::circle_movetoedge_start: |CIRCLE_RATE|, negative counter-clockwise),
+  /// `speed` [m/s] and `accel` [m/s^2] the position controller's limits; the angle starts at the
+  /// bearing of `start` from the centre (AC_Circle::init_start_angle).
+  CircleTarget(const NavStep& st, const Eigen::Vector3d& center, double rate_param, double speed, double accel,
                const Eigen::Vector3d& start)
-      : c_(center), r_(radius), goal_(2.0 * M_PI * turns) {
-    const double w_cap = std::min(speed, std::sqrt(0.5 * accel * radius)) / radius;
+      : c_(center), r_(st.loiter_radius_m), goal_(2.0 * M_PI * st.loiter_turns), ccw_(st.loiter_ccw) {
+    const double rate = ccw_ ? -std::abs(rate_param) : std::abs(rate_param);
+    const double edge_speed = std::sqrt(0.5 * accel * r_);  // [m/s] within half the acceleration limit
+    const double w_cap = std::min(speed, edge_speed) / r_;
     w_max_ = std::clamp(rate, -w_cap, w_cap);
-    cap_ = std::abs(rate) <= w_cap ? "CIRCLE_RATE" : speed <= std::sqrt(0.5 * accel * radius) ? "the speed in force" : "half the acceleration limit";
-    if (turns > 0.0 && std::abs(w_max_) < 1e-6) {
+    cap_ = std::abs(rate) <= w_cap ? "CIRCLE_RATE" : speed <= edge_speed ? "the speed in force" : "half the acceleration limit";
+    if (st.loiter_turns > 0.0 && std::abs(w_max_) < 1e-6) {
       throw std::invalid_argument("autopilot parameter CIRCLE_RATE = 0 deg/s: a NAV_LOITER_TURNS would never end "
                                   "(AC_Circle's target does not turn); expected a rate other than 0");
     }
-    alpha_ = std::max(accel / radius, kCircleAngularAccelMin);
+    alpha_ = std::max(accel / r_, kCircleAngularAccelMin);
     const Eigen::Vector2d d = (start - center).head<2>();
     angle_ = d.norm() > 1e-9 ? std::atan2(d.x(), d.y()) : 0.0;
   }
@@ -62,8 +72,6 @@ class CircleTarget {
   }
   /// True once the turns are flown (ModeAuto::verify_circle: |total angle| / 2 pi >= turns).
   bool done() const { return std::abs(total_) >= goal_; }
-  double angularSpeedMax() const { return std::abs(w_max_); }  ///< [rad/s] the rate the target keeps
-  double angularAccel() const { return alpha_; }               ///< [rad/s^2] how it gets there
   /// [s] How long the target takes: the ramp, then the rest at the rate kept (or all in the ramp).
   double duration() const {
     const double w = std::abs(w_max_), ramp = w * w / (2.0 * alpha_);
@@ -71,16 +79,18 @@ class CircleTarget {
     return goal_ <= ramp ? std::sqrt(2.0 * goal_ / alpha_) : w / alpha_ + (goal_ - ramp) / w;
   }
   /// A note for the prediction: turns, radius and sense, the rate kept and what caps it, the time.
-  std::string note(bool ccw) const {
+  std::string note() const {
     return "NAV_LOITER_TURNS: " + num(goal_ / (2.0 * M_PI)) + " turn(s) of " + num(r_) + " m " +
-           (ccw ? "counter-clockwise" : "clockwise") + " at " + num(std::abs(w_max_) * 180.0 / M_PI) + " deg/s (" +
+           (ccw_ ? "counter-clockwise" : "clockwise") + " at " + num(std::abs(w_max_) * 180.0 / M_PI) + " deg/s (" +
            num(std::abs(w_max_) * r_) + " m/s on the circle; capped by " + cap_ + "), " + num(duration()) +
            " s after reaching the circle; the vehicle flies a little inside it (it chases a target it lags)";
   }
 
  private:
   Eigen::Vector3d c_;
-  double r_, goal_, w_max_ = 0.0, alpha_ = 0.0, w_ = 0.0, angle_ = 0.0, total_ = 0.0;
+  double r_, goal_;
+  bool ccw_;
+  double w_max_ = 0.0, alpha_ = 0.0, w_ = 0.0, angle_ = 0.0, total_ = 0.0;
   const char* cap_ = "CIRCLE_RATE";
 };
 

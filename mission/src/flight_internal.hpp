@@ -93,6 +93,13 @@ inline double sqrtController(double e, double p, double a) {
   return std::copysign(mag, e);
 }
 
+/// The autopilots' stopping distance [m] from speed `v` [m/s] (AP_Math stopping_distance, the
+/// inverse of sqrtController with gain `p` [1/s] and deceleration `a` [m/s^2]; AC_PosControl's
+/// get_stopping_point_xy): v / p below a / p, a / 2p^2 + v^2 / 2a above.
+inline double stoppingDistance(double v, double p, double a) {
+  return v < a / p ? v / p : a / (2.0 * p * p) + v * v / (2.0 * a);
+}
+
 /// [m/s^2] Drag deceleration of airframe `a` at horizontal ground velocity `vh` [m/s]: c1 v + c2 v^2
 /// against the velocity through the air (`vh` minus the wind).
 inline Eigen::Vector2d airDrag(const Airframe& a, const Eigen::Vector2d& vh) {

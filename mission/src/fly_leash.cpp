@@ -364,9 +364,7 @@ struct Flyer {
     const Eigen::Vector2d vh = veh.v.head<2>();
     const double v = vh.norm();
     if (v < 1e-9) return veh.p;
-    const double lin = P.accel / P.pos_xy_p;
-    double d = v < lin ? v / P.pos_xy_p : P.accel / (2.0 * P.pos_xy_p * P.pos_xy_p) + v * v / (2.0 * P.accel);
-    d = std::min(d, leashLength(speed, P.accel, P.pos_xy_p));
+    const double d = std::min(detail::stoppingDistance(v, P.pos_xy_p, P.accel), leashLength(speed, P.accel, P.pos_xy_p));
     Eigen::Vector3d out = veh.p;
     out.head<2>() += vh / v * d;
     return out;
@@ -377,13 +375,12 @@ struct Flyer {
   // until it has turned the turns; returns where the next leg starts (the stopping point:
   // set_wp_destination with the waypoint controller idle for more than a second).
   Eigen::Vector3d circle(const NavStep& st, const Eigen::Vector3d& from, double speed, int step) {
-    const Eigen::Vector3d center = st.has_position ? st.target : Eigen::Vector3d(from.x(), from.y(), st.target.z());
+    const Eigen::Vector3d center = detail::circleCenter(st, from);
     const Eigen::Vector3d edge = detail::circleEdge(center, st.loiter_radius_m, stoppingPoint(speed), veh.v.head<2>());
     leg(from, edge, speed, false, FlightPhase::Mission, step);
     rec.reached(step);
-    const double rate = st.loiter_ccw ? -std::abs(P.circle_rate) : std::abs(P.circle_rate);
-    detail::CircleTarget c(center, st.loiter_radius_m, st.loiter_turns, rate, speed, P.accel, veh.p);
-    rec.note(c.note(st.loiter_ccw));
+    detail::CircleTarget c(st, center, P.circle_rate, speed, P.accel, veh.p);
+    rec.note(c.note());
     Eigen::Vector3d target = stoppingPoint(speed);  // AC_Circle::init: the target at the stopping point
     while (!c.done()) {
       const double nav_dt = navStep(veh, P, rec.dt());

@@ -208,8 +208,9 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
   for (std::size_t k = 0; k < steps.size(); ++k) {
     if (steps[k].kind == NavStep::Kind::LoiterTurns) {
       throw std::invalid_argument("step " + std::to_string(k) + " (mission item index " + std::to_string(steps[k].item) +
-                                  "): NAV_LOITER_TURNS is not modelled for PX4 (its multicopter loiter is not read); "
-                                  "the ArduCopter models fly it");
+                                  "): NAV_LOITER_TURNS is not modelled for PX4 (the mission feasibility check of some "
+                                  "PX4 versions rejects it as not yet supported, and how the others fly it was not "
+                                  "read); the ArduCopter models fly it");
     }
   }
   const Params P = readParams(ap);

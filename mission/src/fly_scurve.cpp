@@ -179,6 +179,15 @@ struct Flight {
     clock = veh.step(p, v, a, rec.dt());
     rec.tick(veh.position(), veh.velocity(), phase, step);
   }
+  // Starts the waypoint controller afresh where the vehicle would stop now, at height `z` [m]
+  // (AC_WPNav::wp_and_spline_init, as ModeRTL::init and a wp_start after the controller sat idle
+  // run it): the position controller restarts and the S-curve clock runs at full speed again.
+  Eigen::Vector3d restartAtStoppingPoint(double z) {
+    const Eigen::Vector3d stop = veh.stoppingPoint();
+    veh.restartController();
+    clock = 1.0;
+    return {stop.x(), stop.y(), z};
+  }
   // Holds the target at `at` for `seconds` [s] while the vehicle settles on it.
   void hold(const Eigen::Vector3d& at, double seconds, FlightPhase phase, int step) {
     const long n = std::lround(std::max(0.0, seconds) / rec.dt());
@@ -368,7 +377,7 @@ std::vector<LegSpec> chainFrom(const std::vector<NavStep>& steps, std::size_t k,
 // starts afresh from the vehicle's stopping point (wp_start: the waypoint controller was idle).
 Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, FlightPhase phase, int k, Eigen::Vector3d here) {
   const double speed = st.speed_xy > 0.0 ? st.speed_xy : P.speed_xy;
-  const Eigen::Vector3d center = st.has_position ? st.target : Eigen::Vector3d(here.x(), here.y(), st.target.z());
+  const Eigen::Vector3d center = detail::circleCenter(st, here);
   const Eigen::Vector2d heading = fl.veh.velocity().head<2>();
   const Eigen::Vector3d edge = detail::circleEdge(center, st.loiter_radius_m, fl.veh.stoppingPoint(), heading);
   if ((fl.veh.position() - edge).norm() > detail::kCircleEdgeDistance) {
@@ -380,9 +389,8 @@ Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, F
   fl.rec.reached(k);
   // circle_start: AC_Circle::init restarts the position controller at its stopping point.
   const Eigen::Vector3d start = fl.veh.stoppingPoint();
-  const double rate = st.loiter_ccw ? -std::abs(P.circle_rate) : std::abs(P.circle_rate);
-  detail::CircleTarget circle(center, st.loiter_radius_m, st.loiter_turns, rate, speed, P.accel_xy, start);
-  fl.rec.note(circle.note(st.loiter_ccw));
+  detail::CircleTarget circle(st, center, P.circle_rate, speed, P.accel_xy, start);
+  fl.rec.note(circle.note());
   detail::InputShaper shaper(speed, P.accel_xy, P.jerk_xy);
   shaper.reset(start.head<2>());
   const double z = here.z();
@@ -396,10 +404,7 @@ Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, F
   }
   fl.rec.completed(k);
   // wp_start: the waypoint controller, idle while circling, starts at the stopping point.
-  const Eigen::Vector3d stop = fl.veh.stoppingPoint();
-  fl.veh.restartController();
-  fl.clock = 1.0;
-  return {stop.x(), stop.y(), z};
+  return fl.restartAtStoppingPoint(z);
 }
 
 void land(Recorder& rec, const Params& P, double speed_dn, int step, const FlightSettings& s) {
@@ -444,12 +449,9 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
     } else if (st.kind == NavStep::Kind::ReturnToLaunch) {
       // Return altitude (ModeRTL::compute_return_target): RTL_ALT (at least RTL_CLIMB_MIN above
       // here), within the cone RTL_CONE_SLOPE x distance home (at least 2.5 m), never a descent.
-      // RTL starts from where the vehicle would stop now (it may still be moving or lagging).
-      const Eigen::Vector3d stop = fl.veh.stoppingPoint();
-      here = {stop.x(), stop.y(), here.z()};
-      // ModeRTL::init runs AC_WPNav::wp_and_spline_init: the controller starts afresh.
-      fl.veh.restartController();
-      fl.clock = 1.0;
+      // RTL starts from where the vehicle would stop now (it may still be moving or lagging), the
+      // controller afresh (ModeRTL::init runs AC_WPNav::wp_and_spline_init).
+      here = fl.restartAtStoppingPoint(here.z());
       double alt = std::max(P.rtl_alt, here.z() + P.rtl_climb_min);
       if (P.rtl_cone_slope >= 0.5) alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, 2.5));
       // The climb leg runs from the position target to the measured altitude at least: a vehicle is

@@ -89,8 +89,7 @@ class PositionFollower {
     const Eigen::Vector2d vh = v_.head<2>();
     const double v = vh.norm();
     if (v < 1e-9) return p_;
-    const double d = v < g_.accel / g_.pos_p ? v / g_.pos_p
-                                             : g_.accel / (2.0 * g_.pos_p * g_.pos_p) + v * v / (2.0 * g_.accel);
+    const double d = stoppingDistance(v, g_.pos_p, g_.accel);
     Eigen::Vector3d out = p_;
     out.head<2>() += vh / v * d;
     return out;
