@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -136,6 +137,31 @@ energy::EnergyModel inWind(const energy::EnergyModel& model, const energy::Vehic
   return out;
 }
 
+// A note when the `.plan` says it was written for another firmware (firmwareType) or for a vehicle
+// that is not a multicopter (vehicleType) than the one predicted: QGroundControl writes a mission
+// for the firmware and vehicle it was connected to or set for, and the prediction flies it as the
+// vehicle file's autopilot does. Files that do not say (WPL, firmwareType 0) get no note.
+void writtenForNotes(const Mission& m, const AutopilotConfig& a, std::vector<std::string>& notes) {
+  const bool px4 = a.family == AutopilotFamily::PX4;
+  const char* written = m.firmware_type == 3 ? "ArduPilot" : m.firmware_type == 12 ? "PX4" : nullptr;
+  if (written != nullptr && (m.firmware_type == 12) != px4) {
+    notes.push_back(m.source + ": the .plan was written for " + written + " (firmwareType " +
+                    std::to_string(m.firmware_type) + ") and is predicted as the vehicle's " + a.firmware + " " +
+                    a.version + " flies it; items the firmwares read differently (speeds, take-off, loiter and "
+                    "landing items) follow " + a.firmware);
+  }
+  static const int multicopter[] = {0, 2, 3, 4, 13, 14, 15, 29, 35};  // MAV_TYPE: generic and rotary wings
+  if (std::find(std::begin(multicopter), std::end(multicopter), m.vehicle_type) != std::end(multicopter)) return;
+  const int t = m.vehicle_type;
+  const std::string kind = t == 1                 ? "a fixed-wing aircraft"
+                           : (t >= 19 && t <= 25) ? "a VTOL aircraft"
+                           : (t == 10 || t == 11) ? "a rover or boat"
+                           : t == 12              ? "a submarine"
+                                                  : "a vehicle that is not a multicopter";
+  notes.push_back(m.source + ": the .plan was written for " + kind + " (vehicleType " + std::to_string(t) +
+                  "); it is predicted as the vehicle file's multicopter flies it");
+}
+
 }  // namespace
 
 MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
@@ -163,6 +189,7 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   }
   MissionPrediction p;
   p.warnings = m.warnings;
+  writtenForNotes(m, autopilot, p.warnings);
   const std::vector<NavStep> steps = sequenceMission(m, &p.warnings);
   FlightSettings fs = s.flight;
   if (s.airframe_from_vehicle) fs.airframe = airframeOfVehicle(v, v.name);
