@@ -5,10 +5,12 @@
 // reached when the vehicle is within its acceptance radius (NAV_ACC_RAD) horizontally and
 // NAV_MC_ALT_RAD vertically (docs/autopilots.md, section "PX4").
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "flight_internal.hpp"
+#include "velocity_smoothing.hpp"
 
 namespace wattswath::mission {
 namespace {
@@ -66,51 +68,127 @@ double brakingSpeed(double j, double a, double d, double v_end) {
   return std::max(0.5 * (-b + std::sqrt(b * b + 4.0 * (2.0 * a * d + v_end * v_end))), v_end);
 }
 
-// Jerk-limited tracking of a desired velocity on one axis: acceleration towards the change,
-// at most `a_max`, changing at most `jerk` per second and easing in (sqrt law) near the target.
-void trackAxis(double v_des, double a_max, double jerk, double dt, double& v, double& a) {
-  const double dv = v_des - v;
-  const double a_des = std::copysign(std::min(a_max, std::sqrt(2.0 * jerk * std::abs(dv))), dv);
-  a += std::clamp(a_des - a, -jerk * dt, jerk * dt);
-  v += a * dt;
+// [m/s] Largest horizontal speed at `from` that reaches waypoint `to` at the speed its corner
+// towards `next` allows and `next` at rest (TrajectoryConstraints computeXYSpeedFromWaypoints of
+// [from, to, next]: the corner speed sqrt(MPC_XY_TRAJ_P MPC_ACC_HOR r tan(alpha / 2)) of the angle
+// alpha at `to`, 0 when `next` is `to` or within the acceptance radius `rad` of it).
+double xySpeed(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const Eigen::Vector3d& next, double cruise,
+               double rad, const Params& P) {
+  const double to_next = (next - to).head<2>().norm();
+  double at_to = 0.0;
+  if (to_next > 0.001 && to_next >= rad) {
+    const Eigen::Vector2d in = (to - from).head<2>(), out = (to - next).head<2>();
+    const double c = in.norm() > 0.0 ? in.normalized().dot(out.normalized()) : 0.0;
+    const double alpha = std::clamp(std::acos(std::clamp(c, -1.0, 1.0)), 0.0, M_PI - 1.1920929e-07);
+    const double turn = std::sqrt(P.traj_p * P.acc * rad * std::tan(0.5 * alpha));
+    at_to = std::min({turn, brakingSpeed(P.jerk, P.acc, to_next, 0.0), cruise});
+  }
+  return std::min(cruise, brakingSpeed(P.jerk, P.acc, (from - to).head<2>().norm(), at_to));
 }
 
+// Scales `v` down so that its horizontal (`xy` true) or vertical part is at most `limit`; only that
+// part when both are below 0.5 m/s (TrajMath clampToXYNorm / clampToZNorm with PX4's accuracy).
+void clampPart(Eigen::Vector3d& v, double limit, bool xy) {
+  const double part = xy ? v.head<2>().norm() : std::abs(v.z());
+  const double scale = part > 1.1920929e-07 ? limit / part : 1.0;
+  if (scale >= 1.0) return;
+  if (limit < 0.5 && part < 0.5) {
+    if (xy) v.head<2>() *= scale;
+    else v.z() *= scale;
+  } else {
+    v *= scale;
+  }
+}
+
+// Vertical limits of a trajectory: speed [m/s] and acceleration [m/s^2].
+struct ZLimits {
+  double speed, acc;
+};
+
+// The vehicle's setpoint as PX4's position task generates it (PositionSmoothing): each tick a
+// desired velocity from the waypoints, then three jerk-limited axes (JerkLimitedAxis) planning
+// the quickest change to it, time-synchronised, flying one tick of the plan. The model flies the
+// setpoint exactly (no tracking error, so no time stretch).
 struct Flyer {
   Recorder& rec;
   const Params& P;
-  Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
+  std::array<detail::JerkLimitedAxis, 3> axes{};
+  Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
+  Eigen::Vector3d prev_wp = Eigen::Vector3d::Zero();  // the waypoint before the target (L1 line start)
+  double speed_before_turn = 0.0;                     // [m/s] the speed limit kept while turning
 
-  // One time step of the jerk-limited tracking towards `v_des` [m/s], not yet recorded.
-  void advance(const Eigen::Vector3d& v_des, double acc_xy, double acc_z_up, double acc_z_dn) {
-    const double dt = rec.dt();
-    for (int i = 0; i < 2; ++i) trackAxis(v_des[i], acc_xy, P.jerk, dt, v[i], a[i]);
-    trackAxis(v_des.z(), v_des.z() > v.z() ? acc_z_up : acc_z_dn, P.jerk, dt, v[2], a[2]);
-    p += v * dt;
+  // One tick towards `v_des` [m/s]: horizontal limits MPC_JERK_AUTO, MPC_ACC_HOR, MPC_XY_VEL_MAX;
+  // vertical `z` (speed and acceleration of the current direction), not recorded.
+  void advance(const Eigen::Vector3d& v_des, ZLimits z) {
+    for (int i = 0; i < 2; ++i) axes[i].setLimits(P.jerk, P.acc, P.vel_max);
+    axes[2].setLimits(P.jerk, z.acc, std::max(z.speed, std::abs(v_des.z())));
+    for (int i = 0; i < 3; ++i) axes[i].plan(v_des[i]);
+    detail::synchronise(axes);
+    for (int i = 0; i < 3; ++i) {
+      axes[i].advance(rec.dt());
+      p[i] = axes[i].position();
+      v[i] = axes[i].velocity();
+    }
   }
 
-  void step(const Eigen::Vector3d& v_des, double acc_xy, double acc_z_up, double acc_z_dn, FlightPhase phase, int k) {
-    advance(v_des, acc_xy, acc_z_up, acc_z_dn);
+  void step(const Eigen::Vector3d& v_des, ZLimits z, FlightPhase phase, int k) {
+    advance(v_des, z);
     rec.tick(p, v, phase, k);
   }
 
-  // [m/s] The horizontal desired velocity towards `xy` at up to `cruise`, arriving at `v_exit`.
-  Eigen::Vector2d towards(const Eigen::Vector2d& xy, double cruise, double v_exit) const {
-    const Eigen::Vector2d d = xy - p.head<2>();
-    const double dxy = d.norm();
-    if (dxy <= 1e-6) return Eigen::Vector2d::Zero();
-    return d / dxy * std::min(cruise, brakingSpeed(P.jerk, P.acc, dxy, v_exit));
+  // The mission's vertical limits towards height `z` [m]: MPC_Z_V_AUTO_UP / MPC_ACC_UP_MAX up,
+  // MPC_Z_V_AUTO_DN / MPC_ACC_DOWN_MAX down.
+  ZLimits zLimits(double z) const { return z > p.z() ? ZLimits{P.up, P.acc_up} : ZLimits{P.down, P.acc_down}; }
+
+  // True while the horizontal velocity is more than about 11 degrees off the direction to `to`,
+  // above 0.2 m/s and outside `rad` of it (PositionSmoothing::_isTurning).
+  bool turning(const Eigen::Vector3d& to, double rad) const {
+    const Eigen::Vector2d vel = v.head<2>(), d = (to - p).head<2>();
+    if (vel.norm() <= 0.2 || d.norm() <= rad) return false;
+    return vel.normalized().dot(d.normalized()) < 0.98;
   }
 
-  // Flies to `to` at `cruise`, leaving it at `v_exit` [m/s]; returns when it is reached.
-  void flyTo(const Eigen::Vector3d& to, double cruise, double v_exit, double acc_rad, FlightPhase phase, int k) {
+  // The point on the line prev_wp -> `to` at max(rad, 5 m) from the vehicle, or the foot of the
+  // perpendicular when the line is farther (PositionSmoothing::_getL1Point).
+  Eigen::Vector2d l1Point(const Eigen::Vector3d& to, double rad) const {
+    const Eigen::Vector2d a = prev_wp.head<2>(), line = to.head<2>() - a;
+    const Eigen::Vector2d u = line.norm() > 0.0 ? Eigen::Vector2d(line.normalized()) : Eigen::Vector2d::Zero();
+    const Eigen::Vector2d closest = a + u * u.dot(p.head<2>() - a);
+    const double cross = (closest - p.head<2>()).norm(), l1 = std::max(rad, 5.0);
+    return closest + u * (l1 > cross ? std::sqrt(l1 * l1 - cross * cross) : 0.0);
+  }
+
+  // [m/s] The desired velocity towards waypoint `to` on the way to `next` (`to` itself: a stop),
+  // PositionSmoothing::_generateVelocitySetpoint: aimed at `to`, or while turning at the L1 point
+  // with the speed limit of before the turn; a straight line in 3-D scaled to the horizontal and
+  // vertical limits.
+  Eigen::Vector3d desired(const Eigen::Vector3d& to, const Eigen::Vector3d& next, double cruise, double rad, ZLimits z) {
+    Eigen::Vector3d aim = to;
+    double xy = xySpeed(p, to, next, cruise, rad, P);
+    if (turning(to, rad)) {
+      aim.head<2>() = l1Point(to, rad);
+      xy = std::min(speed_before_turn, xy);
+    } else {
+      speed_before_turn = xy;
+    }
+    const double zs = std::min(z.speed, brakingSpeed(P.jerk, z.acc, std::abs(to.z() - p.z()), 0.0));
+    const Eigen::Vector3d d = aim - p;
+    Eigen::Vector3d vs = d.norm() > 0.0 ? Eigen::Vector3d(d.normalized() * std::hypot(xy, zs)) : Eigen::Vector3d::Zero();
+    clampPart(vs, xy, true);
+    clampPart(vs, zs, false);
+    return vs;
+  }
+
+  // Flies to `to` leaving towards `next` (`to`: a stop) at up to `cruise`; returns when it is
+  // within `acc_rad` horizontally and NAV_MC_ALT_RAD vertically; `to` becomes the previous waypoint.
+  void flyTo(const Eigen::Vector3d& to, const Eigen::Vector3d& next, double cruise, double acc_rad, FlightPhase phase, int k) {
     while (true) {
       const Eigen::Vector3d d = to - p;
-      if (d.head<2>().norm() <= acc_rad && std::abs(d.z()) <= P.alt_rad) return;
-      Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
-      v_des.head<2>() = towards(to.head<2>(), cruise, v_exit);
-      v_des.z() = std::clamp(detail::sqrtController(d.z(), 1.0, P.acc_down), -P.down, P.up);
-      step(v_des, P.acc, P.acc_up, P.acc_down, phase, k);
+      if (d.head<2>().norm() <= acc_rad && std::abs(d.z()) <= P.alt_rad) break;
+      const ZLimits z = zLimits(to.z());
+      step(desired(to, next, cruise, acc_rad, z), z, phase, k);
     }
+    prev_wp = to;
   }
 
   // Holds position at `at` for `seconds` [s], closing on it first if it is not there yet: the
@@ -118,10 +196,8 @@ struct Flyer {
   void holdAt(const Eigen::Vector3d& at, double cruise, double seconds, FlightPhase phase, int k) {
     const long n = std::lround(std::max(0.0, seconds) / rec.dt());
     for (long i = 0; i < n; ++i) {
-      Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
-      v_des.head<2>() = towards(at.head<2>(), cruise, 0.0);
-      v_des.z() = std::clamp(detail::sqrtController(at.z() - p.z(), 1.0, P.acc_down), -P.down, P.up);
-      step(v_des, P.acc, P.acc_up, P.acc_down, phase, k);
+      const ZLimits z = zLimits(at.z());
+      step(desired(at, at, cruise, P.acc_rad, z), z, phase, k);
     }
   }
 
@@ -130,47 +206,43 @@ struct Flyer {
   template <class Law>
   void land(const Eigen::Vector2d& xy, double cruise, Law law, int k) {
     while (p.z() > 0.0) {
+      const Eigen::Vector3d at{xy.x(), xy.y(), p.z()};
       Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
-      v_des.head<2>() = towards(xy, cruise, 0.0);
+      v_des.head<2>() = (at - p).head<2>().norm() > 0.0 ? Eigen::Vector2d(desired(at, at, cruise, P.acc_rad, {0.0, P.acc_down}).head<2>())
+                                                         : Eigen::Vector2d::Zero();
       v_des.z() = -law(p.z());
-      advance(v_des, P.acc, P.acc_down, P.acc_down);
-      if (p.z() <= 0.0) p.z() = 0.0, v.setZero(), a.setZero();
+      advance(v_des, {P.vel_max_dn, P.acc_down});
+      if (p.z() <= 0.0) {
+        p.z() = 0.0, v.setZero();
+        for (int i = 0; i < 3; ++i) axes[i].reset(p[i], 0.0);
+      }
       rec.tick(p, v, FlightPhase::Landing, k);
     }
   }
 
   void hover(double seconds, FlightPhase phase, int k) {
     const long n = std::lround(seconds / rec.dt());
-    for (long i = 0; i < n; ++i) step(Eigen::Vector3d::Zero(), P.acc, P.acc_up, P.acc_down, phase, k);
+    for (long i = 0; i < n; ++i) step(Eigen::Vector3d::Zero(), zLimits(p.z()), phase, k);
   }
 
-  // Vertical flight to height `z` [m] at up to `speed` [m/s].
+  // Vertical flight to height `z` [m] at up to `speed` [m/s], done within NAV_MC_ALT_RAD of it.
   void vertical(double z, double speed, double acc, FlightPhase phase, int k) {
-    vertical(z, [&](double) { return std::make_pair(speed, acc); }, phase, k);
+    vertical(z, P.alt_rad, [&](double) { return ZLimits{speed, acc}; }, phase, k);
   }
-  // Vertical flight to height `z` [m], the speed and acceleration limits [m/s, m/s^2] a function of
-  // the height.
+  // Vertical flight to height `z` [m] over the current position, the limits a function of the
+  // height (PositionSmoothing with a target straight above or below where it started, so it comes
+  // back to that point if it was still moving); done, as the navigator's item is reached, within
+  // `accept` [m] of the height (MissionBlock: NAV_MC_ALT_RAD; a take-off only needs to be above
+  // z - accept). The climb goes on into the next item.
   template <class Limits>
-  void vertical(double z, Limits limits, FlightPhase phase, int k) {
-    while (std::abs(z - p.z()) > P.alt_rad * 0.5 || std::abs(v.z()) > 0.1) {
-      const auto [speed, acc] = limits(p.z());
-      Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
-      v_des.z() = std::clamp(detail::sqrtController(z - p.z(), 1.0, acc), -speed, speed);
-      step(v_des, P.acc, acc, acc, phase, k);
+  void vertical(double z, double accept, Limits limits, FlightPhase phase, int k) {
+    const Eigen::Vector3d to{p.x(), p.y(), z};
+    while (z > p.z() ? z - p.z() >= accept : p.z() - z > accept) {
+      const ZLimits lim = limits(p.z());
+      step(desired(to, to, P.cruise, P.acc_rad, lim), lim, phase, k);
     }
   }
 };
-
-// Corner speed at waypoint `here` between `from` and `next` (TrajectoryConstraints).
-double cornerSpeed(const Eigen::Vector3d& from, const Eigen::Vector3d& here, const Eigen::Vector3d& next, const Params& P,
-                   double acc_rad) {
-  const Eigen::Vector2d a = (here - from).head<2>(), b = (next - here).head<2>();
-  if (a.norm() < 1e-3 || b.norm() < std::max(acc_rad, 1e-3)) return 0.0;
-  const double cos_turn = std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0);
-  const double alpha = M_PI - std::acos(cos_turn);  // interior angle, pi = straight on
-  if (alpha >= M_PI - 1e-6) return 1e9;
-  return std::sqrt(P.traj_p * P.acc * acc_rad * std::tan(0.5 * alpha));
-}
 
 // [m] The altitude above home at which RTL returns (PX4 navigator, RTL_TYPE 0, home as the
 // destination) from `here` [m, home at the origin], never below the current altitude.
@@ -229,17 +301,20 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       // MPC_TKO_SPEED with the ramp's acceleration, above it at MPC_Z_V_AUTO_UP and MPC_ACC_UP_MAX.
       const double ramp_acc = P.tko_ramp > 0.0 ? std::min(P.acc_up, P.tko_speed / P.tko_ramp) : P.acc_up;
       const auto limits = [&](double h) {
-        return h < P.land_alt1 ? std::make_pair(std::min(P.tko_speed, P.up), ramp_acc) : std::make_pair(P.up, P.acc_up);
+        return h < P.land_alt1 ? ZLimits{std::min(P.tko_speed, P.up), ramp_acc} : ZLimits{P.up, P.acc_up};
       };
-      f.vertical(std::max(st.target.z(), 0.5), limits, FlightPhase::Takeoff, ki);
+      // Reached once above the take-off height less NAV_MC_ALT_RAD, or half the height when that
+      // is smaller (MissionBlock::position_achieved, NAV_CMD_TAKEOFF for a rotary wing).
+      const double tko_alt = std::max(st.target.z(), 0.5);
+      f.vertical(tko_alt, std::min(P.alt_rad, 0.5 * tko_alt), limits, FlightPhase::Takeoff, ki);
+      f.prev_wp = f.p;
     } else if (isFlownTo(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : f.p;
       const double rad = st.accept_radius_m > 0.0 ? st.accept_radius_m : P.acc_rad;
-      double v_exit = 0.0;
+      // The navigator's next item (a stop when there is none to fly on to).
       const bool stop = st.hold_s > 0.0 || s.stop_at_waypoints || st.kind == NavStep::Kind::LoiterTime || k + 1 >= steps.size() ||
                         !steps[k + 1].has_position || steps[k + 1].kind == NavStep::Kind::ReturnToLaunch;
-      if (!stop) v_exit = std::min(cruise, cornerSpeed(f.p, to, steps[k + 1].target, P, rad));
-      f.flyTo(to, cruise, v_exit, rad, FlightPhase::Mission, ki);
+      f.flyTo(to, stop ? to : steps[k + 1].target, cruise, rad, FlightPhase::Mission, ki);
       rec.reached(ki);
       if (st.hold_s > 0.0) f.holdAt(to, cruise, st.hold_s, FlightPhase::Mission, ki);
     } else if (st.kind == NavStep::Kind::Delay) {
@@ -257,13 +332,20 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
         land_xy.setZero();
         land_cruise = P.cruise;  // RTL starts at the default cruise speed (RTL/RtlDirect::on_activation)
         // A return altitude below the vehicle (before 1.13, near home) is reached in the descent below.
-        if (const double ret = returnAltitude(f.p, P); ret > f.p.z()) f.vertical(ret, P.up, P.acc_up, ph, ki);
-        f.flyTo({0.0, 0.0, f.p.z()}, P.cruise, 0.0, P.acc_rad, ph, ki);
-        if (f.p.z() > P.rtl_descend) f.flyTo({0.0, 0.0, P.rtl_descend}, P.cruise, 0.0, P.acc_rad, ph, ki);
+        // The return item flies at the return altitude, the climb item having ended within
+        // NAV_MC_ALT_RAD of it (RTL_STATE_CLIMB, then RTL_STATE_RETURN at the same altitude).
+        const double ret = std::max(returnAltitude(f.p, P), f.p.z());
+        if (ret > f.p.z()) f.vertical(ret, P.up, P.acc_up, ph, ki);
+        f.prev_wp = f.p;
+        const Eigen::Vector3d over_home{0.0, 0.0, ret};
+        f.flyTo(over_home, over_home, P.cruise, P.acc_rad, ph, ki);
+        const Eigen::Vector3d descended{0.0, 0.0, P.rtl_descend};
+        if (f.p.z() > P.rtl_descend) f.flyTo(descended, descended, P.cruise, P.acc_rad, ph, ki);
         f.holdAt({0.0, 0.0, f.p.z()}, P.cruise, P.rtl_delay, ph, ki);
       } else if (st.has_position) {
         land_xy = st.target.head<2>();
-        f.flyTo({st.target.x(), st.target.y(), f.p.z()}, cruise, 0.0, P.acc_rad, ph, ki);
+        const Eigen::Vector3d over{st.target.x(), st.target.y(), f.p.z()};
+        f.flyTo(over, over, cruise, P.acc_rad, ph, ki);
       }
       rec.reached(ki);
       auto law = [&](double h) {
