@@ -1,6 +1,8 @@
 // Dispatch to the behaviour model of the autopilot's family, and the flown trajectory as pieces.
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "flight_internal.hpp"
 
@@ -62,6 +64,54 @@ energy::Phase energyPhase(const FlightSample& a, const FlightSample& b, double l
   return energy::Phase::Cruise;
 }
 
+// "step K (mission item index I)" for notes.
+std::string stepName(const NavStep& st, std::size_t k) {
+  return "step " + std::to_string(k) + " (mission item index " + std::to_string(st.item) + ")";
+}
+
+// The steps as ArduPilot stores and reads them, for its two models:
+// - AP_Mission (mavlink_int_to_mission_cmd) keeps a waypoint's, spline's or LOITER_TIME's hold in
+//   whole seconds (uint16 p1): 2.7 s holds 2 s, 0.5 s none, so that waypoint is flown through;
+// - ModeAuto::loc_from_cmd (3.x: pv_location_to_vector_with_default) takes latitude and longitude
+//   0 as the previous target's, keeping the item's altitude, and an altitude of 0 as the previous
+//   target's altitude.
+// Each change is noted. After a circle the previous target is where the circle ends, which only the
+// flight knows, so such items are left to the model ("here").
+std::vector<NavStep> asArduPilotReadsThem(const std::vector<NavStep>& steps, std::vector<std::string>& notes) {
+  std::vector<NavStep> out = steps;
+  bool known = true;
+  Eigen::Vector3d prev = Eigen::Vector3d::Zero();  // home, on the ground
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    NavStep& st = out[k];
+    if (isFlownTo(st) && st.hold_s != std::floor(st.hold_s)) {
+      notes.push_back(stepName(st, k) + ": hold " + detail::num(st.hold_s) + " s is kept by ArduPilot in whole seconds (" +
+                      detail::num(std::floor(st.hold_s)) + " s" + (st.hold_s < 1.0 ? ": no stop, flown through" : "") + ")");
+      st.hold_s = std::floor(st.hold_s);
+    }
+    if (st.kind == NavStep::Kind::Takeoff) {
+      prev = {0.0, 0.0, st.target.z()};
+      known = true;
+    } else if (st.kind == NavStep::Kind::LoiterTurns) {
+      if (known && !st.alt_given) st.target.z() = prev.z();
+      known = false;
+    } else if (isFlownTo(st) && known) {
+      Eigen::Vector3d t = st.has_position ? st.target : Eigen::Vector3d(prev.x(), prev.y(), st.target.z());
+      if (!st.alt_given) t.z() = prev.z();
+      if (!st.has_position && (t - prev).norm() > 0.01) {
+        st.has_position = true;
+        notes.push_back(stepName(st, k) + ": latitude and longitude 0 are the previous target's for ArduPilot, flown to at the item's altitude " +
+                        detail::num(t.z()) + " m");
+      }
+      if (!st.alt_given && st.has_position) {
+        notes.push_back(stepName(st, k) + ": altitude 0 is the previous target's for ArduPilot (" + detail::num(t.z()) + " m)");
+      }
+      st.target = t;
+      if (st.has_position) prev = t;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 Airframe airframeOf(double drag_area_m2, double mass_kg, double air_density_kgpm3) {
@@ -88,8 +138,15 @@ FlownMission flyMission(const std::vector<NavStep>& steps, const AutopilotConfig
     return f;
   }
   switch (autopilot.family) {
-    case AutopilotFamily::ArduCopterSCurve: return flyArduCopterSCurve(steps, autopilot, s);
-    case AutopilotFamily::ArduCopterLeash: return flyArduCopterLeash(steps, autopilot, s);
+    case AutopilotFamily::ArduCopterSCurve:
+    case AutopilotFamily::ArduCopterLeash: {
+      std::vector<std::string> notes;
+      const std::vector<NavStep> read = asArduPilotReadsThem(steps, notes);
+      FlownMission f = autopilot.family == AutopilotFamily::ArduCopterSCurve ? flyArduCopterSCurve(read, autopilot, s)
+                                                                           : flyArduCopterLeash(read, autopilot, s);
+      f.notes.insert(f.notes.begin(), notes.begin(), notes.end());
+      return f;
+    }
     case AutopilotFamily::PX4: return flyPx4(steps, autopilot, s);
   }
   throw std::invalid_argument("flyMission: unknown autopilot family");

@@ -96,6 +96,8 @@ struct Sequencer {
                          index);
         s.has_position = hasLatLon(it);
         if (s.has_position) s.target = position(it);
+        else s.target.z() = altitudeAboveHome(it, m);
+        s.alt_given = it.alt_m != 0.0;
         s.hold_s = std::isfinite(it.param[0]) ? std::max(0.0, it.param[0]) : 0.0;
         if (!loiter && std::isfinite(it.param[1])) s.accept_radius_m = std::max(0.0, it.param[1]);
         steps.push_back(s);
@@ -108,6 +110,7 @@ struct Sequencer {
         s.has_position = hasLatLon(it);
         if (s.has_position) s.target = position(it);
         else s.target.z() = altitudeAboveHome(it, m);
+        s.alt_given = it.alt_m != 0.0;
         s.loiter_turns = std::floor(std::min(255.0, std::max(0.0, it.param[0])));
         s.loiter_radius_m = std::floor(std::abs(it.param[2]));
         s.loiter_ccw = it.param[2] < 0.0;

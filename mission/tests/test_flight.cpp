@@ -498,7 +498,9 @@ TEST(Px4, TurnKeepsTheSpeedOfBeforeTheTurnUntilHeadedForTheNextLeg) {
     const Eigen::Vector2d vh = s.velocity.head<2>();
     if (v_switch < 0.0) v_switch = vh.norm();
     if (t_aligned < 0.0 && vh.norm() > 0.2 && vh.normalized().y() >= 0.98) t_aligned = s.t;
-    if (t_aligned < 0.0) EXPECT_LE(vh.norm(), v_switch + 0.05) << "at " << s.t;
+    if (t_aligned < 0.0) {
+      EXPECT_LE(vh.norm(), v_switch + 0.05) << "at " << s.t;
+    }
     if (s.phase == FlightPhase::Mission && s.position.y() > 30.0 && s.position.y() < 150.0) cross_after = std::max(cross_after, std::abs(s.position.x() - 100.0));
   }
   EXPECT_GE(v_switch, 5.26);  // the jerk-limited trajectory runs a little behind the braking law

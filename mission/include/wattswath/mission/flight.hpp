@@ -33,6 +33,9 @@ struct NavStep {
   Kind kind = Kind::Waypoint;                              ///< what the step does
   Eigen::Vector3d target = Eigen::Vector3d::Zero();        ///< [m] ENU position (Takeoff: z only)
   bool has_position = true;                                ///< false: Land / LoiterTime "here"
+  /// false: the item's altitude is written as 0, which ArduPilot reads as "the previous target's
+  /// altitude" (ModeAuto::loc_from_cmd); without a position `target.z` is the item's altitude
+  bool alt_given = true;
   double hold_s = 0.0;                                     ///< [s] hold after reaching (waypoint, loiter, delay)
   double speed_xy = 0.0;                                   ///< [m/s] horizontal speed in force (0: autopilot default)
   /// [m/s] horizontal speed in force by PX4's rule, where every DO_CHANGE_SPEED sets it whatever

@@ -1,0 +1,74 @@
+// How ArduPilot keeps and reads mission items before it flies them (AP_Mission's whole-second
+// holds, ModeAuto::loc_from_cmd's latitude / longitude / altitude 0), in both ArduCopter models;
+// PX4 reads them as written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "flight_test_util.hpp"
+#include "wattswath/mission/flight.hpp"
+
+using namespace wattswath::mission;
+using wattswath::mission::testing::localMission;
+using wattswath::mission::testing::minSpeedBetween;
+
+namespace {
+
+AutopilotConfig arduCopter(const std::string& version) {
+  return parseAutopilot(R"({"firmware":"ArduCopter","version":")" + version + R"("})", "test");
+}
+
+std::string joined(const std::vector<std::string>& notes) {
+  std::string all;
+  for (const auto& n : notes) all += n + "\n";
+  return all;
+}
+
+}  // namespace
+
+TEST(ArduPilotReading, HoldsAreKeptInWholeSecondsSoHalfASecondIsFlownThrough) {
+  // AP_Mission stores a waypoint's hold in a uint16 of seconds: 0.5 s is no hold (the waypoint is
+  // flown through at speed), 2.7 s holds 2 s. PX4 holds the 0.5 s as written.
+  for (const char* version : {"4.5", "3.3"}) {
+    SCOPED_TRACE(version);
+    Mission m = localMission({{100, 0, 10}, {200, 0, 10}, {300, 0, 10}});
+    m.items[1].param[0] = 0.5;  // items: take-off, WP1, WP2, WP3, RTL
+    m.items[2].param[0] = 2.7;
+    const FlownMission f = flyMission(sequenceMission(m), arduCopter(version));
+    EXPECT_GT(minSpeedBetween(f, f.events[1].reached_s - 1.0, f.events[1].reached_s + 1.0), 3.0);
+    EXPECT_NEAR(f.events[2].completed_s - f.events[2].reached_s, 2.0, 0.05);
+    const std::string notes = joined(f.notes);
+    EXPECT_NE(notes.find("hold 0.5 s is kept by ArduPilot in whole seconds (0 s: no stop, flown through)"), std::string::npos) << notes;
+    EXPECT_NE(notes.find("hold 2.7 s is kept by ArduPilot in whole seconds (2 s)"), std::string::npos);
+  }
+  Mission m = localMission({{100, 0, 10}, {200, 0, 10}});
+  m.items[1].param[0] = 0.5;
+  const FlownMission px4 = flyMission(sequenceMission(m), parseAutopilot(R"({"firmware":"PX4","version":"1.14"})", "test"));
+  EXPECT_NEAR(px4.events[1].completed_s - px4.events[1].reached_s, 0.5, 0.02);
+}
+
+TEST(ArduPilotReading, LatitudeLongitudeZeroClimbsOverThePreviousTargetAndAltitudeZeroKeepsIt) {
+  // Take-off to 10 m, WP1 100 m east; WP2 with latitude and longitude 0 at 40 m: ArduPilot climbs
+  // over WP1 to 40 m (ModeAuto::loc_from_cmd keeps the item's altitude); WP3 200 m east at
+  // altitude 0: flown at the previous target's 40 m, not down to the ground.
+  for (const char* version : {"4.5", "3.3"}) {
+    SCOPED_TRACE(version);
+    Mission m = localMission({{100, 0, 10}, {100, 0, 40}, {200, 0, 0}});
+    m.items[2].lat_deg = m.items[2].lon_deg = 0.0;
+    const FlownMission f = flyMission(sequenceMission(m), arduCopter(version));
+    double top = 0.0, at_wp3 = 0.0;
+    for (const auto& s : f.samples) {
+      if (s.phase != FlightPhase::Mission) continue;
+      top = std::max(top, s.position.z());
+      if (s.t <= f.events[3].reached_s) at_wp3 = s.position.z();
+    }
+    EXPECT_NEAR(top, 40.0, 0.5);
+    EXPECT_NEAR(at_wp3, 40.0, 0.5);  // 3.x flies through WP2 below it (the leash) and climbs on
+    const std::string notes = joined(f.notes);
+    EXPECT_NE(notes.find("latitude and longitude 0 are the previous target's for ArduPilot, flown to at the item's altitude 40 m"),
+              std::string::npos)
+        << notes;
+    EXPECT_NE(notes.find("altitude 0 is the previous target's for ArduPilot (40 m)"), std::string::npos);
+  }
+}
