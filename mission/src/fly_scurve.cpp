@@ -477,7 +477,9 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
         over.target.z() = here.z();
         here = flyChain(fl, {over}, here, P, FlightPhase::Landing, P.jerk);
       }
-      land(rec, P, st.speed_down > 0 ? st.speed_down : P.speed_dn, ki, s);
+      // ModeAuto::land_start sets the descent limit back to WPNAV_SPEED_DN (get_default_speed_down:
+      // the parameter, not a DO_CHANGE_SPEED of type 3), which land_run_vertical_control caps at.
+      land(rec, P, P.speed_dn, ki, s);
       rec.reached(ki);
       rec.completed(ki);
       ++k;

@@ -72,3 +72,38 @@ TEST(ArduPilotReading, LatitudeLongitudeZeroClimbsOverThePreviousTargetAndAltitu
     EXPECT_NE(notes.find("altitude 0 is the previous target's for ArduPilot (40 m)"), std::string::npos);
   }
 }
+
+TEST(ArduPilotReading, LandingDescendsAtWpnavSpeedDnWhateverDescentSpeedTheMissionSet) {
+  // ModeAuto::land_start puts the descent limit back to WPNAV_SPEED_DN (the parameter), so a
+  // DO_CHANGE_SPEED of type 3 (descent) to 3 m/s earlier in the mission does not speed the landing.
+  const auto landingTime = [](bool changed) {
+    Mission m = localMission({{100, 0, 50}}, 0.0, 0.0, false);
+    MissionItem last = m.items.back();
+    if (changed) {
+      MissionItem speed = last;
+      speed.seq += 1;
+      speed.command = 178;
+      speed.frame = 2;
+      speed.param[0] = 3.0;  // descent speed
+      speed.param[1] = 3.0;
+      speed.lat_deg = speed.lon_deg = speed.alt_m = 0.0;
+      m.items.push_back(speed);
+    }
+    MissionItem land = m.items.back();
+    land.seq += 1;
+    land.command = 21;
+    land.lat_deg = land.lon_deg = land.alt_m = 0.0;
+    m.items.push_back(land);
+    const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
+    double first = -1.0, last_t = 0.0;
+    for (const auto& s : f.samples) {
+      if (s.phase != FlightPhase::Landing) continue;
+      if (first < 0.0) first = s.t;
+      last_t = s.t;
+    }
+    return last_t - first;
+  };
+  const double plain = landingTime(false), changed = landingTime(true);
+  EXPECT_GT(plain, 30.0);  // 50 m at WPNAV_SPEED_DN 1.5 m/s, then LAND_SPEED 0.5 m/s below LAND_ALT_LOW
+  EXPECT_NEAR(changed, plain, 0.05);
+}
