@@ -28,6 +28,7 @@ struct Params {
       land_alt_low, pos_z_p, spool_s, slew_s, rtl_cone_slope;
   double land_wind_down_s;  // [s] from touch-down until the throttle is at its lower limit (throttleWindDown)
   double spline_lateral;  // share of the acceleration limit a spline's curvature may use
+  bool rtl_floor_relative;  // before 4.5: the cone's floor is 2.5 m above the vehicle (RTL_ABS_MIN_CLIMB)
   double circle_rate;     // [rad/s] CIRCLE_RATE: a LOITER_TURNS' angular rate, clockwise
   double jerk_xy;         // [m/s^3] the position controller's shaping jerk (PSC_JERK_XY, attitude-limited)
   detail::PositionGains gains;
@@ -66,6 +67,7 @@ Params readParams(const AutopilotConfig& ap) {
   p.rtl_alt_final = std::max(0.0, ap.get("RTL_ALT_FINAL")) / 100.0;
   p.rtl_climb_min = std::max(0.0, ap.get("RTL_CLIMB_MIN")) / 100.0;
   p.rtl_cone_slope = ap.get("RTL_CONE_SLOPE");
+  p.rtl_floor_relative = !versionAtLeast(ap.version, 4, 5);
   const double rtl_speed = ap.get("RTL_SPEED");
   p.rtl_speed = rtl_speed > 0.0 ? rtl_speed / 100.0 : p.speed_xy;
   p.rtl_loiter_s = checkParameter("RTL_LOIT_TIME", ap.get("RTL_LOIT_TIME"), 0, 600000, "ms") / 1000.0;
@@ -407,6 +409,21 @@ Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, F
   return fl.restartAtStoppingPoint(z);
 }
 
+// [m] The RTL's return altitude from `here` [m, home at the origin] (ModeRTL::compute_return_target):
+// RTL_ALT, at least RTL_CLIMB_MIN above the vehicle (and 0.3 m, RTL_ALT_MIN); with RTL_CONE_SLOPE
+// >= 0.5 no higher than the cone's slope x the distance home, yet not below a floor: from 4.5 (PR
+// 25660) max(0.3 m, here + RTL_CLIMB_MIN), before it 2.5 m above the vehicle (RTL_ABS_MIN_CLIMB,
+// so near home the vehicle always climbs 2.5 m); never a descent.
+double returnAltitude(const Params& P, const Eigen::Vector3d& here) {
+  const double curr = here.z();
+  double alt = std::max({P.rtl_alt, curr + P.rtl_climb_min, 0.3});
+  if (P.rtl_cone_slope >= 0.5) {
+    const double floor = P.rtl_floor_relative ? curr + 2.5 : std::max(0.3, curr + P.rtl_climb_min);
+    alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, floor));
+  }
+  return std::max(alt, curr);
+}
+
 void land(Recorder& rec, const Params& P, double speed_dn, int step, const FlightSettings& s) {
   const double v_hi = std::max(P.land_speed_high > 0.0 ? P.land_speed_high : speed_dn, P.land_speed);
   const double alt_low = std::max(P.land_alt_low, 1.0);
@@ -447,13 +464,10 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       here = flyLoiterTurns(fl, st, P, phase, ki, here);
       ++k;
     } else if (st.kind == NavStep::Kind::ReturnToLaunch) {
-      // Return altitude (ModeRTL::compute_return_target): RTL_ALT (at least RTL_CLIMB_MIN above
-      // here), within the cone RTL_CONE_SLOPE x distance home (at least 2.5 m), never a descent.
       // RTL starts from where the vehicle would stop now (it may still be moving or lagging), the
       // controller afresh (ModeRTL::init runs AC_WPNav::wp_and_spline_init).
       here = fl.restartAtStoppingPoint(here.z());
-      double alt = std::max(P.rtl_alt, here.z() + P.rtl_climb_min);
-      if (P.rtl_cone_slope >= 0.5) alt = std::min(alt, std::max(std::hypot(here.x(), here.y()) * P.rtl_cone_slope, 2.5));
+      double alt = returnAltitude(P, here);
       // The climb leg runs from the position target to the measured altitude at least: a vehicle is
       // never exactly on its target, and AC_WPNav flies even a leg of millimetres as a whole S-curve
       // (0.6-1.1 s for 1 mm-1 cm). The offset is the measured vertical tracking error, else

@@ -107,3 +107,22 @@ TEST(ArduPilotReading, LandingDescendsAtWpnavSpeedDnWhateverDescentSpeedTheMissi
   EXPECT_GT(plain, 30.0);  // 50 m at WPNAV_SPEED_DN 1.5 m/s, then LAND_SPEED 0.5 m/s below LAND_ALT_LOW
   EXPECT_NEAR(changed, plain, 0.05);
 }
+
+TEST(ArduPilotReading, RtlNearHomeClimbsTwoAndAHalfMetresBefore45AndNotFrom45) {
+  // Last waypoint 1 m from home at 10 m, then RTL (RTL_ALT 15 m, RTL_CONE_SLOPE 3): the cone's
+  // 3 m is below the floor. Before 4.5 the floor is 2.5 m above the vehicle (RTL_ABS_MIN_CLIMB):
+  // it returns at 12.5 m; from 4.5 the floor is the vehicle's altitude plus RTL_CLIMB_MIN (0): it
+  // stays at 10 m (plus the hover offset of the climb leg); with RTL_CLIMB_MIN 3 m, at 13 m.
+  const auto top = [](const std::string& version, const std::string& params) {
+    const AutopilotConfig ap =
+        parseAutopilot(R"({"firmware":"ArduCopter","version":")" + version + R"(","parameters":)" + params + "}", "test");
+    const FlownMission f = flyMission(sequenceMission(localMission({{1, 0, 10}})), ap);
+    double z = 0.0;
+    for (const auto& s : f.samples)
+      if (s.phase == FlightPhase::Return) z = std::max(z, s.position.z());
+    return z;
+  };
+  EXPECT_NEAR(top("4.3", "{}"), 12.5, 0.05);
+  EXPECT_NEAR(top("4.5", "{}"), 10.0, 0.05);
+  EXPECT_NEAR(top("4.5", R"({"RTL_CLIMB_MIN":300})"), 13.0, 0.05);
+}
