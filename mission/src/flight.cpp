@@ -2,6 +2,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flight_internal.hpp"
@@ -112,6 +113,31 @@ std::vector<NavStep> asArduPilotReadsThem(const std::vector<NavStep>& steps, std
   return out;
 }
 
+// The speeds in force as ArduCopter 4.1-4.4 has them (NavStep::speed_xy_41 ...: the first waypoint
+// after a take-off or a circle restarts the waypoint controller at the default speeds, dropping the
+// DO_CHANGE_SPEED run just before it; ArduPilot issue 21080, fixed in 4.5), noted where they differ
+// from what the mission asks.
+std::vector<NavStep> withSpeedsBefore45(std::vector<NavStep> steps, const std::string& version, std::vector<std::string>& notes) {
+  int differ = 0;
+  std::string first;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    NavStep& st = steps[k];
+    if (st.speed_xy != st.speed_xy_41 || st.speed_up != st.speed_up_41 || st.speed_down != st.speed_down_41) {
+      if (differ++ == 0) first = stepName(st, k);
+    }
+    st.speed_xy = st.speed_xy_41;
+    st.speed_up = st.speed_up_41;
+    st.speed_down = st.speed_down_41;
+  }
+  if (differ > 0) {
+    notes.push_back("ArduCopter " + version + " drops a DO_CHANGE_SPEED run just before the first waypoint after a take-off "
+                    "or a circle: that waypoint restarts the waypoint controller at WPNAV_SPEED (ArduPilot issue 21080, "
+                    "fixed in 4.5; a second DO item before the speed change would keep it); " + std::to_string(differ) +
+                    " step(s) fly at the default speed where the mission asks another, the first " + first);
+  }
+  return steps;
+}
+
 }  // namespace
 
 Airframe airframeOf(double drag_area_m2, double mass_kg, double air_density_kgpm3) {
@@ -141,7 +167,10 @@ FlownMission flyMission(const std::vector<NavStep>& steps, const AutopilotConfig
     case AutopilotFamily::ArduCopterSCurve:
     case AutopilotFamily::ArduCopterLeash: {
       std::vector<std::string> notes;
-      const std::vector<NavStep> read = asArduPilotReadsThem(steps, notes);
+      std::vector<NavStep> read = asArduPilotReadsThem(steps, notes);
+      if (autopilot.family == AutopilotFamily::ArduCopterSCurve && !versionAtLeast(autopilot.version, 4, 5)) {
+        read = withSpeedsBefore45(std::move(read), autopilot.version, notes);
+      }
       FlownMission f = autopilot.family == AutopilotFamily::ArduCopterSCurve ? flyArduCopterSCurve(read, autopilot, s)
                                                                            : flyArduCopterLeash(read, autopilot, s);
       f.notes.insert(f.notes.begin(), notes.begin(), notes.end());

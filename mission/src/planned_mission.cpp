@@ -83,6 +83,10 @@ std::vector<Item> items(const PlannedMission& m) {
       s.frame = kFrameMission;
       s.params = {1 /* ground speed */, w.speed_mps, -1 /* throttle unchanged */, 0, 0, 0, 0};
       out.push_back(s);
+      // ArduCopter 4.1-4.4 drops the first DO item after the take-off when it changes the speed: the
+      // first waypoint restarts the waypoint controller at WPNAV_SPEED (issue 21080); the repeat
+      // runs after that restart.
+      if (current < 0.0 && m.repeat_first_speed_change) out.push_back(s);
       current = w.speed_mps;
     }
     Item wp;

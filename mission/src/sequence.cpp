@@ -31,7 +31,23 @@ bool hasLatLon(const MissionItem& it) {
   return std::isfinite(it.lat_deg) && std::isfinite(it.lon_deg) && !(it.lat_deg == 0.0 && it.lon_deg == 0.0);
 }
 
+// The kind of step navigation item `it` becomes, as far as the waypoint controller is concerned:
+// a LAND without a position descends at once (no waypoint), so it counts as a delay here.
+NavStep::Kind kindOf(const MissionItem& it) {
+  switch (static_cast<Command>(it.command)) {
+    case Command::NavTakeoff: return NavStep::Kind::Takeoff;
+    case Command::NavSplineWaypoint: return NavStep::Kind::SplineWaypoint;
+    case Command::NavLoiterTime: return NavStep::Kind::LoiterTime;
+    case Command::NavLoiterTurns: return NavStep::Kind::LoiterTurns;
+    case Command::NavDelay: return NavStep::Kind::Delay;
+    case Command::NavReturnToLaunch: return NavStep::Kind::ReturnToLaunch;
+    case Command::NavLand: return hasLatLon(it) ? NavStep::Kind::Land : NavStep::Kind::Delay;
+    default: return NavStep::Kind::Waypoint;
+  }
+}
+
 struct Sequencer {
+  Sequencer(const Mission& mission, std::vector<std::string>* w) : m(mission), frame(mission.home), warnings(w) {}
   const Mission& m;
   geometry::LocalFrame frame;
   std::vector<std::string>* warnings;
@@ -40,6 +56,47 @@ struct Sequencer {
   // PX4's rule (Navigator's VEHICLE_CMD_DO_CHANGE_SPEED): param2 > 0 is the cruise speed whatever
   // the speed type in param1, anything else returns to the default.
   double speed_xy_px4 = 0.0;
+  // ArduCopter 4.1-4.4 (ArduPilot issue 21080): after a take-off or a circle the waypoint controller
+  // is idle, and the next wp_start re-initialises it at the default speeds. Of the DO items before
+  // that waypoint, AP_Mission runs the first as the previous navigation item completes (before
+  // wp_start: its speed change is lost) and the others one per loop after the waypoint started.
+  double speed_xy_41 = 0.0, speed_up_41 = 0.0, speed_down_41 = 0.0;
+  bool controller_idle = true;  // no waypoint flown since the take-off or the last circle
+  int section_dos = 0;          // DO items since the last navigation item
+  struct Pending {
+    int type;
+    double v;
+    bool kept;  // run after the waypoint started: not the first DO item of the last section
+  };
+  std::vector<Pending> pending;  // speed changes while the controller is idle
+
+  // A DO (or CONDITION) item run: counts it in its section.
+  void doItem() { ++section_dos; }
+
+  // The speeds of the 4.1-4.4 rule: `type` 2 climb, 3 descent, else horizontal.
+  void set41(int type, double v) {
+    if (type == 2) speed_up_41 = v;
+    else if (type == 3) speed_down_41 = v;
+    else speed_xy_41 = v;
+  }
+
+  // Navigation item of kind `kind` starts: a waypoint after an idle controller restarts it at the
+  // defaults and keeps only the changes run after it started.
+  void navStarts(NavStep::Kind kind) {
+    const bool restarts = kind == NavStep::Kind::Waypoint || kind == NavStep::Kind::SplineWaypoint ||
+                          kind == NavStep::Kind::LoiterTime || kind == NavStep::Kind::Land;
+    if (controller_idle && restarts) {
+      speed_xy_41 = speed_up_41 = speed_down_41 = 0.0;
+      for (const Pending& c : pending)
+        if (c.kept) set41(c.type, c.v);
+      pending.clear();
+      controller_idle = false;
+    } else {
+      for (Pending& c : pending) c.kept = false;  // run before a later restart: lost
+    }
+    if (kind == NavStep::Kind::Takeoff || kind == NavStep::Kind::LoiterTurns) controller_idle = true;
+    section_dos = 0;
+  }
 
   void warn(const std::string& w) {
     if (warnings) warnings->push_back(w);
@@ -63,6 +120,8 @@ struct Sequencer {
     if (type == 2) speed_up = v;
     else if (type == 3) speed_down = v;
     else speed_xy = v;
+    set41(type, v);
+    if (controller_idle) pending.push_back({type, v, section_dos > 0});
   }
 
   NavStep step(NavStep::Kind kind, int index) const {
@@ -73,6 +132,9 @@ struct Sequencer {
     s.speed_xy_px4 = speed_xy_px4;
     s.speed_up = speed_up;
     s.speed_down = speed_down;
+    s.speed_xy_41 = speed_xy_41;
+    s.speed_up_41 = speed_up_41;
+    s.speed_down_41 = speed_down_41;
     return s;
   }
 
@@ -160,7 +222,7 @@ bool isFlownTo(const NavStep& s) {
 }
 
 std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>* warnings, std::size_t max_steps) {
-  Sequencer q{m, geometry::LocalFrame(m.home), warnings, {}};
+  Sequencer q(m, warnings);
   std::map<int, int> seq_to_index, jumps_done;
   for (std::size_t i = 0; i < m.items.size(); ++i) seq_to_index[m.items[i].seq] = static_cast<int>(i);
   int i = 0;
@@ -188,7 +250,12 @@ std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>*
       continue;
     }
     if (it.command == static_cast<int>(Command::DoChangeSpeed)) q.changeSpeed(it);
-    if (isNavCommand(it.command)) ended = !q.nav(i);
+    if (isNavCommand(it.command)) {
+      q.navStarts(kindOf(it));
+      ended = !q.nav(i);
+    } else {
+      q.doItem();
+    }
     ++i;
   }
   if (ended && i < static_cast<int>(m.items.size())) {

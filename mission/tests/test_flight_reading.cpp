@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 
 #include "flight_test_util.hpp"
 #include "wattswath/mission/flight.hpp"
@@ -125,4 +126,51 @@ TEST(ArduPilotReading, RtlNearHomeClimbsTwoAndAHalfMetresBefore45AndNotFrom45) {
   EXPECT_NEAR(top("4.3", "{}"), 12.5, 0.05);
   EXPECT_NEAR(top("4.5", "{}"), 10.0, 0.05);
   EXPECT_NEAR(top("4.5", R"({"RTL_CLIMB_MIN":300})"), 13.0, 0.05);
+}
+
+TEST(ArduPilotReading, Before45ASpeedChangeRightAfterTheTakeoffIsLostUnlessItIsNotTheFirstDoItem) {
+  // ArduPilot issue 21080: in 4.1-4.4 the first waypoint after the take-off restarts the waypoint
+  // controller at WPNAV_SPEED (10 m/s by default), dropping the DO_CHANGE_SPEED that AP_Mission ran
+  // as the take-off completed; a DO item placed before it runs first, so the speed change runs
+  // after the waypoint started and is kept. 4.5 keeps it either way. A later change (before WP2)
+  // works in every version.
+  const auto topSpeeds = [](const std::string& version, bool camera_first) {
+    Mission m = localMission({{600, 0, 10}, {600, 600, 10}}, 0.0, 5.0);  // take-off, speed 5, WP1, WP2, RTL
+    if (camera_first) {
+      MissionItem cam = m.items[1];
+      cam.command = 206;  // DO_SET_CAM_TRIGG_DIST
+      cam.param[0] = 20.0;
+      cam.param[1] = 0.0;
+      m.items.insert(m.items.begin() + 1, cam);
+    }
+    MissionItem later = m.items[camera_first ? 2 : 1];  // a copy of the speed change, at 7 m/s before WP2
+    later.param[1] = 7.0;
+    m.items.insert(m.items.end() - 2, later);  // before WP2
+    for (std::size_t i = 0; i < m.items.size(); ++i) m.items[i].seq = static_cast<int>(i) + 1;
+    const AutopilotConfig ap = parseAutopilot(R"({"firmware":"ArduCopter","version":")" + version + R"("})", "test");
+    const FlownMission f = flyMission(sequenceMission(m), ap);
+    double leg1 = 0.0, leg2 = 0.0;
+    for (const auto& s : f.samples) {
+      if (s.phase != FlightPhase::Mission) continue;
+      const double v = s.velocity.head<2>().norm();
+      if (s.position.x() < 500.0) leg1 = std::max(leg1, v);
+      if (s.position.y() > 100.0 && s.position.y() < 500.0) leg2 = std::max(leg2, v);
+    }
+    std::string notes;
+    for (const auto& n : f.notes) notes += n + "\n";
+    return std::make_tuple(leg1, leg2, notes);
+  };
+  const auto [lost, lost2, lost_notes] = topSpeeds("4.3", false);
+  EXPECT_NEAR(lost, 10.0, 0.05);
+  EXPECT_NEAR(lost2, 7.0, 0.05);
+  EXPECT_NE(lost_notes.find("ArduCopter 4.3 drops a DO_CHANGE_SPEED run just before the first waypoint after a take-off"),
+            std::string::npos)
+      << lost_notes;
+  const auto [kept, kept2, kept_notes] = topSpeeds("4.3", true);
+  EXPECT_NEAR(kept, 5.0, 0.05);
+  EXPECT_NEAR(kept2, 7.0, 0.05);
+  EXPECT_EQ(kept_notes.find("drops a DO_CHANGE_SPEED"), std::string::npos);
+  const auto [fixed, fixed2, fixed_notes] = topSpeeds("4.5", false);
+  EXPECT_NEAR(fixed, 5.0, 0.05);
+  EXPECT_NEAR(fixed2, 7.0, 0.05);
 }

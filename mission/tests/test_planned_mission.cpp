@@ -5,7 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "wattswath/mission/autopilot.hpp"
 #include "wattswath/mission/files.hpp"
+#include "wattswath/mission/flight.hpp"
 #include "wattswath/mission/planned_mission.hpp"
 
 using namespace wattswath::mission;
@@ -264,4 +266,34 @@ TEST(MissionItemLimit, WritersRefuseMoreItemsThanMavlinkCanCount) {
   EXPECT_THROW(toQgcWpl(p), std::invalid_argument);
   p.waypoints.resize(kMaxMissionItems - 3);  // + take-off, speed, RTL = 65,534
   EXPECT_NO_THROW(toQgcWpl(p));
+}
+
+TEST(PlannedMission, AFirstSpeedChangeWrittenTwiceIsFlownByArduCopter43) {
+  // ArduCopter 4.1-4.4 drops a DO_CHANGE_SPEED that is the first DO item after the take-off (the
+  // first waypoint restarts the waypoint controller at WPNAV_SPEED, 10 m/s): written once, the
+  // 500 m first leg is flown at 10 m/s; written twice (repeat_first_speed_change), the repeat runs
+  // after the restart and the leg is flown at the planned 4 m/s. Both read back as the same mission
+  // for 4.5, which keeps either.
+  PlannedMission m;
+  m.home = {43.7200, 10.4200};
+  m.takeoff_altitude_m = 10.0;
+  m.waypoints = {{{43.7245, 10.4200}, 10.0, 4.0, 0.0, {}}, {{43.7245, 10.4262}, 10.0, 4.0, 0.0, {}}};
+  const auto topSpeed = [](const PlannedMission& pm, const std::string& version) {
+    const Mission read = parseQgcWpl(toQgcWpl(pm), "m.waypoints");
+    const AutopilotConfig ap = parseAutopilot(R"({"firmware":"ArduCopter","version":")" + version + R"("})", "test");
+    const FlownMission f = flyMission(sequenceMission(read), ap);
+    double top = 0.0;
+    for (const auto& s : f.samples)
+      if (s.phase == FlightPhase::Mission && s.position.y() < 400.0) top = std::max(top, s.velocity.head<2>().norm());
+    return top;
+  };
+  EXPECT_NEAR(topSpeed(m, "4.3"), 10.0, 0.05);
+  EXPECT_NEAR(topSpeed(m, "4.5"), 4.0, 0.05);
+  m.repeat_first_speed_change = true;
+  const Mission twice = parseQgcWpl(toQgcWpl(m), "m.waypoints");
+  ASSERT_GE(twice.items.size(), 3u);
+  EXPECT_EQ(twice.items[1].command, 178);
+  EXPECT_EQ(twice.items[2].command, 178);
+  EXPECT_NEAR(topSpeed(m, "4.3"), 4.0, 0.05);
+  EXPECT_NEAR(topSpeed(m, "4.5"), 4.0, 0.05);
 }

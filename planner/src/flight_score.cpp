@@ -50,6 +50,8 @@ void onThreads(std::size_t n, int threads, const std::function<void(std::size_t)
 void setAutopilot(FlightScoring& scoring, const mission::AutopilotConfig& autopilot) {
   scoring.autopilot = autopilot;
   scoring.mission.firmware = autopilot.firmware == "PX4" ? mission::Firmware::PX4 : mission::Firmware::ArduPilot;
+  scoring.mission.repeat_first_speed_change =
+      autopilot.family == mission::AutopilotFamily::ArduCopterSCurve && !mission::versionAtLeast(autopilot.version, 4, 5);
 }
 
 mission::MissionPrediction flyWrittenMission(const PlanMission& written, const FlightScoring& s, const std::string& source) {

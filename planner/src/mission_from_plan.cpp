@@ -207,6 +207,7 @@ PlanMission missionFromPlan(const FlownPath& flown, const SurveyProblem& problem
   m.home_altitude_amsl_m = home_altitude_amsl_m;
   m.takeoff_altitude_m = problem.altitude;
   m.firmware = options.firmware;
+  m.repeat_first_speed_change = options.repeat_first_speed_change;
   auto wps = missionWaypoints(flown, options);
   double fastest = 0.0;
   const double acceptance = options.firmware == mission::Firmware::PX4 ? kPx4AcceptanceRadius : 0.0;

@@ -181,4 +181,19 @@ TEST(FlightScore, APx4MissionNamesItsAcceptanceRadiusAndItsFlightPassesEveryWayp
   setAutopilot(s, mission::parseAutopilot(R"({"firmware":"ArduCopter","version":"4.5"})", "test"));
   const auto ardupilot = scoreByFlight({{"plan", &r.plan}}, s);  // kept: the loop reads into it
   for (const auto& w : ardupilot.front().mission.mission.waypoints) EXPECT_EQ(w.acceptance_radius_m, 0.0);
+  EXPECT_FALSE(ardupilot.front().mission.mission.repeat_first_speed_change);
+  EXPECT_FALSE(f.mission.mission.repeat_first_speed_change);  // PX4
+}
+
+TEST(FlightScore, ForArduCopter41To44TheFirstSpeedChangeIsWrittenTwice) {
+  // ArduCopter 4.1-4.4 drops the first DO item after the take-off when it is a speed change
+  // (issue 21080): for those versions the mission repeats it, so the first leg flies as scored.
+  const auto p = planned("data/areas/iris_area.geojson", 15.0, "data/vehicles/iris.json");
+  ASSERT_TRUE(p->r.plan.valid);
+  FlightScoring s = p->s;
+  setAutopilot(s, mission::parseAutopilot(R"({"firmware":"ArduCopter","version":"4.3"})", "test"));
+  const auto scores = scoreByFlight({{"plan", &p->r.plan}}, s);
+  ASSERT_FALSE(scores.empty());
+  EXPECT_TRUE(scores.front().mission.mission.repeat_first_speed_change);
+  for (const auto& n : scores.front().prediction.warnings) EXPECT_EQ(n.find("drops a DO_CHANGE_SPEED"), std::string::npos) << n;
 }

@@ -43,6 +43,12 @@ struct NavStep {
   double speed_xy_px4 = 0.0;
   double speed_up = 0.0;                                   ///< [m/s] climb speed in force (0: default)
   double speed_down = 0.0;                                 ///< [m/s] descent speed in force (0: default)
+  /// [m/s] horizontal speed in force (0: default) as ArduCopter 4.1-4.4 has it: the first waypoint
+  /// after a take-off or a circle restarts the waypoint controller at WPNAV_SPEED, dropping the
+  /// DO_CHANGE_SPEED run before it (ArduPilot issue 21080, fixed in 4.5)
+  double speed_xy_41 = 0.0;
+  double speed_up_41 = 0.0;    ///< [m/s] climb speed in force by the same 4.1-4.4 rule (0: default)
+  double speed_down_41 = 0.0;  ///< [m/s] descent speed in force by the same 4.1-4.4 rule (0: default)
   double accept_radius_m = 0.0;                            ///< [m] item acceptance radius (0: default)
   /// LoiterTurns: the number of turns and the radius [m] as ArduPilot keeps them (whole numbers),
   /// circled clockwise seen from above unless `loiter_ccw`; `target` is the centre

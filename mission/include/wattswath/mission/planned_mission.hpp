@@ -44,6 +44,10 @@ struct PlannedMission {
   double hover_speed_mps = 5.0;                 ///< [m/s] hoverSpeed of the .plan (rounded as cruiseSpeed)
   Firmware firmware = Firmware::ArduPilot;      ///< autopilot family (IRIS+ flights were ArduCopter)
   int vehicle_type = 2;                         ///< MAV_TYPE written as vehicleType: 2, 13, 14 or 15 (mavTypeOfRotors)
+  /// true: the first DO_CHANGE_SPEED is written twice, for ArduCopter 4.1-4.4, which drops the first
+  /// DO item after a take-off when it is a speed change (ArduPilot issue 21080, fixed in 4.5): the
+  /// repeat runs after the first waypoint restarted the waypoint controller and is kept
+  bool repeat_first_speed_change = false;
   std::vector<PlannedWaypoint> waypoints;       ///< in flight order (at least one)
   std::vector<std::vector<GeoPoint>> no_fly;    ///< [deg] exclusion polygons for the geofence
   std::vector<GeoPoint> fence_inclusion;        ///< [deg] inclusion polygon for the geofence (empty: none)

@@ -59,6 +59,9 @@ struct MissionOptions {
   double stop_hold_s = kStopHoldSeconds;  ///< [s] hold at each planned stop (0: none), >= 0
   int rotor_count = 4;                    ///< [-] the vehicle's rotors, for the .plan's vehicleType
   mission::Firmware firmware = mission::Firmware::ArduPilot;  ///< the autopilot named in the .plan (firmwareType)
+  /// true: the first speed change written twice (PlannedMission::repeat_first_speed_change), for
+  /// ArduCopter 4.1-4.4
+  bool repeat_first_speed_change = false;
   double fence_margin_m = 0.0;            ///< [m] inclusion fence keeping every flown point this far inside it
                                           ///< (0: no inclusion fence), >= 0
   bool arc_waypoints = false;             ///< true: arcs written as waypoints along them (kArcChordSagitta);
