@@ -70,8 +70,13 @@ struct Sequencer {
   };
   std::vector<Pending> pending;  // speed changes while the controller is idle
 
+  bool section_waits = false;  // a CONDITION_DELAY or CONDITION_DISTANCE since the last navigation item
+
   // A DO (or CONDITION) item run: counts it in its section.
-  void doItem() { ++section_dos; }
+  void doItem(const MissionItem& it) {
+    ++section_dos;
+    if (it.command == static_cast<int>(Command::ConditionDelay) || it.command == 114 /* CONDITION_DISTANCE */) section_waits = true;
+  }
 
   // The speeds of the 4.1-4.4 rule: `type` 2 climb, 3 descent, else horizontal.
   void set41(int type, double v) {
@@ -96,6 +101,7 @@ struct Sequencer {
     }
     if (kind == NavStep::Kind::Takeoff || kind == NavStep::Kind::LoiterTurns) controller_idle = true;
     section_dos = 0;
+    section_waits = false;
   }
 
   void warn(const std::string& w) {
@@ -122,6 +128,11 @@ struct Sequencer {
     else speed_xy = v;
     set41(type, v);
     if (controller_idle) pending.push_back({type, v, section_dos > 0});
+    if (section_waits) {
+      warn(it.where + ": DO_CHANGE_SPEED after a CONDITION_DELAY or CONDITION_DISTANCE: ArduPilot runs it only once "
+           "that condition is met, and drops it if the next waypoint is reached first; the prediction applies it "
+           "from the next waypoint on, as if the condition were met at once");
+    }
   }
 
   NavStep step(NavStep::Kind kind, int index) const {
@@ -254,7 +265,7 @@ std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>*
       q.navStarts(kindOf(it));
       ended = !q.nav(i);
     } else {
-      q.doItem();
+      q.doItem(it);
     }
     ++i;
   }

@@ -174,3 +174,27 @@ TEST(ArduPilotReading, Before45ASpeedChangeRightAfterTheTakeoffIsLostUnlessItIsN
   EXPECT_NEAR(fixed, 5.0, 0.05);
   EXPECT_NEAR(fixed2, 7.0, 0.05);
 }
+
+TEST(ArduPilotReading, ASpeedChangeAfterAConditionSaysItWaitsForIt) {
+  // AP_Mission runs the DO items after a CONDITION_DELAY only once its time is up (and drops them
+  // if the next waypoint comes first): the speed change after it gets a warning naming the item.
+  Mission m = localMission({{200, 0, 10}, {400, 0, 10}}, 0.0, 5.0);  // take-off, speed, WP1, WP2, RTL
+  MissionItem wait = m.items[1];
+  wait.command = 112;  // CONDITION_DELAY
+  wait.param[0] = 30.0;
+  wait.where = "test item wait";
+  MissionItem speed = m.items[1];
+  speed.param[1] = 3.0;
+  speed.where = "test item late speed";
+  m.items.insert(m.items.begin() + 3, {wait, speed});  // between WP1 and WP2
+  for (std::size_t i = 0; i < m.items.size(); ++i) m.items[i].seq = static_cast<int>(i) + 1;
+  std::vector<std::string> warnings;
+  (void)sequenceMission(m, &warnings);
+  const std::string all = joined(warnings);
+  EXPECT_NE(all.find("test item late speed: DO_CHANGE_SPEED after a CONDITION_DELAY or CONDITION_DISTANCE: ArduPilot runs it "
+                     "only once that condition is met"),
+            std::string::npos)
+      << all;
+  // The first speed change, with no condition before it, gets none.
+  EXPECT_EQ(all.find("test item 2:"), std::string::npos);
+}
