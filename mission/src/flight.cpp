@@ -65,8 +65,9 @@ energy::Phase energyPhase(const FlightSample& a, const FlightSample& b, double l
   return energy::Phase::Cruise;
 }
 
-// "step K (mission item index I)" for notes.
+// The item's "FILE:LINE" for notes, else "step K (mission item index I)".
 std::string stepName(const NavStep& st, std::size_t k) {
+  if (!st.where.empty()) return st.where;
   return "step " + std::to_string(k) + " (mission item index " + std::to_string(st.item) + ")";
 }
 
@@ -122,7 +123,8 @@ std::vector<NavStep> withSpeedsBefore45(std::vector<NavStep> steps, const std::s
   std::string first;
   for (std::size_t k = 0; k < steps.size(); ++k) {
     NavStep& st = steps[k];
-    if (st.speed_xy != st.speed_xy_41 || st.speed_up != st.speed_up_41 || st.speed_down != st.speed_down_41) {
+    const bool flies = isFlownTo(st) || st.kind == NavStep::Kind::Land || st.kind == NavStep::Kind::LoiterTurns;
+    if (flies && (st.speed_xy != st.speed_xy_41 || st.speed_up != st.speed_up_41 || st.speed_down != st.speed_down_41)) {
       if (differ++ == 0) first = stepName(st, k);
     }
     st.speed_xy = st.speed_xy_41;
@@ -132,8 +134,8 @@ std::vector<NavStep> withSpeedsBefore45(std::vector<NavStep> steps, const std::s
   if (differ > 0) {
     notes.push_back("ArduCopter " + version + " drops a DO_CHANGE_SPEED run just before the first waypoint after a take-off "
                     "or a circle: that waypoint restarts the waypoint controller at WPNAV_SPEED (ArduPilot issue 21080, "
-                    "fixed in 4.5; a second DO item before the speed change would keep it); " + std::to_string(differ) +
-                    " step(s) fly at the default speed where the mission asks another, the first " + first);
+                    "fixed in 4.5; written twice, the repeat runs after the restart and is kept); " + std::to_string(differ) +
+                    " item(s) fly at the default speeds where the mission asks others, the first " + first);
   }
   return steps;
 }

@@ -139,6 +139,7 @@ struct Sequencer {
     NavStep s;
     s.kind = kind;
     s.item = index;
+    if (index >= 0 && index < static_cast<int>(m.items.size())) s.where = m.items[index].where;
     s.speed_xy = speed_xy;
     s.speed_xy_px4 = speed_xy_px4;
     s.speed_up = speed_up;

@@ -56,6 +56,7 @@ struct NavStep {
   double loiter_radius_m = 0.0;                            ///< [m] LoiterTurns: radius of the circle
   bool loiter_ccw = false;                                 ///< LoiterTurns: counter-clockwise (param3 < 0)
   int item = -1;                                           ///< index into Mission::items (-1: none)
+  std::string where;                                       ///< the item's "FILE:LINE" for notes (empty: none)
 };
 
 /// True for the steps the vehicle flies to a position (waypoint, spline waypoint, loiter time).
