@@ -7,6 +7,8 @@
 // without a corner blend (AC_WPNav::set_spline_destination and its _next variants).
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "circle.hpp"
 #include "flight_internal.hpp"
@@ -137,6 +139,8 @@ struct LegSpec {
   int step;
   bool fast;            // the next leg follows without a stop
   bool spline = false;  // a NAV_SPLINE_WAYPOINT: a spline segment, not a straight leg
+  // A spline flown through into the approach of the NAV_LAND after it: the point it leaves towards
+  std::optional<Eigen::Vector3d> exit_to = std::nullopt;
 };
 
 // The straight leg from `from` to `to`, starting at `v0` and ending at `v1` [m/s] (0: at rest;
@@ -294,6 +298,7 @@ detail::SplineCurve splineOf(const std::vector<LegSpec>& legs, std::size_t k, co
   Eigen::Vector3d out = Eigen::Vector3d::Zero();
   const bool next = s.fast && k + 1 < legs.size();
   if (next) out = legs[k + 1].target - (legs[k + 1].spline ? origin : s.target);
+  else if (s.fast && s.exit_to) out = *s.exit_to - s.target;
   const detail::SplineLimits lim{s.speed_xy, s.speed_up, s.speed_dn, P.accel_xy, P.accel_z, P.spline_lateral};
   detail::SplineCurve c(origin, s.target, in, out, lim, stale);
   if (next && limit_by_next && !out.isZero()) {
@@ -326,7 +331,8 @@ double flySpline(Flight& fl, detail::SplineCurve& c, const LegSpec& s, const Par
 // legs as spline segments, joined at the speed both allow (AC_WPNav::set_spline_destination_next,
 // set_wp_destination_next); returns where the vehicle stops.
 Eigen::Vector3d flyRoute(Flight& fl, const std::vector<LegSpec>& legs, const Eigen::Vector3d& here, const Params& P,
-                         FlightPhase phase, double jerk) {
+                         FlightPhase phase, double jerk, double* end_speed) {
+  *end_speed = 0.0;
   if (std::none_of(legs.begin(), legs.end(), [](const LegSpec& l) { return l.spline; }))
     return flyChain(fl, legs, here, P, phase, jerk);
   Eigen::Vector3d origin = here, in = Eigen::Vector3d::Zero();
@@ -352,6 +358,7 @@ Eigen::Vector3d flyRoute(Flight& fl, const std::vector<LegSpec>& legs, const Eig
     origin = legs[b].target;
     a = b + 1;
   }
+  if (legs.back().fast) *end_speed = speed;  // a spline flown through into a landing's approach
   return origin;
 }
 
@@ -364,6 +371,14 @@ std::vector<LegSpec> chainFrom(const std::vector<NavStep>& steps, std::size_t k,
     if (!steps[j].has_position) spec.target = legs.empty() ? here : legs.back().target;
     const bool next_flown = j + 1 < steps.size() && isFlownTo(steps[j + 1]) && steps[j + 1].has_position;
     spec.fast = steps[j].kind != NavStep::Kind::LoiterTime && steps[j].hold_s <= 0.0 && next_flown && !stop_all;
+    // A spline with no hold flies through into a NAV_LAND with a position after it
+    // (ModeAuto::get_spline_from_cmd takes any next navigation item's location as its exit, and
+    // set_next_wp plans no next leg), whose approach then starts at the spline's end speed.
+    if (spec.spline && steps[j].hold_s <= 0.0 && !stop_all && j + 1 < steps.size() && steps[j + 1].kind == NavStep::Kind::Land &&
+        steps[j + 1].has_position) {
+      const Eigen::Vector3d land{steps[j + 1].target.x(), steps[j + 1].target.y(), spec.target.z()};
+      if ((land - spec.target).norm() > 0.01) spec.fast = true, spec.exit_to = land;
+    }
     legs.push_back(spec);
     if (!spec.fast) break;
   }
@@ -443,6 +458,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
   Flight fl{rec, detail::PositionFollower(P.gains, s.airframe)};
   Eigen::Vector3d here = Eigen::Vector3d::Zero();
   FlightPhase phase = FlightPhase::Mission;
+  double carried = 0.0;  // [m/s] target speed a spline hands to the landing approach after it
   for (std::size_t k = 0; k < steps.size();) {
     const NavStep& st = steps[k];
     const int ki = static_cast<int>(k);
@@ -453,7 +469,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       ++k;
     } else if (isFlownTo(st)) {
       const std::vector<LegSpec> legs = chainFrom(steps, k, here, P, s.stop_at_waypoints);
-      here = flyRoute(fl, legs, here, P, phase, P.jerk);
+      here = flyRoute(fl, legs, here, P, phase, P.jerk, &carried);
       k += legs.size();
     } else if (st.kind == NavStep::Kind::Delay) {
       rec.reached(ki);
@@ -489,7 +505,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       if (st.has_position) {
         LegSpec over = specOf(st, P, ki);
         over.target.z() = here.z();
-        here = flyChain(fl, {over}, here, P, FlightPhase::Landing, P.jerk);
+        here = flyChain(fl, {over}, here, P, FlightPhase::Landing, P.jerk, std::exchange(carried, 0.0));
       }
       // ModeAuto::land_start sets the descent limit back to WPNAV_SPEED_DN (get_default_speed_down:
       // the parameter, not a DO_CHANGE_SPEED of type 3), which land_run_vertical_control caps at.

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "flight_test_util.hpp"
+#include "wattswath/geometry/frame.hpp"
 #include "wattswath/mission/flight.hpp"
 
 using namespace wattswath::mission;
@@ -112,6 +113,38 @@ TEST(ArduCopterSpline, AStraightLegMeetsASplineOnItsWaypointAtSpeed) {
   EXPECT_GT(minSpeedBetween(f, f.events[1].reached_s - 3.0, f.events[2].reached_s), 2.0);
   const FlownMission straight = flyMission(sequenceMission(localMission(wps)), AutopilotConfig{}, onTarget());
   EXPECT_GT(closestTo(straight, wps[0]), 1.0);
+}
+
+TEST(ArduCopterSpline, ASplineFliesThroughIntoALandingsApproachAtSpeed) {
+  // Take-off to 10 m, a spline to (0, 100), NAV_LAND at (0, 200): ModeAuto::get_spline_from_cmd
+  // takes the LAND's location as the spline's exit, set_next_wp plans no leg after it, and the
+  // landing's approach (FlyToLocation, wp_start) starts at the spline's target speed. So the
+  // vehicle passes the spline's waypoint at speed, leaving it towards the landing point, where a
+  // NAV_WAYPOINT there would stop it (set_next_wp: always a stop before LAND). A hold on the spline
+  // stops it too.
+  const auto flight = [](int command, double hold) {
+    Mission m = localMission({{0, 100, 10}}, hold, 0.0, false);
+    m.items[1].command = command;  // take-off, the (spline) waypoint
+    MissionItem land = m.items.back();
+    land.seq += 1;
+    land.command = 21;
+    land.param[0] = 0.0;
+    const wattswath::geometry::LocalFrame frame(m.home);
+    const auto g = frame.toGeodetic({0.0, 200.0});
+    land.lat_deg = g.lat_deg;
+    land.lon_deg = g.lon_deg;
+    land.alt_m = 0.0;
+    m.items.push_back(land);
+    return flyMission(sequenceMission(m), AutopilotConfig{}, onTarget());
+  };
+  const FlownMission spline = flight(82, 0.0), straight = flight(16, 0.0), held = flight(82, 1.0);
+  const double t = spline.events[1].reached_s;
+  EXPECT_GT(minSpeedBetween(spline, t - 1.0, t + 1.0), 5.0);
+  EXPECT_LT(minSpeedBetween(straight, straight.events[1].reached_s - 1.0, straight.events[1].reached_s + 1.0), 0.5);
+  EXPECT_LT(minSpeedBetween(held, held.events[1].reached_s - 1.0, held.events[1].reached_s + 1.0), 0.5);
+  // Landing begins over (0, 200) in every case; through the spline it does so sooner.
+  EXPECT_LT(spline.events[2].reached_s + 3.0, straight.events[2].reached_s);
+  EXPECT_LT(closestTo(spline, {0.0, 200.0, 10.0}), 0.5);
 }
 
 namespace {
