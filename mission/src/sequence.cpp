@@ -3,6 +3,7 @@
 // the leg into the second), DO_JUMP unrolled, positions in the local ENU frame of home.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -195,6 +196,16 @@ struct Sequencer {
         NavStep s = step(NavStep::Kind::Delay, index);
         s.has_position = false;
         s.hold_s = std::isfinite(it.param[0]) ? std::max(0.0, it.param[0]) : 0.0;
+        if (!(s.hold_s > 0.0)) {
+          // ModeAuto::do_nav_delay: a delay that is not positive waits until the time of day in
+          // param2-4 (hour, minute, second UTC), AP::rtc().get_time_utc.
+          const auto part = [&](int i) { return std::isfinite(it.param[i]) ? static_cast<int>(it.param[i]) : 0; };
+          char when[16];
+          std::snprintf(when, sizeof when, "%02d:%02d:%02d", part(1), part(2), part(3));
+          warn(it.where + ": NAV_DELAY of 0 s: ArduPilot takes a delay that is not positive as a wait until the time of day " +
+               "in param2-4 (" + when + " UTC), up to a day, which the prediction cannot know; PX4 waits 0 s; the " +
+               "prediction takes no delay");
+        }
         steps.push_back(s);
         return true;
       }

@@ -198,3 +198,28 @@ TEST(ArduPilotReading, ASpeedChangeAfterAConditionSaysItWaitsForIt) {
   // The first speed change, with no condition before it, gets none.
   EXPECT_EQ(all.find("test item 2:"), std::string::npos);
 }
+
+TEST(ArduPilotReading, ANavDelayOfZeroSecondsSaysArduPilotWaitsForATimeOfDay) {
+  // ModeAuto::do_nav_delay: param1 <= 0 waits until the UTC time of day in param2-4.
+  Mission m = localMission({{100, 0, 10}});
+  MissionItem delay = m.items[1];
+  delay.command = 93;
+  delay.param[0] = 0.0;
+  delay.param[1] = 14.0;
+  delay.param[2] = 30.0;
+  delay.param[3] = 0.0;
+  delay.lat_deg = delay.lon_deg = delay.alt_m = 0.0;
+  delay.where = "test item delay";
+  m.items.insert(m.items.begin() + 2, delay);
+  for (std::size_t i = 0; i < m.items.size(); ++i) m.items[i].seq = static_cast<int>(i) + 1;
+  std::vector<std::string> warnings;
+  (void)sequenceMission(m, &warnings);
+  EXPECT_NE(joined(warnings).find("test item delay: NAV_DELAY of 0 s: ArduPilot takes a delay that is not positive as a "
+                                  "wait until the time of day in param2-4 (14:30:00 UTC)"),
+            std::string::npos)
+      << joined(warnings);
+  m.items[2].param[0] = 5.0;
+  warnings.clear();
+  (void)sequenceMission(m, &warnings);
+  EXPECT_EQ(joined(warnings).find("NAV_DELAY"), std::string::npos);
+}
