@@ -503,8 +503,11 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       ++k;
     } else {  // Land
       if (st.has_position) {
+        // ModeAuto::do_land flies to the point at the vehicle's measured altitude
+        // (shift_alt_to_current_alt): a leg from the last target that is never of zero length, even
+        // over the waypoint the vehicle stopped at, flown as a whole S-curve (as RTL's climb leg).
         LegSpec over = specOf(st, P, ki);
-        over.target.z() = here.z();
+        over.target.z() = here.z() + std::max(s.tracking_error.vertical_m, kHoldOffset);
         here = flyChain(fl, {over}, here, P, FlightPhase::Landing, P.jerk, std::exchange(carried, 0.0));
       }
       // ModeAuto::land_start sets the descent limit back to WPNAV_SPEED_DN (get_default_speed_down:

@@ -223,3 +223,26 @@ TEST(ArduPilotReading, ANavDelayOfZeroSecondsSaysArduPilotWaitsForATimeOfDay) {
   (void)sequenceMission(m, &warnings);
   EXPECT_EQ(joined(warnings).find("NAV_DELAY"), std::string::npos);
 }
+
+TEST(ArduPilotReading, ALandingOverTheWaypointJustReachedStillFliesItsShortApproachLeg) {
+  // ModeAuto::do_land flies to the LAND's point at the measured altitude (shift_alt_to_current_alt):
+  // over the waypoint the vehicle stopped at, a leg of about a centimetre, which AC_WPNav flies as
+  // a whole S-curve (0.6-1.1 s at the defaults), as the 4.7 SITL logs show before an RTL's return.
+  Mission m = localMission({{100, 0, 10}}, 1.0, 0.0, false);
+  MissionItem land = m.items.back();
+  land.seq += 1;
+  land.command = 21;
+  land.param[0] = 0.0;
+  land.alt_m = 0.0;
+  m.items.push_back(land);  // at the waypoint's latitude and longitude
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{});
+  double descent = -1.0;
+  for (const auto& s : f.samples)
+    if (s.t > f.events[1].completed_s && s.velocity.z() < -0.05) {
+      descent = s.t;
+      break;
+    }
+  ASSERT_GT(descent, 0.0);
+  EXPECT_GT(descent - f.events[1].completed_s, 0.6);
+  EXPECT_LT(descent - f.events[1].completed_s, 1.6);
+}
