@@ -179,6 +179,7 @@ struct Flight {
   Recorder& rec;
   detail::PositionFollower veh;
   double clock = 1.0;  // AC_WPNav's _track_scalar_dt
+  double spline_next_stale = 0.0;  // [m/s] arrival limit AC_WPNav's next-leg spline object holds (0 at boot)
   int replanned_faster = 0;  // legs begun at one speed and re-planned faster in flight (DO_CHANGE_SPEED)
   // One tick towards the target (p, v, a), recorded as the vehicle's state.
   void tick(const Eigen::Vector3d& p, const Eigen::Vector3d& v, const Eigen::Vector3d& a, FlightPhase phase, int step) {
@@ -291,9 +292,13 @@ LegSpec specOf(const NavStep& s, const Params& P, int k) {
 // left along the next leg (AC_WPNav::set_spline_destination): towards the waypoint after next when
 // that is a spline too, else along the next straight leg; not at all (a stop) when legs[k] is not
 // fast. `stale` [m/s] is the arrival limit the autopilot's curve object still holds. With
-// `limit_by_next`, the arrival speed is also kept to what the next leg can start at.
+// `limit_by_next`, the arrival speed is also kept to what the next leg can start at; a next spline
+// is built as AC_WPNav builds it in its next-leg object (_spline_next_leg), from the arrival limit
+// that object holds, `*next_stale` [m/s] (the last spline built there, unlimited; 0 at boot),
+// which is then updated.
 detail::SplineCurve splineOf(const std::vector<LegSpec>& legs, std::size_t k, const Eigen::Vector3d& origin,
-                             const Eigen::Vector3d& in, const Params& P, double jerk, double stale, bool limit_by_next = true) {
+                             const Eigen::Vector3d& in, const Params& P, double jerk, double stale, double* next_stale,
+                             bool limit_by_next = true) {
   const LegSpec& s = legs[k];
   Eigen::Vector3d out = Eigen::Vector3d::Zero();
   const bool next = s.fast && k + 1 < legs.size();
@@ -303,7 +308,9 @@ detail::SplineCurve splineOf(const std::vector<LegSpec>& legs, std::size_t k, co
   detail::SplineCurve c(origin, s.target, in, out, lim, stale);
   if (next && limit_by_next && !out.isZero()) {
     if (legs[k + 1].spline) {
-      c.limitDestinationSpeed(splineOf(legs, k + 1, s.target, out, P, jerk, c.destinationSpeedMax(), false).originSpeedMax());
+      const detail::SplineCurve n = splineOf(legs, k + 1, s.target, out, P, jerk, *next_stale, nullptr, false);
+      *next_stale = n.destinationSpeedMax();
+      c.limitDestinationSpeed(n.originSpeedMax());
     } else {
       c.limitDestinationSpeed(makeLeg(s.target, legs[k + 1].target, legs[k + 1], P, jerk).prof.peakSpeed());
     }
@@ -339,7 +346,7 @@ Eigen::Vector3d flyRoute(Flight& fl, const std::vector<LegSpec>& legs, const Eig
   double speed = 0.0, stale = 0.0;
   for (std::size_t a = 0; a < legs.size();) {
     if (legs[a].spline) {
-      detail::SplineCurve c = splineOf(legs, a, origin, in, P, jerk, stale);
+      detail::SplineCurve c = splineOf(legs, a, origin, in, P, jerk, stale, &fl.spline_next_stale);
       speed = flySpline(fl, c, legs[a], P, phase, speed);
       stale = c.destinationSpeedMax();
       in = legs[a].fast ? c.destinationTangent() : Eigen::Vector3d::Zero();
@@ -351,7 +358,12 @@ Eigen::Vector3d flyRoute(Flight& fl, const std::vector<LegSpec>& legs, const Eig
     while (b + 1 < legs.size() && !legs[b + 1].spline) ++b;
     const Eigen::Vector3d leg_origin = b > a ? legs[b - 1].target : origin;
     double v_end = 0.0;
-    if (b + 1 < legs.size()) v_end = splineOf(legs, b + 1, legs[b].target, legs[b].target - leg_origin, P, jerk, stale).originSpeedMax();
+    if (b + 1 < legs.size()) {  // a straight leg into a spline: the spline is built as the next leg
+      const detail::SplineCurve n =
+          splineOf(legs, b + 1, legs[b].target, legs[b].target - leg_origin, P, jerk, fl.spline_next_stale, nullptr, false);
+      fl.spline_next_stale = n.destinationSpeedMax();
+      v_end = n.originSpeedMax();
+    }
     flyChain(fl, {legs.begin() + static_cast<std::ptrdiff_t>(a), legs.begin() + static_cast<std::ptrdiff_t>(b) + 1}, origin, P, phase,
              jerk, speed, v_end, &speed);
     in = legs[b].fast ? Eigen::Vector3d(legs[b].target - leg_origin) : Eigen::Vector3d::Zero();

@@ -147,6 +147,24 @@ TEST(ArduCopterSpline, ASplineFliesThroughIntoALandingsApproachAtSpeed) {
   EXPECT_LT(closestTo(spline, {0.0, 200.0, 10.0}), 0.5);
 }
 
+TEST(ArduCopterSpline, TheFirstSplineOfAChainFromRestIsLimitedByTheNextLegObjectsStaleArrival) {
+  // Splines to (0, 100), (0, 110) and (0, 300), in a line, from rest after the take-off. AC_WPNav
+  // builds the second spline in its next-leg object, whose origin speed limit includes the stopping
+  // clause sqrt(2 (0.5 WPNAV_ACCEL) chord + v^2) with v the arrival limit that object still holds:
+  // 0 at boot, so sqrt(2 x 1.25 x 10) = 5.0 m/s, and the first spline arrives at 5.0 m/s, not the
+  // 10 m/s its own unlimited arrival would allow (SplineCurve::set_origin_and_destination).
+  Mission m = localMission({{0, 100, 10}, {0, 110, 10}, {0, 300, 10}});
+  for (int i : {1, 2, 3}) m.items[static_cast<std::size_t>(i)].command = 82;  // take-off, 3 splines, RTL
+  const FlownMission f = flyMission(sequenceMission(m), AutopilotConfig{}, onTarget());
+  double at_wp1 = 0.0, before = 0.0;
+  for (const auto& s : f.samples) {
+    if (s.t <= f.events[1].reached_s) at_wp1 = s.velocity.norm();
+    if (s.phase == FlightPhase::Mission && s.position.y() < 90.0) before = std::max(before, s.velocity.norm());
+  }
+  EXPECT_NEAR(at_wp1, 5.0, 0.15);
+  EXPECT_GT(before, 6.0);  // it flew faster earlier on the first spline and slowed for the short one
+}
+
 namespace {
 
 AutopilotConfig arduCopter33() {
