@@ -157,6 +157,9 @@ FlownMission flyMission(const std::vector<NavStep>& steps, const AutopilotConfig
       late[k].speed_xy = steps[k - 1].speed_xy;
       late[k].speed_up = steps[k - 1].speed_up;
       late[k].speed_down = steps[k - 1].speed_down;
+      late[k].speed_xy_41 = steps[k - 1].speed_xy_41;
+      late[k].speed_up_41 = steps[k - 1].speed_up_41;
+      late[k].speed_down_41 = steps[k - 1].speed_down_41;
     }
     FlightSettings now = s;
     now.speed_change_late = false;

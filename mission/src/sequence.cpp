@@ -199,7 +199,7 @@ struct Sequencer {
         if (!(s.hold_s > 0.0)) {
           // ModeAuto::do_nav_delay: a delay that is not positive waits until the time of day in
           // param2-4 (hour, minute, second UTC), AP::rtc().get_time_utc.
-          const auto part = [&](int i) { return std::isfinite(it.param[i]) ? static_cast<int>(it.param[i]) : 0; };
+          const auto part = [&](int i) { return std::isfinite(it.param[i]) ? static_cast<int>(std::clamp(it.param[i], -1.0, 99.0)) : 0; };
           char when[16];
           std::snprintf(when, sizeof when, "%02d:%02d:%02d", part(1), part(2), part(3));
           warn(it.where + ": NAV_DELAY of 0 s: ArduPilot takes a delay that is not positive as a wait until the time of day " +
