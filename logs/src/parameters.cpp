@@ -248,7 +248,7 @@ bool isArduPilotFlightParameter(const std::string& n) {
 }
 
 bool isPx4FlightParameter(const std::string& n) {
-  return matchesAny(n, {"MPC_", "RTL_", "MIS_"}, {"NAV_ACC_RAD", "NAV_MC_ALT_RAD"});
+  return matchesAny(n, {"MPC_", "RTL_", "MIS_"}, {"NAV_ACC_RAD", "NAV_MC_ALT_RAD", "COM_SPOOLUP_TIME"});
 }
 
 }  // namespace

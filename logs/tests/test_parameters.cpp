@@ -232,7 +232,7 @@ TEST(Parameters, FlightBehaviourSelection) {
   for (const char* n : {"MOT_THST_EXPO", "STAT_FLTTIME", "ATC_RAT_RLL_P", "BATT_CAPACITY", "ATC_ACCEL_R_FILT", "MPC_XY_CRUISE"})
     EXPECT_FALSE(isFlightBehaviourParameter("ArduCopter", n)) << n;
   for (const char* n : {"MPC_XY_CRUISE", "MPC_ACC_HOR", "MPC_JERK_AUTO", "MPC_TKO_SPEED", "MPC_LAND_SPEED", "NAV_ACC_RAD",
-                        "NAV_MC_ALT_RAD", "RTL_RETURN_ALT", "MIS_TAKEOFF_ALT"})
+                        "NAV_MC_ALT_RAD", "RTL_RETURN_ALT", "MIS_TAKEOFF_ALT", "COM_SPOOLUP_TIME"})
     EXPECT_TRUE(isFlightBehaviourParameter("PX4", n)) << n;
   for (const char* n : {"MC_ROLL_P", "BAT1_N_CELLS", "WPNAV_SPEED", "NAV_DLL_ACT"})
     EXPECT_FALSE(isFlightBehaviourParameter("PX4", n)) << n;

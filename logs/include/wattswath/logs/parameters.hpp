@@ -61,7 +61,7 @@ FirmwareVersion parsePx4Release(std::uint32_t ver_sw_release);
 /// families WPNAV_*, PSC_JERK_*, PSC_ANGLE_MAX, ANGLE_MAX, ATC_INPUT_TC, ATC_ACCEL_*_MAX,
 /// ATC_RATE_*_MAX, ATC_SLEW_YAW, WP_YAW_BEHAVIOR, RTL_*, LAND_*, PILOT_SPEED_UP/DN,
 /// PILOT_TKOFF_ALT, TKOFF_*, WP_NAVALT_MIN, LOIT_* and the 3.x names RC_FEEL_RP, PILOT_VELZ_MAX,
-/// PILOT_ACCEL_Z; for PX4 MPC_*, NAV_ACC_RAD, NAV_MC_ALT_RAD, RTL_*, MIS_*. Family "unknown" uses
+/// PILOT_ACCEL_Z; for PX4 MPC_*, NAV_ACC_RAD, NAV_MC_ALT_RAD, COM_SPOOLUP_TIME, RTL_*, MIS_*. Family "unknown" uses
 /// the ArduPilot list.
 bool isFlightBehaviourParameter(const std::string& family, const std::string& name);
 
