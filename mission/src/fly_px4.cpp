@@ -208,8 +208,7 @@ struct Flyer {
     while (p.z() > 0.0) {
       const Eigen::Vector3d at{xy.x(), xy.y(), p.z()};
       Eigen::Vector3d v_des = Eigen::Vector3d::Zero();
-      v_des.head<2>() = (at - p).head<2>().norm() > 0.0 ? Eigen::Vector2d(desired(at, at, cruise, P.acc_rad, {0.0, P.acc_down}).head<2>())
-                                                         : Eigen::Vector2d::Zero();
+      v_des.head<2>() = desired(at, at, cruise, P.acc_rad, {0.0, P.acc_down}).head<2>();
       v_des.z() = -law(p.z());
       advance(v_des, {P.vel_max_dn, P.acc_down});
       if (p.z() <= 0.0) {

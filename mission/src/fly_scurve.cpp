@@ -291,7 +291,8 @@ LegSpec specOf(const NavStep& s, const Params& P, int k) {
 // The spline segment of legs[k] from `origin`, entered along tangent `in` (zero from a stop), and
 // left along the next leg (AC_WPNav::set_spline_destination): towards the waypoint after next when
 // that is a spline too, else along the next straight leg; not at all (a stop) when legs[k] is not
-// fast. `stale` [m/s] is the arrival limit the autopilot's curve object still holds. With
+// fast. `stale` [m/s] is the arrival limit the autopilot's curve object still holds (it sets only
+// the origin speed limit). With
 // `limit_by_next`, the arrival speed is also kept to what the next leg can start at; a next spline
 // is built as AC_WPNav builds it in its next-leg object (_spline_next_leg), from the arrival limit
 // that object holds, `*next_stale` [m/s] (the last spline built there, unlimited; 0 at boot),
@@ -343,12 +344,13 @@ Eigen::Vector3d flyRoute(Flight& fl, const std::vector<LegSpec>& legs, const Eig
   if (std::none_of(legs.begin(), legs.end(), [](const LegSpec& l) { return l.spline; }))
     return flyChain(fl, legs, here, P, phase, jerk);
   Eigen::Vector3d origin = here, in = Eigen::Vector3d::Zero();
-  double speed = 0.0, stale = 0.0;
+  double speed = 0.0;
   for (std::size_t a = 0; a < legs.size();) {
     if (legs[a].spline) {
-      detail::SplineCurve c = splineOf(legs, a, origin, in, P, jerk, stale, &fl.spline_next_stale);
+      // The spline flown: only its origin speed limit would depend on the arrival limit its curve
+      // object holds, and the speed it starts at is the one the leg before hands over, so 0 does.
+      detail::SplineCurve c = splineOf(legs, a, origin, in, P, jerk, 0.0, &fl.spline_next_stale);
       speed = flySpline(fl, c, legs[a], P, phase, speed);
-      stale = c.destinationSpeedMax();
       in = legs[a].fast ? c.destinationTangent() : Eigen::Vector3d::Zero();
       origin = legs[a].target;
       ++a;
@@ -436,6 +438,12 @@ Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, F
   return fl.restartAtStoppingPoint(z);
 }
 
+// [m] How far a hovering vehicle's measured altitude is off its position target: a leg from the
+// target to the measured altitude is never of zero length, and AC_WPNav flies even a leg of
+// millimetres as a whole S-curve (0.6-1.1 s for 1 mm-1 cm). The measured vertical tracking error,
+// else kHoldOffset (the ArduCopter 4.7 SITL logs: 0.2-1.4 cm, a 0.75-1.1 s pause before the return).
+double hoverOffset(const FlightSettings& s) { return std::max(s.tracking_error.vertical_m, kHoldOffset); }
+
 // [m] The RTL's return altitude from `here` [m, home at the origin] (ModeRTL::compute_return_target):
 // RTL_ALT, at least RTL_CLIMB_MIN above the vehicle (and 0.3 m, RTL_ALT_MIN); with RTL_CONE_SLOPE
 // >= 0.5 no higher than the cone's slope x the distance home, yet not below a floor: from 4.5 (PR
@@ -496,11 +504,8 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
       // controller afresh (ModeRTL::init runs AC_WPNav::wp_and_spline_init).
       here = fl.restartAtStoppingPoint(here.z());
       double alt = returnAltitude(P, here);
-      // The climb leg runs from the position target to the measured altitude at least: a vehicle is
-      // never exactly on its target, and AC_WPNav flies even a leg of millimetres as a whole S-curve
-      // (0.6-1.1 s for 1 mm-1 cm). The offset is the measured vertical tracking error, else
-      // kHoldOffset (the ArduCopter 4.7 SITL logs: 0.2-1.4 cm, a 0.75-1.1 s pause before the return).
-      alt = std::max(alt, here.z() + std::max(s.tracking_error.vertical_m, kHoldOffset));
+      // The climb leg runs from the position target to the measured altitude at least.
+      alt = std::max(alt, here.z() + hoverOffset(s));
       LegSpec climb{{here.x(), here.y(), alt}, P.rtl_speed, P.speed_up, P.speed_dn, 0.0, ki, true};
       LegSpec home{{0.0, 0.0, alt}, P.rtl_speed, P.speed_up, P.speed_dn, P.rtl_loiter_s, ki, false};
       here = flyChain(fl, {climb, home}, here, P, FlightPhase::Return, P.jerk);
@@ -519,7 +524,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
         // (shift_alt_to_current_alt): a leg from the last target that is never of zero length, even
         // over the waypoint the vehicle stopped at, flown as a whole S-curve (as RTL's climb leg).
         LegSpec over = specOf(st, P, ki);
-        over.target.z() = here.z() + std::max(s.tracking_error.vertical_m, kHoldOffset);
+        over.target.z() = here.z() + hoverOffset(s);
         here = flyChain(fl, {over}, here, P, FlightPhase::Landing, P.jerk, std::exchange(carried, 0.0));
       }
       // ModeAuto::land_start sets the descent limit back to WPNAV_SPEED_DN (get_default_speed_down:

@@ -8,6 +8,7 @@
 
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/mission/files.hpp"
+#include "wattswath/mission/planned_mission.hpp"
 
 namespace wattswath::mission {
 namespace {
@@ -143,8 +144,9 @@ energy::EnergyModel inWind(const energy::EnergyModel& model, const energy::Vehic
 // vehicle file's autopilot does. Files that do not say (WPL, firmwareType 0) get no note.
 void writtenForNotes(const Mission& m, const AutopilotConfig& a, std::vector<std::string>& notes) {
   const bool px4 = a.family == AutopilotFamily::PX4;
-  const char* written = m.firmware_type == 3 ? "ArduPilot" : m.firmware_type == 12 ? "PX4" : nullptr;
-  if (written != nullptr && (m.firmware_type == 12) != px4) {
+  const bool for_px4 = m.firmware_type == static_cast<int>(Firmware::PX4);
+  const char* written = m.firmware_type == static_cast<int>(Firmware::ArduPilot) ? "ArduPilot" : for_px4 ? "PX4" : nullptr;
+  if (written != nullptr && for_px4 != px4) {
     notes.push_back(m.source + ": the .plan was written for " + written + " (firmwareType " +
                     std::to_string(m.firmware_type) + ") and is predicted as the vehicle's " + a.firmware + " " +
                     a.version + " flies it; items the firmwares read differently (speeds, take-off, loiter and "

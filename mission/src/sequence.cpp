@@ -76,7 +76,8 @@ struct Sequencer {
   // A DO (or CONDITION) item run: counts it in its section.
   void doItem(const MissionItem& it) {
     ++section_dos;
-    if (it.command == static_cast<int>(Command::ConditionDelay) || it.command == 114 /* CONDITION_DISTANCE */) section_waits = true;
+    if (it.command == static_cast<int>(Command::ConditionDelay) || it.command == static_cast<int>(Command::ConditionDistance))
+      section_waits = true;
   }
 
   // The speeds of the 4.1-4.4 rule: `type` 2 climb, 3 descent, else horizontal.

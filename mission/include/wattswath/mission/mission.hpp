@@ -24,6 +24,7 @@ enum class Command : int {
   NavSplineWaypoint = 82,    ///< fly to a position on a spline; param1 hold [s]
   NavDelay = 93,             ///< wait; param1 delay [s]
   ConditionDelay = 112,      ///< delay the next DO command; param1 [s] (no effect on flight)
+  ConditionDistance = 114,   ///< delay the next DO command until this close to the waypoint; param1 [m]
   ConditionYaw = 115,        ///< turn to a heading; param1 angle [deg], param2 rate [deg/s]
   DoJump = 177,              ///< jump to item param1, param2 times
   DoChangeSpeed = 178,       ///< param1 speed type (0/1 horizontal, 2 climb, 3 descent), param2 [m/s]
