@@ -74,6 +74,7 @@ report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::Autop
     }
   }
   for (const auto& [label, text] : extra) d.facts.push_back({label, text});
+  if (!p.flight.model.empty()) d.facts.push_back({"model", p.flight.model});
   for (const auto& w : p.warnings) d.facts.push_back({"note", w});
   return report::missionReport(d);
 }
@@ -112,6 +113,7 @@ nlohmann::json toJson(const ms::MissionPrediction& p, const ms::AutopilotConfig&
   } else {
     j["battery"] = {{"known", false}, {"verdict", "The vehicle file has no battery: no state of charge can be given."}};
   }
+  j["model"] = p.flight.model;
   j["warnings"] = p.warnings;
   return j;
 }
@@ -131,6 +133,7 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap,
   }
   std::cout << "battery: " << (p.battery.known ? p.battery.verdict : "unknown (no battery in the vehicle file)") << "\n";
   for (const auto& [label, text] : extra) std::cout << label << ": " << text << "\n";
+  if (!p.flight.model.empty()) std::cout << "model: " << p.flight.model << "\n";
   std::cout.flush();
   for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
 }
@@ -195,6 +198,7 @@ PredictRun runPrediction(const PredictOptions& o, const en::Vehicle& v, Predicti
   if (r.wind) setup.settings.wind = r.wind->air();
   ms::ReadOptions ro;
   ro.lenient = o.lenient;
+  if (!o.launch.empty()) ro.distances_from = launchPoint(o.launch);
   r.mission = ms::readMission(o.mission, ro);
   const ms::Mission& m = r.mission;
   if (!o.launch.empty()) r.launch = moveHomeTo(r.mission, o.launch);

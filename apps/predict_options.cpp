@@ -40,6 +40,10 @@ double optionNumber(const std::string& option, const std::string& value, const s
   return x;
 }
 
+constexpr const char* kLaunchExpected =
+    "expected LAT,LON in degrees or LAT,LON,ALT with ALT in metres as the mission's home altitude, e.g. 43.7157,10.4612 "
+    "or 43.7157,10.4612,35.5";
+
 }  // namespace
 
 int absoluteItems(const mission::Mission& m, const std::vector<mission::NavStep>& steps) {
@@ -53,22 +57,24 @@ int absoluteItems(const mission::Mission& m, const std::vector<mission::NavStep>
   return static_cast<int>(items.size());
 }
 
-Launch moveHomeTo(mission::Mission& m, const std::string& launch) {
-  const std::string expected = "expected LAT,LON in degrees or LAT,LON,ALT with ALT in metres as the mission's home "
-                               "altitude, e.g. 43.7157,10.4612 or 43.7157,10.4612,35.5";
+geometry::GeoPoint launchPoint(const std::string& launch) {
   const std::vector<std::string> parts = commaParts(launch);
-  if (parts.size() < 2 || parts.size() > 3) throw std::invalid_argument("--launch '" + launch + "': " + expected);
-  auto number = [&](const std::string& text) { return optionNumber("--launch", launch, text, expected); };
-  geometry::GeoPoint at = m.home;
-  at.lat_deg = number(parts[0]);
-  at.lon_deg = number(parts[1]);
+  if (parts.size() < 2 || parts.size() > 3) throw std::invalid_argument("--launch '" + launch + "': " + kLaunchExpected);
+  auto number = [&](const std::string& text) { return optionNumber("--launch", launch, text, kLaunchExpected); };
+  geometry::GeoPoint at{number(parts[0]), number(parts[1]), 0.0};
   geometry::validateGeoPoint(at, "--launch");
+  return at;
+}
+
+Launch moveHomeTo(mission::Mission& m, const std::string& launch) {
+  const std::vector<std::string> parts = commaParts(launch);
+  auto number = [&](const std::string& text) { return optionNumber("--launch", launch, text, kLaunchExpected); };
+  geometry::GeoPoint at = m.home;
+  const geometry::GeoPoint point = launchPoint(launch);
+  at.lat_deg = point.lat_deg;
+  at.lon_deg = point.lon_deg;
   Launch l;
   l.from_home_m = geometry::geodesicDistance(m.home, at);
-  if (l.from_home_m > 50000.0) {
-    throw std::invalid_argument("--launch '" + launch + "' is " + std::to_string(static_cast<long>(l.from_home_m / 1000.0)) +
-                                " km from the mission's home; expected within 50 km of it");
-  }
   if (parts.size() == 3) {
     l.alt_m = number(parts[2]);
     if (!(*l.alt_m >= -500.0 && *l.alt_m <= 9000.0)) {
@@ -85,8 +91,14 @@ Launch moveHomeTo(mission::Mission& m, const std::string& launch) {
 
 std::string launchText(const Launch& l) {
   std::ostringstream os;
-  os << std::fixed << std::setprecision(1) << l.from_home_m
-     << " m from the mission's home; the autopilot's home is set there and the return flies to it";
+  if (l.from_home_m > 50000.0) {
+    os << std::fixed << std::setprecision(0) << l.from_home_m / 1000.0
+       << " km from the mission's home, which is taken as a placeholder: the autopilot's home is set where it arms, and "
+          "the return flies there";
+  } else {
+    os << std::fixed << std::setprecision(1) << l.from_home_m
+       << " m from the mission's home; the autopilot's home is set there and the return flies to it";
+  }
   if (l.alt_m) {
     os << "; " << std::showpos << l.alt_change_m << std::noshowpos << " m from the home's altitude: ";
     if (l.absolute_items > 0) {

@@ -25,6 +25,10 @@ struct Launch {
 /// sequenced `steps`) give it above sea level (MAV_FRAME_GLOBAL), so it moves with the home's altitude.
 int absoluteItems(const mission::Mission& m, const std::vector<mission::NavStep>& steps);
 
+/// The point of --launch ("LAT,LON[,ALT]") [deg], its altitude left 0; throws std::invalid_argument
+/// naming --launch for a malformed value.
+geometry::GeoPoint launchPoint(const std::string& launch);
+
 /// Moves `m`'s home to `launch` ("LAT,LON" [deg], optionally ",ALT" [m, the file's home's reference]):
 /// the autopilot sets home where the vehicle arms and returns there; heights given relative to
 /// home stay above the new home, absolute ones are measured from its altitude. Throws

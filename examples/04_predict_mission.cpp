@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
                 p.battery.verdict.c_str());
   else
     std::printf("battery: unknown (the vehicle file has none)\n");
+  std::printf("model: %s\n", p.flight.model.c_str());
   for (const auto& w : p.warnings) std::printf("warning: %s\n", w.c_str());
 
   // The same mission in a steady 6 m/s wind from the east (the air moving west): the vehicle flies

@@ -1,6 +1,8 @@
 // Checks of a mission read from a file (commands, frames, fields, distance from home, DO_JUMP) and
 // the unrolling of its DO_JUMP loops in ArduPilot's order (AP_Mission::get_next_cmd).
+#include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -24,6 +26,40 @@ std::string numberText(double v) {
 
 std::string withoutBom(const std::string& text) {
   return text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text;
+}
+
+void checkText(const std::string& text, const std::string& source) {
+  const auto starts = [&](const char* bom, std::size_t n) { return text.size() >= n && text.compare(0, n, bom, n) == 0; };
+  const bool utf32 = starts("\xFF\xFE\x00\x00", 4) || starts("\x00\x00\xFE\xFF", 4);
+  const bool utf16 = !utf32 && (starts("\xFF\xFE", 2) || starts("\xFE\xFF", 2) ||
+                                (text.size() >= 4 && (text[0] == '\0' || text[1] == '\0') && (text[2] == '\0' || text[3] == '\0')));
+  if (utf16 || utf32) {
+    fail(source, std::string("the file is ") + (utf32 ? "UTF-32" : "UTF-16") +
+                     " text, expected UTF-8 or ASCII (save it as UTF-8: Notepad's \"UTF-8\", iconv -f UTF-16 -t UTF-8)");
+  }
+  const std::size_t nul = text.find('\0');
+  if (nul == std::string::npos) return;
+  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
+  const std::size_t start = text.rfind('\n', nul);
+  const std::size_t column = nul - (start == std::string::npos ? 0 : start + 1) + 1;
+  fail(source + ":" + std::to_string(line), "a NUL byte at column " + std::to_string(column) +
+                                                ", expected text (the file may be binary, truncated or damaged)");
+}
+
+std::string printable(const std::string& s, std::size_t most) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size() && i < most; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", c);
+      out += buf;
+    } else {
+      out += s[i];
+    }
+  }
+  if (s.size() > most) out += "...";
+  return out;
 }
 
 void checkHomePoint(const geometry::GeoPoint& p, const std::string& where) {
@@ -139,20 +175,55 @@ void checkParams(const MissionItem& it) {
   }
 }
 
-/// Drops (lenient) or rejects the items whose command is not supported.
+/// Which items the autopilot can reach from the first: each item leads to the next, a DO_JUMP also
+/// to its target (the first item numbered that or later), and a NAV_RETURN_TO_LAUNCH or NAV_LAND
+/// ends the mission (AP_Mission stops there unless MIS_OPTIONS continues after a landing).
+std::vector<bool> reachableItems(const Mission& m) {
+  const std::size_t n = m.items.size();
+  std::vector<bool> seen(n, false);
+  std::vector<std::size_t> todo{0};
+  while (!todo.empty()) {
+    const std::size_t k = todo.back();
+    todo.pop_back();
+    if (k >= n || seen[k]) continue;
+    seen[k] = true;
+    const MissionItem& it = m.items[k];
+    const auto cmd = static_cast<Command>(it.command);
+    if (cmd == Command::NavReturnToLaunch || cmd == Command::NavLand) continue;
+    todo.push_back(k + 1);
+    if (cmd != Command::DoJump || !std::isfinite(it.param[0]) || it.param[1] == 0.0) continue;
+    for (std::size_t t = 0; t < n; ++t) {
+      if (m.items[t].seq >= it.param[0]) {
+        todo.push_back(t);
+        break;
+      }
+    }
+  }
+  return seen;
+}
+
+/// Rejects, or drops with --lenient, the items whose command is not supported. A navigation command
+/// moves the vehicle, so it is never skipped; an item the mission never reaches (after its landing
+/// or return) is kept unread, as the autopilot never runs it.
 void checkCommands(Mission& m, const ReadOptions& o) {
+  if (m.items.empty()) fail(m.source, "no mission items, expected at least one");
+  const std::vector<bool> reached = reachableItems(m);
   std::vector<MissionItem> kept;
-  for (auto& it : m.items) {
-    if (isSupportedCommand(it.command)) {
+  for (std::size_t k = 0; k < m.items.size(); ++k) {
+    MissionItem& it = m.items[k];
+    if (isSupportedCommand(it.command) || !reached[k]) {
       kept.push_back(std::move(it));
       continue;
     }
     const std::string what = "command = " + std::to_string(it.command) + " (" + commandName(it.command) +
                              "), expected a supported command (docs/missions.md)";
+    if (isNavCommand(it.command)) {
+      fail(it.where, what + "; a navigation command moves the vehicle, so the prediction cannot leave it out (not even "
+                            "with --lenient): remove it or replace it with the waypoints it flies");
+    }
     if (!o.lenient) fail(it.where, what + "; use --lenient to skip it");
     m.warnings.push_back(it.where + ": " + what + "; skipped (--lenient)");
   }
-  if (m.items.empty()) fail(m.source, "no mission items, expected at least one");
   if (kept.empty())
     fail(m.source, "all " + std::to_string(m.items.size()) + " items have unsupported commands (skipped with --lenient), "
                    "expected at least one supported item");
@@ -174,15 +245,19 @@ void checkDistances(const Mission& m, const ReadOptions& o) {
   bool any = false;
   for (const auto& it : m.items) any = any || hasPosition(it);
   if (!any) return;
-  const geometry::LocalFrame frame(m.home);
+  const geometry::GeoPoint from = o.distances_from.value_or(m.home);
+  const geometry::LocalFrame frame(from);
+  const std::string what = o.distances_from ? "the launch point (" : "home (";
   for (const auto& it : m.items) {
     if (!hasPosition(it)) continue;
     const double d = frame.toLocal(it.lat_deg, it.lon_deg).norm();
     if (d > o.max_distance_m) {
       fail(it.where, commandName(it.command) + " at (" + numberText(it.lat_deg) + ", " + numberText(it.lon_deg) +
-                         ") is " + numberText(std::round(d) / 1000.0) + " km from home (" + numberText(m.home.lat_deg) +
-                         ", " + numberText(m.home.lon_deg) + "), expected at most " +
-                         numberText(o.max_distance_m / 1000.0) + " km (ReadOptions::max_distance_m)");
+                         ") is " + numberText(std::round(d) / 1000.0) + " km from " + what + numberText(from.lat_deg) +
+                         ", " + numberText(from.lon_deg) + "), expected at most " + numberText(o.max_distance_m / 1000.0) +
+                         " km (ReadOptions::max_distance_m)" +
+                         (o.distances_from ? "" : "; when the file's home is a placeholder, give where the vehicle will "
+                                                  "arm (predict --launch LAT,LON): the autopilot sets home there"));
     }
   }
 }

@@ -46,6 +46,7 @@ std::string readText(const std::string& path) {
 
 Mission readMission(const std::string& path, const ReadOptions& o) {
   const std::string text = detail::withoutBom(readText(path));
+  detail::checkText(text, path);
   const Format ext = byExtension(path), content = byContent(text);
   if (ext != Format::Unknown && content != Format::Unknown && ext != content)
     fail(path, std::string("the extension says ") + formatName(ext) + " but the content looks like " + formatName(content));

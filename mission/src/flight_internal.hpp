@@ -55,6 +55,8 @@ class Recorder {
   void note(const std::string& n) {
     if (std::find(out_.notes.begin(), out_.notes.end(), n) == out_.notes.end()) out_.notes.push_back(n);
   }
+  /// Sets the line saying which model flew and with which parameters (FlownMission::model).
+  void model(const std::string& m) { out_.model = m; }
   /// Starts the record at home on the ground and waits the take-off delay (FlightSettings, or the
   /// autopilot's documented spool-up time `spool_s` [s] when the settings give none).
   void startOnGround(double spool_s) {

@@ -380,7 +380,7 @@ struct Flyer {
     leg(from, edge, speed, false, FlightPhase::Mission, step);
     rec.reached(step);
     detail::CircleTarget c(st, center, P.circle_rate, speed, P.accel, veh.p);
-    rec.note(c.note());
+    rec.note((st.where.empty() ? std::string() : st.where + ": ") + c.note());
     Eigen::Vector3d target = stoppingPoint(speed);  // AC_Circle::init: the target at the stopping point
     while (!c.done()) {
       const double nav_dt = navStep(veh, P, rec.dt());
@@ -500,7 +500,7 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
              detail::num(P.tracking.vertical_m) + " m vertically (measured on logs): ArduCopter " + ap.version + " shortens " +
              "the carrot's lead by it" + (P.linear_slack ? ", which slows the cruise" : ", a small effect from 3.4 on"));
   }
-  rec.note("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + detail::num(P.accel) + " m/s/s, lean-limited acceleration " +
+  rec.model("ArduCopter " + ap.version + " leash model: WPNAV_ACCEL " + detail::num(P.accel) + " m/s/s, lean-limited acceleration " +
            detail::num(P.accel_max) + " m/s/s, attitude lag " + detail::num(kAttitudeLag) + " s" +
            (P.nav_period > 0.0 ? ", navigation and position control every " + detail::num(P.nav_period) + " s" : std::string()) +
            "; RTL flies at the last DO_CHANGE_SPEED (3.x overwrites WPNAV_SPEED in memory)");

@@ -369,7 +369,7 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       }
     }
   }
-  rec.note("PX4 " + ap.version + " model: MPC_XY_CRUISE " + detail::num(P.cruise) + " m/s, MPC_ACC_HOR " +
+  rec.model("PX4 " + ap.version + " model: MPC_XY_CRUISE " + detail::num(P.cruise) + " m/s, MPC_ACC_HOR " +
            detail::num(P.acc) + " m/s/s, MPC_JERK_AUTO " + detail::num(P.jerk) + " m/s/s/s, NAV_ACC_RAD " +
            detail::num(P.acc_rad) + " m; take-off at MPC_TKO_SPEED below MPC_LAND_ALT1, MPC_Z_V_AUTO_UP above; RTL returns at MPC_XY_CRUISE, at " +
            std::string(P.rtl_rule == 13 ? "the 1.13+" : P.rtl_rule == 10 ? "the 1.10-1.12" : "the pre-1.10") +

@@ -421,7 +421,7 @@ Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, F
   // circle_start: AC_Circle::init restarts the position controller at its stopping point.
   const Eigen::Vector3d start = fl.veh.stoppingPoint();
   detail::CircleTarget circle(st, center, P.circle_rate, speed, P.accel_xy, start);
-  fl.rec.note(circle.note());
+  fl.rec.note((st.where.empty() ? std::string() : st.where + ": ") + circle.note());
   detail::InputShaper shaper(speed, P.accel_xy, P.jerk_xy);
   shaper.reset(start.head<2>());
   const double z = here.z();
@@ -541,7 +541,7 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
              "force, and re-plans it when its DO_CHANGE_SPEED runs as that waypoint is reached; the prediction flies them so, "
              "with a second acceleration after the first (a speed command written a waypoint earlier avoids it)");
   }
-  rec.note("ArduCopter " + ap.version + " S-curve model: WPNAV_SPEED " + detail::num(P.speed_xy) + " m/s, WPNAV_ACCEL " +
+  rec.model("ArduCopter " + ap.version + " S-curve model: WPNAV_SPEED " + detail::num(P.speed_xy) + " m/s, WPNAV_ACCEL " +
            detail::num(P.accel_xy) + " m/s/s, jerk " + detail::num(P.jerk) + " m/s/s/s, snap " +
            detail::num(P.snap) + " m/s^4, WPNAV_RADIUS " + detail::num(P.radius) + " m, RTL speed " +
            detail::num(P.rtl_speed) + " m/s (RTL_SPEED, else WPNAV_SPEED); lift-off " + detail::num(P.spool_s + P.slew_s) +

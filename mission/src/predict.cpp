@@ -115,8 +115,8 @@ std::string splineSwing(const Mission& m, const std::vector<NavStep>& steps, con
   std::ostringstream os;
   os.setf(std::ios::fixed);
   os.precision(1);
-  os << "spline waypoints: the flight swings up to " << worst << " m off the straight line between waypoints (on the way to item "
-     << m.items[worst_item].seq << ") and its curves are about " << std::max(0.0, curves - chords)
+  os << m.items[worst_item].where << ": spline waypoints: the flight swings up to " << worst
+     << " m off the straight line between waypoints (the most on the way to this item) and its curves are about " << std::max(0.0, curves - chords)
      << " m longer than the straight lines a ground station's mission distance counts: check the curves against obstacles "
         "and no-fly zones (--report draws them)";
   return os.str();
@@ -162,6 +162,30 @@ void writtenForNotes(const Mission& m, const AutopilotConfig& a, std::vector<std
                                                   : "a vehicle that is not a multicopter";
   notes.push_back(m.source + ": the .plan was written for " + kind + " (vehicleType " + std::to_string(t) +
                   "); it is predicted as the vehicle file's multicopter flies it");
+}
+
+// A note when DO_CHANGE_SPEED asks for more horizontal speed than the vehicle file's max_speed_mps:
+// the autopilots take it (ArduCopter's AC_WPNav::set_speed_xy has no upper bound; PX4 caps at
+// MPC_XY_VEL_MAX), so it is flown, and the note says how fast the flight went.
+std::string fasterThanVehicle(const Mission& m, const energy::Vehicle& v, const FlownMission& f) {
+  int count = 0;
+  double most = 0.0;
+  std::string first;
+  for (const MissionItem& it : m.items) {
+    const bool horizontal = it.param[0] == 0.0 || it.param[0] == 1.0;
+    if (it.command != static_cast<int>(Command::DoChangeSpeed) || !horizontal || !(it.param[1] > v.max_speed_mps)) continue;
+    if (count++ == 0) first = it.where;
+    most = std::max(most, it.param[1]);
+  }
+  if (count == 0) return {};
+  double flown = 0.0;
+  for (const FlightSample& s : f.samples) flown = std::max(flown, std::hypot(s.velocity.x(), s.velocity.y()));
+  std::ostringstream os;
+  os.precision(3);
+  os << first << ": DO_CHANGE_SPEED asks for up to " << most << " m/s (" << count << " item(s)), above the vehicle file's "
+     << "max_speed_mps " << v.max_speed_mps << " m/s; the autopilot takes the speed, so the prediction flies it, as fast "
+     << "as the airframe allows: up to " << flown << " m/s over the ground. Check the vehicle can fly that fast";
+  return os.str();
 }
 
 }  // namespace
@@ -217,6 +241,7 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   const energy::EnergyModel windy_model = windy ? inWind(model, v, s.wind, p.warnings) : energy::EnergyModel();
   const energy::EnergyModel& model_used = windy ? windy_model : model;
   if (const std::string swing = splineSwing(m, steps, p.flight); !swing.empty()) p.warnings.push_back(swing);
+  if (const std::string fast = fasterThanVehicle(m, v, p.flight); !fast.empty()) p.warnings.push_back(fast);
   p.pieces = toPieces(p.flight);
   p.breakdown = model_used.emptyBreakdown();
   p.piece_energy_j.resize(p.pieces.pieces.size());

@@ -19,6 +19,8 @@ using nlohmann::json;
 struct PlanItems {
   std::vector<MissionItem> items;
   std::vector<std::pair<long, int>> jump_ids;  // (doJumpId, seq)
+  /// Items in AltitudeMode 3 without a stored altitude: (index in items, height above terrain [m]).
+  std::vector<std::pair<std::size_t, double>> above_terrain;
 };
 
 std::string shown(const json& v) {
@@ -95,6 +97,41 @@ MissionItem simpleItem(const json& it, const std::string& where, int seq) {
   return m;
 }
 
+/// QGC's AltitudeMode 3 ("calculated above terrain", QGroundControlQmlGlobal::AltitudeModeCalcAboveTerrain):
+/// the item is sent in MAV_FRAME_GLOBAL at AMSLAltAboveTerrain, the terrain height under it plus
+/// Altitude, which QGC queries from its terrain data when it loads the plan. A file saved before
+/// the query answered stores null for both: such an item is noted and placed later at Altitude
+/// above home's altitude (flat terrain, placeTerrainItems). The last item of `out` is `it`'s.
+void calcAboveTerrain(const json& it, PlanItems& out) {
+  MissionItem& m = out.items.back();
+  if (!isPositional(m.command) || !it.contains("AltitudeMode") || !it.at("AltitudeMode").is_number() ||
+      it.at("AltitudeMode").get<double>() != 3.0 || std::isfinite(m.alt_m))
+    return;
+  const double amsl = realOf(it.at("AMSLAltAboveTerrain"), m.where, "AMSLAltAboveTerrain", true);
+  if (std::isfinite(amsl)) {
+    m.alt_m = amsl;
+    return;
+  }
+  const double above = realOf(it.at("Altitude"), m.where, "Altitude", true);
+  if (!std::isfinite(above)) {
+    fail(m.where, "AltitudeMode 3 (calculated above terrain) with Altitude, AMSLAltAboveTerrain and params[6] all null, "
+                  "expected the height above terrain in 'Altitude'");
+  }
+  out.above_terrain.emplace_back(out.items.size() - 1, above);
+}
+
+/// Places the items calcAboveTerrain left without an altitude at their height above home's
+/// altitude (no terrain data: flat ground at home's height assumed), and says so once.
+void placeTerrainItems(PlanItems& p, Mission& m) {
+  if (p.above_terrain.empty()) return;
+  for (const auto& [k, above] : p.above_terrain) p.items[k].alt_m = m.home.alt_m + above;
+  const MissionItem& first = p.items[p.above_terrain.front().first];
+  m.warnings.push_back(first.where + ": " + std::to_string(p.above_terrain.size()) + " item(s) in AltitudeMode 3 (calculated "
+                       "above terrain) have no AMSL altitude stored: QGroundControl fills it from terrain data when it loads "
+                       "the plan; without terrain data the prediction flies them at their Altitude above home (flat ground at "
+                       "home's height), the first at " + numberText(p.above_terrain.front().second) + " m");
+}
+
 /// The stored items of a survey / CorridorScan (TransectStyleComplexItem.Items), in order.
 void transectItems(const json& it, const std::string& where, PlanItems& out) {
   const json& tsci = required(it, "TransectStyleComplexItem", where, "an object with the survey's Items");
@@ -105,6 +142,7 @@ void transectItems(const json& it, const std::string& where, PlanItems& out) {
   for (std::size_t k = 0; k < items.size(); ++k) {
     const int seq = static_cast<int>(out.items.size()) + 1;
     out.items.push_back(simpleItem(items[k], inner + ".Items[" + std::to_string(k) + "]", seq));
+    calcAboveTerrain(items[k], out);
   }
 }
 
@@ -131,6 +169,7 @@ void readItem(const json& it, const std::string& where, PlanItems& out) {
   if (type != "SimpleItem") fail(where, "field 'type' = \"" + type + "\", expected \"SimpleItem\" or \"ComplexItem\"");
   const int seq = static_cast<int>(out.items.size()) + 1;
   out.items.push_back(simpleItem(it, where, seq));
+  calcAboveTerrain(it, out);
   if (it.contains("doJumpId"))
     out.jump_ids.emplace_back(integerOf(it.at("doJumpId"), where, "doJumpId", -1, 1000000000), seq);
 }
@@ -213,7 +252,9 @@ const json& missionObject(const json& j, const std::string& source) {
 }  // namespace
 
 Mission parseQgcPlan(const std::string& text, const std::string& source, const ReadOptions& o) {
-  const json j = parseJson(detail::withoutBom(text), source);
+  const std::string body = detail::withoutBom(text);
+  detail::checkText(body, source);
+  const json j = parseJson(body, source);
   const json& mj = missionObject(j, source);
   Mission m;
   m.source = source;
@@ -226,6 +267,7 @@ Mission parseQgcPlan(const std::string& text, const std::string& source, const R
   for (std::size_t i = 0; i < items.size(); ++i) readItem(items[i], where + ".items[" + std::to_string(i) + "]", p);
   if (p.items.empty()) fail(where, "no mission items, expected at least one");
   resolveJumps(p);
+  placeTerrainItems(p, m);
   m.items = std::move(p.items);
   checkMission(m, o);
   return m;

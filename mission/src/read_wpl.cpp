@@ -48,7 +48,7 @@ std::vector<std::string> splitFields(const std::string& line, bool& tabs_only) {
 std::string decimalPoint(const std::string& field, bool commas_ok, const std::string& where, const char* column) {
   const std::size_t c = field.find(',');
   if (c == std::string::npos) return field;
-  const std::string got = std::string(column) + " = \"" + field + "\"";
+  const std::string got = std::string(column) + " = \"" + detail::printable(field) + "\"";
   if (!commas_ok) fail(where, got + ", expected a number with a decimal point (decimal commas are accepted only in tab-separated lines)");
   const bool digitsAround = c > 0 && c + 1 < field.size() && std::isdigit(static_cast<unsigned char>(field[c - 1])) &&
                             std::isdigit(static_cast<unsigned char>(field[c + 1]));
@@ -65,9 +65,9 @@ double realField(const std::string& field, bool commas_ok, const std::string& wh
   double v = 0.0;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   if (r.ec == std::errc::result_out_of_range || std::isinf(v))
-    fail(where, std::string(column) + " = \"" + field + "\", expected a finite number in the range of a double");
+    fail(where, std::string(column) + " = \"" + detail::printable(field) + "\", expected a finite number in the range of a double");
   if (r.ec != std::errc() || r.ptr != s.data() + s.size())
-    fail(where, std::string(column) + " = \"" + field + "\", expected a number");
+    fail(where, std::string(column) + " = \"" + detail::printable(field) + "\", expected a number");
   return v;
 }
 
@@ -75,7 +75,7 @@ long intField(const std::string& field, const std::string& where, const char* co
   long v = 0;
   const auto r = std::from_chars(field.data(), field.data() + field.size(), v);
   if (r.ec != std::errc() || r.ptr != field.data() + field.size() || v < lo || v > hi)
-    fail(where, std::string(column) + " = \"" + field + "\", expected an integer in [" + std::to_string(lo) + ", " +
+    fail(where, std::string(column) + " = \"" + detail::printable(field) + "\", expected an integer in [" + std::to_string(lo) + ", " +
                     std::to_string(hi) + "]");
   return v;
 }
@@ -102,8 +102,8 @@ void checkHeader(const std::string& first, const std::string& source) {
   for (std::string w; in >> w;) words.push_back(w);
   if (words.size() == 3 && words[0] == "QGC" && words[1] == "WPL" && words[2] == "110") return;
   if (words.size() == 3 && words[0] == "QGC" && words[1] == "WPL")
-    fail(source + ":1", "QGC WPL version " + words[2] + " is not supported, expected the header \"" + kHeader + "\"");
-  fail(source + ":1", "header \"" + first + "\", expected \"" + kHeader + "\"");
+    fail(source + ":1", "QGC WPL version " + detail::printable(words[2]) + " is not supported, expected the header \"" + kHeader + "\"");
+  fail(source + ":1", "header \"" + detail::printable(first) + "\", expected \"" + kHeader + "\"");
 }
 
 void setHome(Mission& m, const Row& r, const std::string& where) {
@@ -154,7 +154,11 @@ Mission parseQgcWpl(const std::string& text, const std::string& source, const Re
   Mission m;
   m.source = source;
   m.format = "waypoints";
-  std::istringstream in(detail::withoutBom(text));
+  std::string body = detail::withoutBom(text);
+  detail::checkText(body, source);
+  // Lines ended by CR alone (classic Mac OS; .NET's ReadLine, which Mission Planner uses, accepts them).
+  if (body.find('\n') == std::string::npos) std::replace(body.begin(), body.end(), '\r', '\n');
+  std::istringstream in(body);
   std::string line;
   int number = 0, row = 0;
   bool home_row = false;

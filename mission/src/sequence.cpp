@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "flight_internal.hpp"
 #include "wattswath/mission/flight.hpp"
 
 namespace wattswath::mission {
@@ -72,6 +73,9 @@ struct Sequencer {
   std::vector<Pending> pending;  // speed changes while the controller is idle
 
   bool section_waits = false;  // a CONDITION_DELAY or CONDITION_DISTANCE since the last navigation item
+  int aux_noted = 0;           // DO_AUX_FUNCTION items run (the first is noted)
+  int terrain_items = 0;       // positional items flown with altitudes above terrain (frame 10 or 11)
+  std::string terrain_first;   // the first of them, for the note
 
   // A DO (or CONDITION) item run: counts it in its section.
   void doItem(const MissionItem& it) {
@@ -229,6 +233,57 @@ struct Sequencer {
   }
 };
 
+
+// The warning for the items after the navigation item `last` that ends the mission, `i` the first.
+std::string neverFlown(const Mission& m, int i, const NavStep& last) {
+  const std::string what = last.item >= 0 ? commandName(m.items[last.item].command) : "the mission's end";
+  std::string w = m.items[i].where + ": items after " + what + " are never flown (" +
+                  std::to_string(m.items.size() - i) + " ignored)";
+  for (std::size_t k = i; k < m.items.size(); ++k) {
+    if (m.items[k].command != static_cast<int>(Command::NavTakeoff)) continue;
+    w += "; ArduPilot flies on to the take-off at " + m.items[k].where +
+         " only when MIS_OPTIONS asks it to continue after a landing, which the prediction does not model";
+    break;
+  }
+  return w;
+}
+
+// NAV_DELAY items before the take-off: AP_Mission::is_takeoff_next skips them when it checks that
+// the mission starts with a take-off, and ModeAuto waits them out on the ground, armed at idle
+// (nav_delay_run: make_safe_ground_handling). They leave the flight; its times count from the
+// take-off, as they count from the throttle-up.
+void groundDelays(Sequencer& q) {
+  std::size_t n = 0;
+  double wait = 0.0;
+  while (n < q.steps.size() && q.steps[n].kind == NavStep::Kind::Delay && q.steps[n].item >= 0 &&
+         q.m.items[q.steps[n].item].command == static_cast<int>(Command::NavDelay)) {
+    wait += q.steps[n].hold_s;
+    ++n;
+  }
+  if (n == 0 || n == q.steps.size() || q.steps[n].kind != NavStep::Kind::Takeoff) return;
+  q.warn(q.steps.front().where + ": NAV_DELAY of " + detail::num(wait) + " s before the take-off: ArduCopter waits it out "
+         "on the ground, armed at idle, then takes off (AP_Mission::is_takeoff_next skips delays); the prediction starts at "
+         "the take-off and leaves the wait out of its time and energy");
+  q.steps.erase(q.steps.begin(), q.steps.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
+// A mission that does not start with a take-off: a vertical climb to the first item's altitude
+// (10 m when it has none) is put before it, and said.
+void assumeTakeoff(Sequencer& q) {
+  const NavStep& first = q.steps.front();
+  const bool has_alt = first.has_position || (first.alt_given && first.kind != NavStep::Kind::Delay);
+  const double z = has_alt && first.target.z() > 0.0 ? first.target.z() : 10.0;
+  NavStep t = first;
+  t.kind = NavStep::Kind::Takeoff;
+  t.target = {0.0, 0.0, z};
+  t.hold_s = 0.0;
+  t.item = -1;
+  t.where.clear();
+  q.steps.insert(q.steps.begin(), t);
+  q.warn(q.m.source + ": no NAV_TAKEOFF first: ArduCopter will not start such a mission on the ground (\"Auto: Missing "
+         "Takeoff Cmd\", ModeAuto::init); the prediction assumes it is started in the air after a vertical climb to " +
+         detail::num(z) + " m" + (has_alt ? " (the first item's altitude)" : ""));
+}
 }  // namespace
 
 const char* toString(FlightPhase p) {
@@ -274,6 +329,11 @@ std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>*
       continue;
     }
     if (it.command == static_cast<int>(Command::DoChangeSpeed)) q.changeSpeed(it);
+    if (it.command == static_cast<int>(Command::DoAuxFunction) && q.aux_noted++ == 0) {
+      q.warn(it.where + ": DO_AUX_FUNCTION " + detail::num(it.param[0]) + " runs an auxiliary switch function, which can "
+             "be anything from a relay to a mode change; the prediction assumes it does not change the flight");
+    }
+    if (isPositional(it.command) && (it.frame == 10 || it.frame == 11) && q.terrain_items++ == 0) q.terrain_first = it.where;
     if (isNavCommand(it.command)) {
       q.navStarts(kindOf(it));
       ended = !q.nav(i);
@@ -282,20 +342,18 @@ std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>*
     }
     ++i;
   }
-  if (ended && i < static_cast<int>(m.items.size())) {
-    q.warn(m.items[i].where + ": items after " + commandName(q.steps.back().item >= 0 ? m.items[q.steps.back().item].command : 0) +
-           " are never flown (" + std::to_string(m.items.size() - i) + " ignored)");
+  if (ended && i < static_cast<int>(m.items.size())) q.warn(neverFlown(m, i, q.steps.back()));
+  if (q.terrain_items > 0) {
+    q.warn(q.terrain_first + ": " + std::to_string(q.terrain_items) + " item(s) give altitudes above terrain (MAV_FRAME 10/11); "
+           "without terrain data the prediction flies them over flat ground at home's height, as heights above home");
   }
   if (q.steps.empty()) throw std::invalid_argument(m.source + ": the mission has no navigation item to fly");
-  if (q.steps.front().kind != NavStep::Kind::Takeoff) {
-    const double z = q.steps.front().has_position ? q.steps.front().target.z() : 10.0;
-    NavStep t = q.steps.front();
-    t.kind = NavStep::Kind::Takeoff;
-    t.target = {0.0, 0.0, z};
-    t.hold_s = 0.0;
-    t.item = -1;
-    q.steps.insert(q.steps.begin(), t);
-    q.warn(m.source + ": no NAV_TAKEOFF first: a vertical take-off to " + std::to_string(z) + " m is assumed");
+  groundDelays(q);
+  if (q.steps.front().kind != NavStep::Kind::Takeoff) assumeTakeoff(q);
+  else if (q.steps.front().target.z() < 1.0) {
+    q.warn(q.steps.front().where + ": NAV_TAKEOFF to " + detail::num(q.steps.front().target.z()) +
+           " m above home: ArduCopter climbs at least 1 m above where it lifts off (ModeAuto::takeoff_start), and so does "
+           "the prediction");
   }
   const NavStep::Kind last = q.steps.back().kind;
   if (last != NavStep::Kind::ReturnToLaunch && last != NavStep::Kind::Land) {

@@ -2,6 +2,7 @@
 // pymavlink write them, the shared real and SITL missions, and the malformed-mission corpus.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include "bad_corpus.hpp"
 #include "test_util.hpp"
 #include "wattswath/mission/files.hpp"
+#include "wattswath/mission/flight.hpp"
 
 using namespace wattswath::mission;
 using wattswath::test::readAll;
@@ -156,18 +158,52 @@ TEST(MissionFiles, UnknownCommandIsAnErrorOrWithLenientAWarningAndDropped) {
   ReadOptions o;
   o.lenient = true;
   const Mission m = readMission(path, o);
-  ASSERT_EQ(m.items.size(), 3u);  // take-off, waypoint, (VTOL take-off dropped), return
+  ASSERT_EQ(m.items.size(), 3u);  // take-off, waypoint, (gripper dropped), return
   EXPECT_EQ(m.items[2].seq, 4);   // the autopilot's numbering is kept
   ASSERT_EQ(m.warnings.size(), 1u);
-  EXPECT_NE(m.warnings[0].find("mission_unknown_command.waypoints:5: command = 84 (NAV_VTOL_TAKEOFF)"), std::string::npos);
+  EXPECT_NE(m.warnings[0].find("mission_unknown_command.waypoints:5: command = 211 (DO_GRIPPER)"), std::string::npos);
   EXPECT_NE(m.warnings[0].find("skipped (--lenient)"), std::string::npos);
+}
+
+// A navigation command moves the vehicle: leaving it out would fly another path, so --lenient does
+// not skip it (it did, silently changing the route, until 2026-11-27: ArduPilot's NAV_ARC_WAYPOINT,
+// NAV_PAYLOAD_PLACE and NAV_LOITER_TO_ALT test missions lost their arcs, descents and climbs).
+TEST(MissionFiles, LenientNeverSkipsANavigationCommand) {
+  const std::string path = sourcePath("tests/data/bad/mission_unknown_nav_command.waypoints");
+  ReadOptions o;
+  o.lenient = true;
+  const std::string e = errorOf([&] { readMission(path, o); });
+  EXPECT_NE(e.find("mission_unknown_nav_command.waypoints:5: command = 84 (NAV_VTOL_TAKEOFF)"), std::string::npos) << e;
+  EXPECT_NE(e.find("not even with --lenient"), std::string::npos) << e;
+}
+
+// AP_Mission stops at a NAV_LAND or NAV_RETURN_TO_LAUNCH, so an item after it is never run: an
+// unsupported command there is no error (ArduPilot's AUTO_LAND_TO_BRAKE test mission has a
+// DO_GRIPPER after its landing), unless a DO_JUMP before the landing leads to it.
+TEST(MissionFiles, AnUnsupportedCommandTheMissionNeverReachesIsKeptUnread) {
+  const std::string head = "QGC WPL 110\n" + kHome + kTakeoff + "2\t0\t3\t16\t0\t0\t0\t0\t43.7161\t10.4614\t10\t1\n";
+  const std::string land = "3\t0\t3\t21\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const std::string gripper = "4\t0\t2\t211\t1\t0\t0\t0\t0\t0\t0\t1\n";
+  const Mission m = parseQgcWpl(head + land + gripper, "after_land.waypoints");
+  ASSERT_EQ(m.items.size(), 4u);
+  EXPECT_EQ(m.items[3].command, 211);  // kept as written, never run
+  std::vector<std::string> notes;
+  sequenceMission(m, &notes);
+  bool said = false;
+  for (const auto& n : notes) said = said || n.find("after_land.waypoints:6: items after NAV_LAND are never flown (1 ignored)") != std::string::npos;
+  EXPECT_TRUE(said);
+  // A DO_JUMP before the landing to the gripper reaches it: an error again.
+  const std::string jump = "3\t0\t2\t177\t5\t1\t0\t0\t0\t0\t0\t1\n";
+  const std::string reached = head + jump + "4\t0\t3\t21\t0\t0\t0\t0\t0\t0\t0\t1\n" + "5\t0\t2\t211\t1\t0\t0\t0\t0\t0\t0\t1\n";
+  EXPECT_NE(errorOf([&] { parseQgcWpl(reached, "jump.waypoints"); }).find("jump.waypoints:7: command = 211 (DO_GRIPPER)"),
+            std::string::npos);
 }
 
 // Found by fuzz_mission: a lenient read that skipped every item returned an empty mission.
 TEST(MissionFiles, LenientReadOfOnlyUnsupportedItemsIsAnError) {
   ReadOptions o;
   o.lenient = true;
-  const std::string text = "QGC WPL 110\n" + kHome + "1\t0\t3\t23\t0\t0\t0\t0\t42\t89\t1\t1\n";
+  const std::string text = "QGC WPL 110\n" + kHome + "1\t0\t2\t216\t0\t0\t0\t0\t0\t0\t0\t1\n";
   EXPECT_NE(errorOf([&] { parseQgcWpl(text, "only23.waypoints", o); })
                 .find("only23.waypoints: all 1 items have unsupported commands (skipped with --lenient), expected at least one"),
             std::string::npos);
@@ -237,3 +273,49 @@ TEST(MissionFilesShared, IrisAndSitlMissionsRead) {
   EXPECT_EQ(files, 6);
 }
 #endif
+
+// QGroundControl's AltitudeMode 3 ("calculated above terrain") stores params[6] and
+// AMSLAltAboveTerrain as null until its terrain query answers; QGroundControl's own test plans are
+// saved so. Such an item is flown at its Altitude above home's altitude (flat ground) and said; a
+// stored AMSLAltAboveTerrain is the altitude. They were refused as "altitude = nan".
+TEST(MissionFiles, APlanItemCalculatedAboveTerrainWithoutItsAltitudeIsFlownAboveHomeAndSaid) {
+  auto plan = [](const std::string& amsl) {
+    return R"({"fileType":"Plan","version":1,"groundStation":"QGroundControl","mission":{"version":2,"firmwareType":3,
+      "vehicleType":2,"cruiseSpeed":15,"hoverSpeed":5,"plannedHomePosition":[43.716,10.4613,584],"items":[
+      {"type":"SimpleItem","command":22,"frame":3,"autoContinue":true,"params":[0,0,0,null,43.716,10.4613,30],
+       "AltitudeMode":1,"Altitude":30,"AMSLAltAboveTerrain":null,"doJumpId":1},
+      {"type":"SimpleItem","command":16,"frame":0,"autoContinue":true,"params":[0,0,0,null,43.717,10.4613,null],
+       "AltitudeMode":3,"Altitude":80,"AMSLAltAboveTerrain":)" + amsl + R"(,"doJumpId":2},
+      {"type":"SimpleItem","command":20,"frame":2,"autoContinue":true,"params":[0,0,0,0,0,0,0],"doJumpId":3}]},
+      "geoFence":{"circles":[],"polygons":[],"version":2},"rallyPoints":{"points":[],"version":2}})";
+  };
+  const Mission m = parseQgcPlan(plan("null"), "terrain.plan");
+  EXPECT_DOUBLE_EQ(m.items[1].alt_m, 584.0 + 80.0);
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("terrain.plan: mission.items[1]: 1 item(s) in AltitudeMode 3 (calculated above terrain) have "
+                               "no AMSL altitude stored"),
+            std::string::npos) << m.warnings[0];
+  const Mission stored = parseQgcPlan(plan("702.5"), "stored.plan");
+  EXPECT_DOUBLE_EQ(stored.items[1].alt_m, 702.5);
+  EXPECT_TRUE(stored.warnings.empty());
+}
+
+// Text a reader cannot take is named for what it is: UTF-16 (Notepad's "Unicode"), a NUL byte (a
+// damaged file) by line and column; lines ended by CR alone are read as lines. Before, the first
+// was shown as raw bytes, the second cut the message at the NUL, and the third echoed the whole
+// file as its "header".
+TEST(MissionFiles, Utf16NulBytesAndCrOnlyLineEndsAreNamedOrRead) {
+  const std::string wpl = "QGC WPL 110\n" + kHome + kTakeoff + "2\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  std::string cr = wpl;
+  std::replace(cr.begin(), cr.end(), '\n', '\r');
+  EXPECT_EQ(parseQgcWpl(cr, "mac.waypoints").items.size(), 2u);
+  std::string utf16 = "\xFF\xFE";
+  for (char c : wpl) utf16 += std::string{c, '\0'};
+  EXPECT_NE(errorOf([&] { parseQgcWpl(utf16, "u16.waypoints"); }).find("u16.waypoints: the file is UTF-16 text, expected UTF-8"),
+            std::string::npos);
+  std::string nul = wpl;
+  nul[wpl.find("22\t") + 3] = '\0';
+  EXPECT_NE(errorOf([&] { parseQgcWpl(nul, "nul.waypoints"); }).find("nul.waypoints:3: a NUL byte at column 10"),
+            std::string::npos) << errorOf([&] { parseQgcWpl(nul, "nul.waypoints"); });
+  EXPECT_NE(errorOf([&] { parseQgcPlan(std::string("{\"a\":\0}", 7), "nul.plan"); }).find("NUL byte"), std::string::npos);
+}

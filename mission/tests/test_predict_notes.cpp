@@ -2,11 +2,14 @@
 // vehicle that flies it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "flight_test_util.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/mission/files.hpp"
 #include "wattswath/mission/predict.hpp"
 
 using namespace wattswath::mission;
@@ -68,4 +71,95 @@ TEST(PredictNotes, APlanWrittenForAFixedWingOrVtolIsFlownAsTheMulticopterAndSays
             std::string::npos);
   m.vehicle_type = 20;
   EXPECT_NE(notesOf(m, AutopilotConfig{}).find("a VTOL aircraft (vehicleType 20)"), std::string::npos);
+}
+
+namespace {
+
+const std::string kWplHome = "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t43.7160040\t10.4613040\t7.15\t1\n";
+
+MissionPrediction predictText(const std::string& text, const std::string& name, const AutopilotConfig& ap = {}) {
+  const wattswath::energy::Vehicle v =
+      wattswath::energy::loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json");
+  const wattswath::energy::EnergyModel model = wattswath::energy::buildModel(v, {"hover", "kinetic"});
+  return predictMission(parseQgcWpl(text, name), v, model, ap, PredictSettings{});
+}
+
+std::string joined(const std::vector<std::string>& notes) {
+  std::string all;
+  for (const auto& n : notes) all += n + "\n";
+  return all;
+}
+
+}  // namespace
+
+// AP_Mission::is_takeoff_next skips NAV_DELAY when it checks that a mission starts with a take-off,
+// and ModeAuto waits the delay out on the ground (ArduPilot's NavDelayTakeoffAbsTime test mission).
+// The prediction leaves the wait out and says so; it flew 60 s of hover at an invented 10 m before.
+TEST(PredictNotes, ANavDelayBeforeTheTakeOffIsWaitedOnTheGroundAndLeftOutOfTheFlight) {
+  const std::string takeoff = "2\t0\t3\t22\t0\t0\t0\t0\t0\t0\t20\t1\n3\t0\t3\t16\t0\t0\t0\t0\t43.7170\t10.4613\t20\t1\n"
+                              "4\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const MissionPrediction with = predictText(kWplHome + "1\t0\t2\t93\t60\t-1\t-1\t-1\t0\t0\t0\t1\n" + takeoff, "delay.waypoints");
+  const MissionPrediction without = predictText(kWplHome + "1\t0\t2\t183\t9\t1500\t0\t0\t0\t0\t0\t1\n" + takeoff, "plain.waypoints");
+  EXPECT_NEAR(with.total.time_s, without.total.time_s, 1e-9);
+  EXPECT_NEAR(with.total.energy_j, without.total.energy_j, 1e-6);
+  EXPECT_EQ(with.flight.steps.front().kind, NavStep::Kind::Takeoff);
+  const std::string notes = joined(with.warnings);
+  EXPECT_NE(notes.find("delay.waypoints:3: NAV_DELAY of 60 s before the take-off: ArduCopter waits it out on the ground"),
+            std::string::npos) << notes;
+  EXPECT_EQ(notes.find("no NAV_TAKEOFF first"), std::string::npos) << notes;
+}
+
+// ArduCopter refuses AUTO on the ground without a take-off ("Auto: Missing Takeoff Cmd"); the
+// prediction climbs to the first item's altitude (it took 10 m for an item without a position,
+// where ArduPilot's inf_loop test mission loiters at 100 m) and says both.
+TEST(PredictNotes, AMissionWithoutATakeOffClimbsToTheFirstItemsAltitudeAndSaysArduCopterWouldNotStartIt) {
+  const MissionPrediction p =
+      predictText(kWplHome + "1\t0\t3\t19\t5\t0\t1\t0\t0\t0\t100\t1\n2\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n", "loiter.waypoints");
+  ASSERT_EQ(p.flight.steps.front().kind, NavStep::Kind::Takeoff);
+  EXPECT_DOUBLE_EQ(p.flight.steps.front().target.z(), 100.0);
+  const std::string notes = joined(p.warnings);
+  EXPECT_NE(notes.find("\"Auto: Missing Takeoff Cmd\""), std::string::npos) << notes;
+  EXPECT_NE(notes.find("a vertical climb to 100 m (the first item's altitude)"), std::string::npos) << notes;
+}
+
+// ModeAuto::takeoff_start lifts the target to at least 1 m above the vehicle when it is landed
+// (ArduPilot's TakeoffAlt test mission: "-10m is invalid, so it is set to 1m").
+TEST(PredictNotes, ATakeOffBelowOneMetreClimbsOneMetreAndSaysSo) {
+  const MissionPrediction p = predictText(kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t-10\t1\n", "low.waypoints");
+  double top = -1e9;
+  for (const FlightSample& s : p.flight.samples) top = std::max(top, s.position.z());
+  EXPECT_NEAR(top, 1.0, 0.05);
+  EXPECT_NE(joined(p.warnings).find("low.waypoints:3: NAV_TAKEOFF to -10 m above home: ArduCopter climbs at least 1 m"),
+            std::string::npos);
+}
+
+// Items above terrain (MAV_FRAME 10) are flown as heights above home without terrain data: said,
+// naming the first and the count, where it was said only in docs/missions.md.
+TEST(PredictNotes, TerrainFrameItemsAreFlownOverFlatGroundAndSaid) {
+  const std::string text = kWplHome + "1\t0\t10\t22\t0\t0\t0\t0\t0\t0\t15\t1\n2\t0\t10\t16\t0\t0\t0\t0\t43.7170\t10.4613\t15\t1\n"
+                           "3\t0\t3\t16\t0\t0\t0\t0\t43.7170\t10.4623\t15\t1\n4\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const std::string notes = joined(predictText(text, "terrain.waypoints").warnings);
+  EXPECT_NE(notes.find("terrain.waypoints:3: 2 item(s) give altitudes above terrain (MAV_FRAME 10/11); without terrain data"),
+            std::string::npos) << notes;
+}
+
+// DO_CHANGE_SPEED above the vehicle file's max_speed_mps (16 m/s for the IRIS) is flown, as the
+// autopilot takes it, and said with the fastest ground speed of the flight; DO_AUX_FUNCTION is
+// assumed not to change the flight, and said. The model's parameter line is FlownMission::model,
+// not a warning.
+TEST(PredictNotes, ASpeedAboveTheVehiclesMaximumIsFlownAndSaid) {
+  const std::string text = kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t20\t1\n2\t0\t2\t178\t1\t25\t-1\t0\t0\t0\t0\t1\n"
+                           "3\t0\t2\t218\t70\t2\t0\t0\t0\t0\t0\t1\n4\t0\t3\t16\t0\t0\t0\t0\t43.7260\t10.4613\t20\t1\n"
+                           "5\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const MissionPrediction p = predictText(text, "fast.waypoints");
+  const std::string notes = joined(p.warnings);
+  EXPECT_NE(notes.find("fast.waypoints:4: DO_CHANGE_SPEED asks for up to 25 m/s (1 item(s)), above the vehicle file's "
+                       "max_speed_mps 16 m/s"),
+            std::string::npos) << notes;
+  double fastest = 0.0;
+  for (const FlightSample& s : p.flight.samples) fastest = std::max(fastest, std::hypot(s.velocity.x(), s.velocity.y()));
+  EXPECT_GT(fastest, 16.5);
+  EXPECT_NE(notes.find("fast.waypoints:5: DO_AUX_FUNCTION 70 runs an auxiliary switch function"), std::string::npos) << notes;
+  EXPECT_EQ(notes.find("S-curve model:"), std::string::npos) << notes;
+  EXPECT_NE(p.flight.model.find("ArduCopter 4.5 S-curve model: WPNAV_SPEED 10 m/s"), std::string::npos) << p.flight.model;
 }

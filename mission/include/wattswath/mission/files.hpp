@@ -5,6 +5,7 @@
 /// written back. What each reader accepts is listed in docs/missions.md.
 
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,6 +37,9 @@ struct ReadOptions {
   bool lenient = false;                      ///< an unsupported command becomes a warning and its item is dropped
   double max_distance_m = 50000.0;           ///< [m] farthest a positional item may be from home, (0, 2e7]
   std::size_t max_unrolled_items = 100000;   ///< most items the DO_JUMP loops may unroll to, [1, 1e8]
+  /// [deg] when set, where the vehicle will arm: positional items are checked against it instead of
+  /// the file's home (ArduPilot and PX4 set home where they arm, so a file's home may be a placeholder)
+  std::optional<geometry::GeoPoint> distances_from;
 };
 
 /// Reads a mission file: `.plan` (QGroundControl JSON) or `.waypoints` / `.txt` (QGC WPL 110),

@@ -94,6 +94,7 @@ struct FlownMission {
   std::vector<FlightSample> samples;  ///< trajectory, every FlightSettings::sample_dt
   std::vector<StepEvent> events;    ///< one per step
   std::vector<std::string> notes;   ///< what the model assumed (e.g. "RTL speed = WPNAV_SPEED")
+  std::string model;                ///< the model and the parameters it flew with, in one line
 };
 
 /// How the airframe follows the autopilot's acceleration commands (used by the ArduCopter models,

@@ -35,6 +35,7 @@ enum class Command : int {
   DoDigicamControl = 203,    ///< camera shot (no effect on flight)
   DoMountControl = 205,      ///< gimbal (no effect on flight)
   DoSetCamTriggDist = 206,   ///< camera trigger distance param1 [m] (0 stops)
+  DoAuxFunction = 218,       ///< run an auxiliary switch function (assumed not to change the flight; noted)
   DoGimbalManagerPitchyaw = 1000,  ///< gimbal (no effect on flight)
   ImageStartCapture = 2000,  ///< camera (no effect on flight)
   ImageStopCapture = 2001,   ///< camera (no effect on flight)
