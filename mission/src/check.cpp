@@ -93,7 +93,7 @@ void checkFrame(const MissionItem& it) {
   if (isPositional(it.command) && !global) {
     fail(it.where, commandName(it.command) + " frame = " + std::to_string(f) +
                        ", expected a global frame for a position: 0 (absolute), 3 (relative to home), 10 (terrain) "
-                       "or their _INT variants 5, 6, 11");
+                       "or their _INT variants 5, 6, 11 (ArduPilot refuses any other with MAV_MISSION_UNSUPPORTED_FRAME)");
   }
   if (!global && f != 2) {
     fail(it.where, commandName(it.command) + " frame = " + std::to_string(f) +

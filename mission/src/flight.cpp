@@ -95,6 +95,10 @@ std::vector<NavStep> asArduPilotReadsThem(const std::vector<NavStep>& steps, std
       known = true;
     } else if (st.kind == NavStep::Kind::LoiterTurns) {
       if (known && !st.alt_given) st.target.z() = prev.z();
+      if (!st.has_position) {
+        notes.push_back(stepName(st, k) + ": latitude and longitude 0: ArduPilot circles round where the vehicle is" +
+                        (st.alt_given ? std::string() : ", at the previous target's altitude"));
+      }
       known = false;
     } else if (isFlownTo(st) && known) {
       Eigen::Vector3d t = st.has_position ? st.target : Eigen::Vector3d(prev.x(), prev.y(), st.target.z());
@@ -106,6 +110,10 @@ std::vector<NavStep> asArduPilotReadsThem(const std::vector<NavStep>& steps, std
       }
       if (!st.alt_given && st.has_position) {
         notes.push_back(stepName(st, k) + ": altitude 0 is the previous target's for ArduPilot (" + detail::num(t.z()) + " m)");
+      }
+      if (!st.has_position && (t - prev).norm() <= 0.01) {
+        notes.push_back(stepName(st, k) + ": latitude, longitude and altitude 0 are the previous target's for ArduPilot, where "
+                        "the vehicle already is: a leg of no length" + (st.hold_s > 0.0 ? ", then the hold" : ""));
       }
       st.target = t;
       if (st.has_position) prev = t;

@@ -246,3 +246,24 @@ TEST(ArduPilotReading, ALandingOverTheWaypointJustReachedStillFliesItsShortAppro
   EXPECT_GT(descent - f.events[1].completed_s, 0.6);
   EXPECT_LT(descent - f.events[1].completed_s, 1.6);
 }
+
+TEST(ArduPilotReading, AHereItemThatDoesNotMoveTheVehicleAndAHereCircleAreSaid) {
+  // An item with latitude, longitude and altitude 0 flies to the previous target, where the
+  // vehicle already is (ArduPilot's PAUSE_CONTINUE test mission ends so); a LOITER_TURNS with
+  // latitude and longitude 0 circles round where the vehicle is. Both were flown without a word.
+  Mission m = localMission({{100, 0, 10}, {0, 0, 0}});
+  m.items[2].lat_deg = m.items[2].lon_deg = 0.0;  // items: take-off, WP1, WP2 "here", RTL
+  std::string notes = joined(flyMission(sequenceMission(m), arduCopter("4.5")).notes);
+  EXPECT_NE(notes.find("test item 3: latitude, longitude and altitude 0 are the previous target's for ArduPilot, where the "
+                       "vehicle already is: a leg of no length"),
+            std::string::npos) << notes;
+  Mission c = localMission({{100, 0, 10}, {0, 0, 0}});
+  c.items[2].command = 18;  // NAV_LOITER_TURNS here, 1 turn of 5 m
+  c.items[2].lat_deg = c.items[2].lon_deg = 0.0;
+  c.items[2].param[0] = 1.0;
+  c.items[2].param[2] = 5.0;
+  notes = joined(flyMission(sequenceMission(c), arduCopter("4.5")).notes);
+  EXPECT_NE(notes.find("test item 3: latitude and longitude 0: ArduPilot circles round where the vehicle is, at the previous "
+                       "target's altitude"),
+            std::string::npos) << notes;
+}
