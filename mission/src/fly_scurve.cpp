@@ -65,7 +65,9 @@ Params readParams(const AutopilotConfig& ap) {
   const double accel_c = ap.get("WPNAV_ACCEL_C") / 100.0;
   p.accel_corner = accel_c > 0.0 ? accel_c : 2.0 * p.accel_xy;
   p.jerk_z = checkParameter("PSC_JERK_Z", ap.get("PSC_JERK_Z"), 0.1, 50, "m/s/s/s");
-  p.rtl_alt = checkParameter("RTL_ALT", ap.get("RTL_ALT"), 30, 300000, "cm") / 100.0;
+  // ModeRTL::compute_return_target takes at least RTL_ALT_MIN (30 cm) whatever RTL_ALT says, so
+  // RTL_ALT 0 (older firmware's "the current altitude") returns at the current altitude.
+  p.rtl_alt = checkParameter("RTL_ALT", ap.get("RTL_ALT"), 0, 300000, "cm") / 100.0;
   p.rtl_alt_final = std::max(0.0, ap.get("RTL_ALT_FINAL")) / 100.0;
   p.rtl_climb_min = std::max(0.0, ap.get("RTL_CLIMB_MIN")) / 100.0;
   p.rtl_cone_slope = ap.get("RTL_CONE_SLOPE");
@@ -483,9 +485,18 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
     const NavStep& st = steps[k];
     const int ki = static_cast<int>(k);
     if (st.kind == NavStep::Kind::Takeoff) {
-      LegSpec up = specOf(st, P, ki);
-      up.target = {here.x(), here.y(), std::max(st.target.z(), here.z() + 1.0)};
-      here = flyChain(fl, {up}, here, P, FlightPhase::Takeoff, P.jerk_z);
+      // ModeAuto::takeoff_start: at least 1 m above the vehicle when it is on the ground, at least
+      // where it is when it is in the air (a take-off below it is complete at once).
+      const bool landed = here.z() < 0.5;
+      const double top = std::max(st.target.z(), here.z() + (landed ? 1.0 : 0.0));
+      if (top - here.z() < 0.01) {
+        rec.reached(ki);
+        rec.completed(ki);
+      } else {
+        LegSpec up = specOf(st, P, ki);
+        up.target = {here.x(), here.y(), top};
+        here = flyChain(fl, {up}, here, P, FlightPhase::Takeoff, P.jerk_z);
+      }
       ++k;
     } else if (isFlownTo(st)) {
       const std::vector<LegSpec> legs = chainFrom(steps, k, here, P, s.stop_at_waypoints);

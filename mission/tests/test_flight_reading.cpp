@@ -267,3 +267,28 @@ TEST(ArduPilotReading, AHereItemThatDoesNotMoveTheVehicleAndAHereCircleAreSaid) 
                        "target's altitude"),
             std::string::npos) << notes;
 }
+
+TEST(ArduPilotReading, ATakeOffInTheAirBelowTheVehicleIsCompleteAtOnceAndRtlAltZeroReturnsAtTheCurrentAltitude) {
+  // ModeAuto::takeoff_start floors the target 1 m above the vehicle only when it is landed: a
+  // second NAV_TAKEOFF to 10 m flown at 20 m is complete at once (the model climbed 1 m there).
+  Mission m = localMission({{100, 0, 20}, {200, 0, 20}});
+  MissionItem again = m.items[0];  // items: take-off 20 m, WP1, WP2, RTL
+  again.alt_m = 10.0;
+  again.where = "test take-off in the air";
+  m.items.insert(m.items.begin() + 2, again);
+  for (std::size_t k = 0; k < m.items.size(); ++k) m.items[k].seq = static_cast<int>(k) + 1;
+  const FlownMission f = flyMission(sequenceMission(m), arduCopter("4.5"));
+  ASSERT_EQ(f.steps[2].kind, NavStep::Kind::Takeoff);
+  EXPECT_NEAR(f.events[2].completed_s, f.events[2].reached_s, 1e-9);
+  double top = 0.0;
+  for (const FlightSample& s : f.samples) top = std::max(top, s.position.z());
+  EXPECT_LT(top, 20.2);
+  // RTL_ALT 0: ModeRTL::compute_return_target takes max(RTL_ALT, RTL_ALT_MIN 0.3 m, ...), so the
+  // return flies at the current 20 m (the model refused RTL_ALT below 30 cm).
+  const AutopilotConfig zero =
+      parseAutopilot(R"({"firmware":"ArduCopter","version":"4.5","parameters":{"RTL_ALT":0}})", "test");
+  const FlownMission r = flyMission(sequenceMission(localMission({{100, 0, 20}})), zero);
+  double highest = 0.0;
+  for (const FlightSample& s : r.samples) highest = std::max(highest, s.position.z());
+  EXPECT_NEAR(highest, 20.0, 0.3);
+}
