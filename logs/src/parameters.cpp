@@ -242,7 +242,7 @@ bool isArduPilotFlightParameter(const std::string& n) {
   static const std::vector<std::string> exact = {"PSC_ANGLE_MAX", "ANGLE_MAX", "ATC_INPUT_TC", "ATC_SLEW_YAW",
       "WP_YAW_BEHAVIOR", "PILOT_SPEED_UP", "PILOT_SPEED_DN", "PILOT_TKOFF_ALT", "WP_NAVALT_MIN", "RC_FEEL_RP",
       "PILOT_VELZ_MAX", "PILOT_ACCEL_Z", "MOT_THST_HOVER", "MOT_SPOOL_TIME", "THR_MID", "THR_ALT_P", "THR_RATE_P",
-      "THR_ACCEL_P", "THR_ACCEL_I"};
+      "THR_ACCEL_P", "THR_ACCEL_I", "PSC_ACC_XY_FILT"};
   const bool limit = (startsWith(n, "ATC_ACCEL_") || startsWith(n, "ATC_RATE_")) && endsWith(n, "_MAX");
   return limit || matchesAny(n, prefixes, exact);
 }

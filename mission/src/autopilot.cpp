@@ -34,7 +34,7 @@ const std::map<std::string, double> kArduCopter3 = {
     {"RTL_ALT_FINAL", 0},   {"RTL_CLIMB_MIN", 0},    {"RTL_LOIT_TIME", 5000},  {"LAND_SPEED", 50},
     {"LAND_ALT_LOW", 1000}, {"MOT_SPOOL_TIME", 0.5}, {"ATC_SLEW_YAW", 6000},   {"WP_YAW_BEHAVIOR", 2},
     {"THR_MID", 500},       {"VEL_Z_P", 5.0},        {"ACCEL_Z_P", 0.5},       {"ACCEL_Z_I", 1.0},
-    {"CIRCLE_RATE", 20.0},
+    {"CIRCLE_RATE", 20.0},  {"PSC_ACC_XY_FILT", 2.0},
 };
 
 // PX4 multicopter defaults (FlightTaskAuto, mc_pos_control, navigator params).

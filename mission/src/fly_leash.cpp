@@ -36,6 +36,12 @@ struct Params {
   // targets change ten times a second. 0: every simulation step (3.4 and later, full rate).
   double nav_period;
   double leash_up, leash_dn;  // [m] the position controller's vertical leashes (climbing, descending)
+  // From 3.3, AC_PosControl::accel_to_lean_angles limits the change of the acceleration target to
+  // 17 m/s^3 (POSCONTROL_JERK_LIMIT_CMSSS; from 3.4 _jerk_cmsss, set to it by AC_WPNav) and low-pass
+  // filters it (2 Hz: POSCONTROL_ACCEL_FILTER_HZ, from 3.4 PSC_ACC_XY_FILT) before the lean angles;
+  // 3.2 converts the target as it is ("To-Do: add 1hz filter"). 0: not applied.
+  double lean_jerk;       // [m/s^3]
+  double lean_filter_hz;  // [Hz]
   TrackingError tracking;     // [m] the vehicle's typical distance off its line (FlightSettings)
 };
 
@@ -45,6 +51,14 @@ bool linearSlackVersion(const std::string& version) {
   int major = 0, minor = -1;
   if (std::sscanf(version.c_str(), "%d.%d", &major, &minor) < 2) return false;
   return major < 3 || (major == 3 && minor < 4);
+}
+
+// True for the versions whose position controller jerk-limits and filters its acceleration
+// target: 3.3 and later (an unspecified "3.x" is taken as the later form, as for the slack).
+bool shapedLeanVersion(const std::string& version) {
+  int major = 0, minor = -1;
+  if (std::sscanf(version.c_str(), "%d.%d", &major, &minor) < 2) return true;
+  return major > 3 || (major == 3 && minor >= 3);
 }
 
 // Leash length of a position controller (AC_PosControl::calc_leash_length) [m].
@@ -100,6 +114,10 @@ Params readParams(const AutopilotConfig& ap) {
   p.land_wind_down_s = landWindDown(ap, p.land_speed, p.pos_z_p);
   p.circle_rate = checkParameter("CIRCLE_RATE", ap.get("CIRCLE_RATE"), -90, 90, "deg/s") * M_PI / 180.0;
   p.linear_slack = linearSlackVersion(ap.version);
+  if (shapedLeanVersion(ap.version)) {
+    p.lean_jerk = 17.0;
+    p.lean_filter_hz = checkParameter("PSC_ACC_XY_FILT", ap.get("PSC_ACC_XY_FILT"), 0.5, 5, "Hz");
+  }
   p.nav_period = p.linear_slack ? 0.1 : 0.0;
   p.leash_up = leashLength(p.speed_up, p.accel_z, p.pos_z_p);
   p.leash_dn = leashLength(p.speed_dn, p.accel_z, p.pos_z_p);
@@ -114,6 +132,8 @@ struct Vehicle {
   Eigen::Vector2d integ = Eigen::Vector2d::Zero();       // [m/s^2] the velocity loop's integrator (VEL_XY_I)
   Eigen::Vector2d a_cmd = Eigen::Vector2d::Zero();       // [m/s^2] the acceleration (lean) target in force
   Eigen::Vector2d ff = Eigen::Vector2d::Zero();          // [m/s^2] the velocity loop's feed-forward last computed
+  Eigen::Vector2d a_jerk = Eigen::Vector2d::Zero();      // [m/s^2] the jerk-limited acceleration target (3.3+)
+  Eigen::Vector2d a_filt = Eigen::Vector2d::Zero();      // [m/s^2] the same after the low-pass filter (3.3+)
   bool freeze_ff = false;  // a new leg: the next controller run keeps the feed-forward (AC_PosControl::freeze_ff_xy)
   double since_nav = 1e9;  // [s] since the carrot and the horizontal controller last ran (1e9: never)
 };
@@ -255,6 +275,13 @@ void xyController(Vehicle& veh, const Eigen::Vector3d& carrot, double speed, con
   } else {
     veh.integ += P.vel_xy_i * verr * dt;
     if (veh.integ.norm() > P.vel_xy_imax) veh.integ *= P.vel_xy_imax / veh.integ.norm();
+  }
+  if (P.lean_jerk > 0.0) {  // accel_to_lean_angles from 3.3: jerk limit, then the low-pass filter
+    Eigen::Vector2d change = a_cmd - veh.a_jerk;
+    if (change.norm() > P.lean_jerk * dt) change *= P.lean_jerk * dt / change.norm();
+    veh.a_jerk += change;
+    veh.a_filt += (veh.a_jerk - veh.a_filt) * (dt / (dt + 1.0 / (2.0 * M_PI * P.lean_filter_hz)));
+    a_cmd = veh.a_filt;
   }
   veh.a_cmd = a_cmd;
 }

@@ -292,3 +292,34 @@ TEST(ArduPilotReading, ATakeOffInTheAirBelowTheVehicleIsCompleteAtOnceAndRtlAltZ
   for (const FlightSample& s : r.samples) highest = std::max(highest, s.position.z());
   EXPECT_NEAR(highest, 20.0, 0.3);
 }
+
+TEST(ArduPilotReading, From33ThePositionControllerJerkLimitsAndFiltersItsAccelerationTarget) {
+  // AC_PosControl::accel_to_lean_angles from 3.3 limits the change of the acceleration target to
+  // 17 m/s^3 and low-pass filters it at PSC_ACC_XY_FILT (2 Hz); 3.2 converts it as it is. On a
+  // mission of sharp turns at 10 m/s with WPNAV_ACCEL 5 m/s/s the horizontal jerk of the simulated
+  // vehicle (every 0.01 s) stays within 17 m/s^3 on 3.3, and exceeds it on 3.2, whose lean target
+  // jumps ten times a second (accelerations averaged over 0.1 s, the controller's period).
+  Mission m = localMission({{60, 0, 10}, {10, 20, 10}, {70, 40, 10}, {0, 60, 10}}, 0.0, 10.0);
+  FlightSettings s;
+  s.sample_dt = s.dt;
+  auto jerk = [&](const char* version) {
+    const AutopilotConfig ap = parseAutopilot(R"({"firmware":"ArduCopter","version":")" + std::string(version) +
+                                              R"(","parameters":{"WPNAV_ACCEL":500}})", "test");
+    const FlownMission f = flyMission(sequenceMission(m), ap, s);
+    double most = 0.0;
+    const std::size_t w = 10;  // 0.1 s: the controller's period before 3.4
+    for (std::size_t i = 2 * w; i < f.samples.size(); ++i) {
+      const auto& a = f.samples[i - 2 * w];
+      const auto& b = f.samples[i - w];
+      const auto& c = f.samples[i];
+      if (!a.airborne || a.phase != FlightPhase::Mission || c.phase != FlightPhase::Mission) continue;
+      const Eigen::Vector2d acc1 = (b.velocity - a.velocity).head<2>() / (b.t - a.t);
+      const Eigen::Vector2d acc2 = (c.velocity - b.velocity).head<2>() / (c.t - b.t);
+      most = std::max(most, (acc2 - acc1).norm() / (c.t - b.t));
+    }
+    return most;
+  };
+  const double j33 = jerk("3.3"), j32 = jerk("3.2");
+  EXPECT_LT(j33, 17.5) << j33;
+  EXPECT_GT(j32, 25.0) << j32;  // 15.5 and 28 m/s^3 when written
+}
