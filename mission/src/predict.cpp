@@ -188,6 +188,30 @@ std::string fasterThanVehicle(const Mission& m, const energy::Vehicle& v, const 
   return os.str();
 }
 
+// The MAV_CMD numbers PX4's mission feasibility check accepts (FeasibilityChecker::
+// checkMissionItemValidity, PX4 main of 2025, 1.15 era): a mission holding any other is rejected
+// whole ("Mission rejected: item N: unsupported cmd: C"). Older versions' lists differ.
+bool px4Accepts(int command) {
+  static const int accepted[] = {0,    16,   17,   19,   20,  21,  22,  31,   84,   85,   93,   4501, 42600, 211,
+                                 177,  178,  179,  189,  2003, 203, 2000, 2001, 2500, 2501, 200,  204,  205,   1000,
+                                 1001, 187,  201,  195,  196,  197, 206, 260, 214,  530,  531,  532,  3000};
+  return std::find(std::begin(accepted), std::end(accepted), command) != std::end(accepted);
+}
+
+// A note naming the items PX4's feasibility check would reject the mission for.
+std::string px4Rejects(const Mission& m) {
+  int count = 0;
+  std::string first;
+  for (const MissionItem& it : m.items) {
+    if (px4Accepts(it.command)) continue;
+    if (count++ == 0) first = it.where + " (" + commandName(it.command) + ")";
+  }
+  if (count == 0) return {};
+  return first + ": " + std::to_string(count) + " item(s) with commands PX4's mission feasibility check does not list "
+         "(FeasibilityChecker::checkMissionItemValidity as of 1.15): such a PX4 rejects the whole mission (\"Mission "
+         "rejected: item N: unsupported cmd\"); older versions' lists differ. The prediction flies it as if accepted";
+}
+
 }  // namespace
 
 MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
@@ -216,6 +240,9 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   MissionPrediction p;
   p.warnings = m.warnings;
   writtenForNotes(m, autopilot, p.warnings);
+  if (autopilot.family == AutopilotFamily::PX4) {
+    if (const std::string r = px4Rejects(m); !r.empty()) p.warnings.push_back(r);
+  }
   const std::vector<NavStep> steps = sequenceMission(m, &p.warnings);
   FlightSettings fs = s.flight;
   if (s.airframe_from_vehicle) fs.airframe = airframeOfVehicle(v, v.name);

@@ -163,3 +163,22 @@ TEST(PredictNotes, ASpeedAboveTheVehiclesMaximumIsFlownAndSaid) {
   EXPECT_EQ(notes.find("S-curve model:"), std::string::npos) << notes;
   EXPECT_NE(p.flight.model.find("ArduCopter 4.5 S-curve model: WPNAV_SPEED 10 m/s"), std::string::npos) << p.flight.model;
 }
+
+// PX4's FeasibilityChecker::checkMissionItemValidity rejects a mission holding a command outside
+// its list (DO_SET_SERVO, CONDITION_YAW, ...): a PX4 vehicle's prediction says so, naming the first
+// such item; an ArduCopter vehicle's does not.
+TEST(PredictNotes, APx4VehicleIsToldWhichItemsPx4sFeasibilityCheckRejects) {
+  Mission m = localMission({{100, 0, 10}, {200, 0, 10}});
+  MissionItem servo = m.items[1];
+  servo.command = 183;  // DO_SET_SERVO
+  servo.frame = 2;
+  servo.lat_deg = servo.lon_deg = 0.0;
+  servo.where = "servo.plan: mission.items[2]";
+  m.items.insert(m.items.begin() + 2, servo);
+  EXPECT_NE(notesOf(m, px4()).find("servo.plan: mission.items[2] (DO_SET_SERVO): 1 item(s) with commands PX4's mission "
+                                   "feasibility check does not list"),
+            std::string::npos)
+      << notesOf(m, px4());
+  EXPECT_EQ(notesOf(m, AutopilotConfig{}).find("feasibility check"), std::string::npos);
+  EXPECT_EQ(notesOf(localMission({{100, 0, 10}}), px4()).find("feasibility check"), std::string::npos);
+}
