@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -74,8 +75,8 @@ struct Sequencer {
 
   bool section_waits = false;  // a CONDITION_DELAY or CONDITION_DISTANCE since the last navigation item
   int aux_noted = 0;           // DO_AUX_FUNCTION items run (the first is noted)
-  int terrain_items = 0;       // positional items flown with altitudes above terrain (frame 10 or 11)
-  std::string terrain_first;   // the first of them, for the note
+  std::set<int> terrain_items;  // positional items flown with altitudes above terrain (frame 10 or 11)
+  std::string terrain_first;    // the first of them, for the note
 
   // A DO (or CONDITION) item run: counts it in its section.
   void doItem(const MissionItem& it) {
@@ -233,7 +234,6 @@ struct Sequencer {
   }
 };
 
-
 // The warning for the items after the navigation item `last` that ends the mission, `i` the first.
 std::string neverFlown(const Mission& m, int i, const NavStep& last) {
   const std::string what = last.item >= 0 ? commandName(m.items[last.item].command) : "the mission's end";
@@ -333,7 +333,10 @@ std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>*
       q.warn(it.where + ": DO_AUX_FUNCTION " + detail::num(it.param[0]) + " runs an auxiliary switch function, which can "
              "be anything from a relay to a mode change; the prediction assumes it does not change the flight");
     }
-    if (isPositional(it.command) && (it.frame == 10 || it.frame == 11) && q.terrain_items++ == 0) q.terrain_first = it.where;
+    if (isPositional(it.command) && (it.frame == 10 || it.frame == 11)) {
+      if (q.terrain_items.empty()) q.terrain_first = it.where;
+      q.terrain_items.insert(i);  // an item a DO_JUMP repeats counts once
+    }
     if (isNavCommand(it.command)) {
       q.navStarts(kindOf(it));
       ended = !q.nav(i);
@@ -343,8 +346,8 @@ std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>*
     ++i;
   }
   if (ended && i < static_cast<int>(m.items.size())) q.warn(neverFlown(m, i, q.steps.back()));
-  if (q.terrain_items > 0) {
-    q.warn(q.terrain_first + ": " + std::to_string(q.terrain_items) + " item(s) give altitudes above terrain (MAV_FRAME 10/11); "
+  if (!q.terrain_items.empty()) {
+    q.warn(q.terrain_first + ": " + std::to_string(q.terrain_items.size()) + " item(s) give altitudes above terrain (MAV_FRAME 10/11); "
            "without terrain data the prediction flies them over flat ground at home's height, as heights above home");
   }
   if (q.steps.empty()) throw std::invalid_argument(m.source + ": the mission has no navigation item to fly");
