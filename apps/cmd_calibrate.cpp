@@ -81,7 +81,7 @@ void registerCalibrateCommand(CLI::App& app) {
   cmd->add_option("--effects", o->effects, "Effects of the energy model to fit")->capture_default_str();
   cmd->add_option("--evaluations", o->evaluations, "Simulated flights per parameter fit")->check(CLI::Range(10, 5000))->capture_default_str();
   cmd->add_flag("--keep-energy", o->keep_energy, "Calibrate the flight behaviour only; keep the energy coefficients");
-  cmd->add_flag("--lenient-mission", o->lenient, "Skip unsupported mission commands with a warning");
+  cmd->add_flag("--lenient-mission", o->lenient, "Skip unsupported mission commands that do not move the vehicle (not navigation commands) with a warning");
   addLogReadOptions(cmd, o->read);
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);

@@ -302,7 +302,7 @@ void addPredictOptions(CLI::App* cmd, PredictOptions& o) {
                   "ArduCopter models fly against the drag at air speed and the energy model's drag is taken at air speed "
                   "(default: still air)");
   cmd->add_option("--samples-out", o.samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
-  cmd->add_flag("--lenient", o.lenient, "Skip unsupported mission commands with a warning instead of an error");
+  cmd->add_flag("--lenient", o.lenient, "Skip unsupported mission commands that do not move the vehicle with a warning instead of an error (a navigation command is never skipped)");
   addReportOptions(cmd, o.report, o.report_svg, o.force);
   addJsonFlag(cmd, o.json);
 }
