@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "files_internal.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/planned_mission.hpp"
@@ -212,6 +213,26 @@ std::string px4Rejects(const Mission& m) {
          "rejected: item N: unsupported cmd\"); older versions' lists differ. The prediction flies it as if accepted";
 }
 
+// Notes on the take-off and landing rules of PX4's feasibility check (FeasibilityChecker::
+// checkTakeoff and checkMissionItemValidity, 1.15): a take-off at or below home, a take-off after an
+// item with a position, and a mission that starts with a landing are each rejected.
+void px4TakeoffRules(const Mission& m, std::vector<std::string>& notes) {
+  const std::string then = ": PX4 rejects such a mission (FeasibilityChecker, 1.15); the prediction flies it as if accepted";
+  bool positioned = false;
+  for (std::size_t k = 0; k < m.items.size(); ++k) {
+    const MissionItem& it = m.items[k];
+    if (k == 0 && it.command == static_cast<int>(Command::NavLand)) notes.push_back(it.where + ": the mission starts with a landing" + then);
+    if (it.command == static_cast<int>(Command::NavTakeoff)) {
+      const bool absolute = it.frame == 0 || it.frame == 5;
+      const double above = absolute ? it.alt_m - m.home.alt_m : it.alt_m;
+      if (!(above > 0.0)) notes.push_back(it.where + ": NAV_TAKEOFF at or below home's altitude (" + detail::numberText(above) + " m)" + then);
+      if (positioned) notes.push_back(it.where + ": NAV_TAKEOFF after an item with a position" + then);
+    } else if (isNavCommand(it.command) && it.command != static_cast<int>(Command::NavDelay)) {
+      positioned = true;
+    }
+  }
+}
+
 }  // namespace
 
 MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
@@ -242,6 +263,7 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   writtenForNotes(m, autopilot, p.warnings);
   if (autopilot.family == AutopilotFamily::PX4) {
     if (const std::string r = px4Rejects(m); !r.empty()) p.warnings.push_back(r);
+    px4TakeoffRules(m, p.warnings);
   }
   const std::vector<NavStep> steps = sequenceMission(m, &p.warnings);
   FlightSettings fs = s.flight;

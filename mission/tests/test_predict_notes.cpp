@@ -182,3 +182,20 @@ TEST(PredictNotes, APx4VehicleIsToldWhichItemsPx4sFeasibilityCheckRejects) {
   EXPECT_EQ(notesOf(m, AutopilotConfig{}).find("feasibility check"), std::string::npos);
   EXPECT_EQ(notesOf(localMission({{100, 0, 10}}), px4()).find("feasibility check"), std::string::npos);
 }
+
+// PX4's FeasibilityChecker also rejects a take-off at or below home, a take-off after an item with
+// a position, and a mission starting with a landing: noted for a PX4 vehicle only.
+TEST(PredictNotes, APx4VehicleIsToldOfPx4sTakeOffRules) {
+  Mission m = localMission({{100, 0, 10}, {200, 0, 10}});
+  m.items[0].alt_m = 0.0;  // take-off to 0 m above home
+  MissionItem again = m.items[0];
+  again.alt_m = 20.0;
+  again.where = "test item again";
+  m.items.insert(m.items.begin() + 2, again);  // a second take-off after WP1
+  const std::string notes = notesOf(m, px4());
+  EXPECT_NE(notes.find("test item 1: NAV_TAKEOFF at or below home's altitude (0 m): PX4 rejects such a mission"),
+            std::string::npos) << notes;
+  EXPECT_NE(notes.find("test item again: NAV_TAKEOFF after an item with a position: PX4 rejects"), std::string::npos) << notes;
+  EXPECT_EQ(notesOf(m, AutopilotConfig{}).find("PX4 rejects"), std::string::npos);
+  EXPECT_EQ(notesOf(localMission({{100, 0, 10}}), px4()).find("PX4 rejects"), std::string::npos);
+}
