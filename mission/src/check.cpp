@@ -176,8 +176,9 @@ void checkParams(const MissionItem& it) {
 }
 
 /// Which items the autopilot can reach from the first: each item leads to the next, a DO_JUMP also
-/// to its target (the first item numbered that or later), and a NAV_RETURN_TO_LAUNCH or NAV_LAND
-/// ends the mission (AP_Mission stops there unless MIS_OPTIONS continues after a landing).
+/// to its target (the first item numbered that or later), and a NAV_RETURN_TO_LAUNCH, NAV_LAND or
+/// NAV_LOITER_UNLIM ends the mission (AP_Mission stops there unless MIS_OPTIONS continues after a
+/// landing; a loiter without limit is never complete).
 std::vector<bool> reachableItems(const Mission& m) {
   const std::size_t n = m.items.size();
   std::vector<bool> seen(n, false);
@@ -189,7 +190,7 @@ std::vector<bool> reachableItems(const Mission& m) {
     seen[k] = true;
     const MissionItem& it = m.items[k];
     const auto cmd = static_cast<Command>(it.command);
-    if (cmd == Command::NavReturnToLaunch || cmd == Command::NavLand) continue;
+    if (cmd == Command::NavReturnToLaunch || cmd == Command::NavLand || cmd == Command::NavLoiterUnlimited) continue;
     todo.push_back(k + 1);
     if (cmd != Command::DoJump || !std::isfinite(it.param[0]) || it.param[1] == 0.0) continue;
     for (std::size_t t = 0; t < n; ++t) {

@@ -16,7 +16,7 @@ struct CommandInfo {
 // MAV_CMD numbers and names of common.xml; `supported`: accepted by the readers.
 constexpr CommandInfo kCommands[] = {
     {16, "NAV_WAYPOINT", true},
-    {17, "NAV_LOITER_UNLIM", false},
+    {17, "NAV_LOITER_UNLIM", true},
     {18, "NAV_LOITER_TURNS", true},
     {19, "NAV_LOITER_TIME", true},
     {20, "NAV_RETURN_TO_LAUNCH", true},
@@ -116,6 +116,7 @@ bool isPositional(int command) {
     case Command::NavSplineWaypoint:
     case Command::NavLoiterTime:
     case Command::NavLoiterTurns:
+    case Command::NavLoiterUnlimited:
     case Command::NavLand:
       return true;
     default:

@@ -215,6 +215,19 @@ struct Sequencer {
         steps.push_back(s);
         return true;
       }
+      case Command::NavLoiterUnlimited: {
+        // ModeAuto::do_loiter_unlimited: a stop at the position (the next item is never started),
+        // then a loiter until the pilot or a ground station ends it: the flight ends there, in the air.
+        NavStep s = step(NavStep::Kind::Waypoint, index);
+        s.has_position = hasLatLon(it);
+        if (s.has_position) s.target = position(it);
+        else s.target.z() = altitudeAboveHome(it, m);
+        s.alt_given = it.alt_m != 0.0;
+        steps.push_back(s);
+        warn(it.where + ": NAV_LOITER_UNLIM: the autopilot loiters there until the pilot or a ground station ends it; "
+             "the prediction ends on arrival, in the air, and counts no loiter time");
+        return false;
+      }
       case Command::NavReturnToLaunch:
         steps.push_back(step(NavStep::Kind::ReturnToLaunch, index));
         return false;
@@ -229,8 +242,8 @@ struct Sequencer {
     }
     throw std::invalid_argument(it.where + ": " + commandName(it.command) +
                                 " cannot be flown by the flight model (supported: NAV_TAKEOFF, NAV_WAYPOINT, "
-                                "NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_LOITER_TURNS, NAV_DELAY, NAV_RETURN_TO_LAUNCH, "
-                                "NAV_LAND)");
+                                "NAV_SPLINE_WAYPOINT, NAV_LOITER_TIME, NAV_LOITER_TURNS, NAV_LOITER_UNLIM, NAV_DELAY, "
+                                "NAV_RETURN_TO_LAUNCH, NAV_LAND)");
   }
 };
 
@@ -359,7 +372,9 @@ std::vector<NavStep> sequenceMission(const Mission& m, std::vector<std::string>*
            "the prediction");
   }
   const NavStep::Kind last = q.steps.back().kind;
-  if (last != NavStep::Kind::ReturnToLaunch && last != NavStep::Kind::Land) {
+  const bool loiters = q.steps.back().item >= 0 &&
+                       m.items[q.steps.back().item].command == static_cast<int>(Command::NavLoiterUnlimited);
+  if (last != NavStep::Kind::ReturnToLaunch && last != NavStep::Kind::Land && !loiters) {
     q.warn(m.source + ": the mission does not end with NAV_RETURN_TO_LAUNCH or NAV_LAND: the vehicle hovers at the "
            "last item and the prediction ends there, in the air");
   }

@@ -87,7 +87,8 @@ TEST(MissionItems, CommandsAndFrames) {
   EXPECT_TRUE(isNavCommand(22));
   EXPECT_FALSE(isNavCommand(178));
   EXPECT_TRUE(isSupportedCommand(206));
-  EXPECT_FALSE(isSupportedCommand(17));   // loiter forever: the mission never ends
+  EXPECT_TRUE(isSupportedCommand(17));    // loiter forever: the prediction ends on arrival
+  EXPECT_FALSE(isSupportedCommand(31));   // loiter to an altitude: not modelled
   EXPECT_TRUE(isSupportedCommand(18));    // loiter turns: flown by the ArduCopter models
   EXPECT_TRUE(isSupportedCommand(197));   // DO_SET_ROI_NONE: does not move the vehicle
   EXPECT_FALSE(isSupportedCommand(211));  // DO_GRIPPER: a released payload changes the mass

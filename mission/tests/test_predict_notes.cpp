@@ -199,3 +199,21 @@ TEST(PredictNotes, APx4VehicleIsToldOfPx4sTakeOffRules) {
   EXPECT_EQ(notesOf(m, AutopilotConfig{}).find("PX4 rejects"), std::string::npos);
   EXPECT_EQ(notesOf(localMission({{100, 0, 10}}), px4()).find("PX4 rejects"), std::string::npos);
 }
+
+// NAV_LOITER_UNLIM (ArduPilot's AVC2013 and other test missions end their route with one) was
+// refused as unsupported: the vehicle flies to it, stops and loiters until the pilot ends it. The
+// prediction now ends on arrival, in the air, says so, and ignores the items after it.
+TEST(PredictNotes, ALoiterWithoutLimitEndsThePredictionOnArrival) {
+  const std::string text = kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t20\t1\n2\t0\t3\t17\t0\t0\t0\t0\t43.7170\t10.4613\t20\t1\n"
+                           "3\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const MissionPrediction p = predictText(text, "loiter.waypoints");
+  ASSERT_EQ(p.flight.steps.size(), 2u);  // take-off, the loiter point; the RTL is never flown
+  const FlightSample& end = p.flight.samples.back();
+  EXPECT_NEAR(end.position.y(), 111.0, 2.0);  // 0.001 deg of latitude north of home
+  EXPECT_NEAR(end.position.z(), 20.0, 0.5);
+  EXPECT_LT(end.velocity.norm(), 0.5);
+  const std::string notes = joined(p.warnings);
+  EXPECT_NE(notes.find("loiter.waypoints:4: NAV_LOITER_UNLIM: the autopilot loiters there until the pilot"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("loiter.waypoints:5: items after NAV_LOITER_UNLIM are never flown (1 ignored)"), std::string::npos) << notes;
+  EXPECT_EQ(notes.find("does not end with NAV_RETURN_TO_LAUNCH"), std::string::npos) << notes;
+}

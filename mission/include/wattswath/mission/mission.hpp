@@ -15,7 +15,7 @@ namespace wattswath::mission {
 /// MAVLink MAV_CMD numbers this library knows (common.xml).
 enum class Command : int {
   NavWaypoint = 16,          ///< fly to a position; param1 hold [s], param2 acceptance radius [m]
-  NavLoiterUnlimited = 17,   ///< loiter forever (a mission never ends after it)
+  NavLoiterUnlimited = 17,   ///< fly to a position and loiter there until the pilot ends it (the prediction ends on arrival)
   NavLoiterTurns = 18,       ///< circle a point; param1 turns, param3 radius [m] (< 0: counter-clockwise)
   NavLoiterTime = 19,        ///< fly to a position and hold there; param1 time [s]
   NavReturnToLaunch = 20,    ///< return home and land
