@@ -157,6 +157,18 @@ struct Sequencer {
     return s;
   }
 
+  // The step of kind `kind` for positional item `index`: its position, or only its altitude when
+  // latitude and longitude are 0 ("here"), and whether its altitude was given.
+  NavStep placed(NavStep::Kind kind, int index) const {
+    const MissionItem& it = m.items[index];
+    NavStep s = step(kind, index);
+    s.has_position = hasLatLon(it);
+    if (s.has_position) s.target = position(it);
+    else s.target.z() = altitudeAboveHome(it, m);
+    s.alt_given = it.alt_m != 0.0;
+    return s;
+  }
+
   // Adds the step of navigation item `index`; returns false when the mission ends there.
   bool nav(int index) {
     const MissionItem& it = m.items[index];
@@ -171,14 +183,10 @@ struct Sequencer {
       case Command::NavSplineWaypoint:
       case Command::NavLoiterTime: {
         const bool loiter = it.command == static_cast<int>(Command::NavLoiterTime);
-        NavStep s = step(loiter ? NavStep::Kind::LoiterTime
-                                : (it.command == static_cast<int>(Command::NavSplineWaypoint) ? NavStep::Kind::SplineWaypoint
-                                                                                               : NavStep::Kind::Waypoint),
-                         index);
-        s.has_position = hasLatLon(it);
-        if (s.has_position) s.target = position(it);
-        else s.target.z() = altitudeAboveHome(it, m);
-        s.alt_given = it.alt_m != 0.0;
+        NavStep s = placed(loiter ? NavStep::Kind::LoiterTime
+                                  : (it.command == static_cast<int>(Command::NavSplineWaypoint) ? NavStep::Kind::SplineWaypoint
+                                                                                                 : NavStep::Kind::Waypoint),
+                           index);
         s.hold_s = std::isfinite(it.param[0]) ? std::max(0.0, it.param[0]) : 0.0;
         if (!loiter && std::isfinite(it.param[1])) s.accept_radius_m = std::max(0.0, it.param[1]);
         steps.push_back(s);
@@ -187,11 +195,7 @@ struct Sequencer {
       case Command::NavLoiterTurns: {
         // AP_Mission (mavlink_int_to_mission_cmd) keeps min(255, param1) turns and |param3| metres
         // as whole numbers (the conversions truncate); param3 < 0 circles counter-clockwise.
-        NavStep s = step(NavStep::Kind::LoiterTurns, index);
-        s.has_position = hasLatLon(it);
-        if (s.has_position) s.target = position(it);
-        else s.target.z() = altitudeAboveHome(it, m);
-        s.alt_given = it.alt_m != 0.0;
+        NavStep s = placed(NavStep::Kind::LoiterTurns, index);
         s.loiter_turns = std::floor(std::min(255.0, std::max(0.0, it.param[0])));
         s.loiter_radius_m = std::floor(std::abs(it.param[2]));
         s.loiter_ccw = it.param[2] < 0.0;
@@ -218,11 +222,7 @@ struct Sequencer {
       case Command::NavLoiterUnlimited: {
         // ModeAuto::do_loiter_unlimited: a stop at the position (the next item is never started),
         // then a loiter until the pilot or a ground station ends it: the flight ends there, in the air.
-        NavStep s = step(NavStep::Kind::Waypoint, index);
-        s.has_position = hasLatLon(it);
-        if (s.has_position) s.target = position(it);
-        else s.target.z() = altitudeAboveHome(it, m);
-        s.alt_given = it.alt_m != 0.0;
+        NavStep s = placed(NavStep::Kind::Waypoint, index);
         steps.push_back(s);
         warn(it.where + ": NAV_LOITER_UNLIM: the autopilot loiters there until the pilot or a ground station ends it; "
              "the prediction ends on arrival, in the air, and counts no loiter time");
