@@ -69,10 +69,8 @@ geometry::GeoPoint launchPoint(const std::string& launch) {
 Launch moveHomeTo(mission::Mission& m, const std::string& launch) {
   const std::vector<std::string> parts = commaParts(launch);
   auto number = [&](const std::string& text) { return optionNumber("--launch", launch, text, kLaunchExpected); };
-  geometry::GeoPoint at = m.home;
-  const geometry::GeoPoint point = launchPoint(launch);
-  at.lat_deg = point.lat_deg;
-  at.lon_deg = point.lon_deg;
+  geometry::GeoPoint at = launchPoint(launch);
+  at.alt_m = m.home.alt_m;
   Launch l;
   l.from_home_m = geometry::geodesicDistance(m.home, at);
   if (parts.size() == 3) {

@@ -48,7 +48,7 @@ class CircleTarget {
   /// bearing of `start` from the centre (AC_Circle::init_start_angle).
   CircleTarget(const NavStep& st, const Eigen::Vector3d& center, double rate_param, double speed, double accel,
                const Eigen::Vector3d& start)
-      : c_(center), r_(st.loiter_radius_m), goal_(2.0 * M_PI * st.loiter_turns), ccw_(st.loiter_ccw) {
+      : c_(center), r_(st.loiter_radius_m), goal_(2.0 * M_PI * st.loiter_turns), ccw_(st.loiter_ccw), where_(st.where) {
     const double rate = ccw_ ? -std::abs(rate_param) : std::abs(rate_param);
     const double edge_speed = std::sqrt(0.5 * accel * r_);  // [m/s] within half the acceleration limit
     const double w_cap = std::min(speed, edge_speed) / r_;
@@ -78,9 +78,10 @@ class CircleTarget {
     if (goal_ <= 0.0) return 0.0;
     return goal_ <= ramp ? std::sqrt(2.0 * goal_ / alpha_) : w / alpha_ + (goal_ - ramp) / w;
   }
-  /// A note for the prediction: turns, radius and sense, the rate kept and what caps it, the time.
+  /// A note for the prediction, after the item's FILE:LINE when known: turns, radius and sense, the
+  /// rate kept and what caps it, the time.
   std::string note() const {
-    return "NAV_LOITER_TURNS: " + num(goal_ / (2.0 * M_PI)) + " turn(s) of " + num(r_) + " m " +
+    return (where_.empty() ? std::string() : where_ + ": ") + "NAV_LOITER_TURNS: " + num(goal_ / (2.0 * M_PI)) + " turn(s) of " + num(r_) + " m " +
            (ccw_ ? "counter-clockwise" : "clockwise") + " at " + num(std::abs(w_max_) * 180.0 / M_PI) + " deg/s (" +
            num(std::abs(w_max_) * r_) + " m/s on the circle; capped by " + cap_ + "), " + num(duration()) +
            " s after reaching the circle; the vehicle flies a little inside it (it chases a target it lags)";
@@ -92,6 +93,7 @@ class CircleTarget {
   bool ccw_;
   double w_max_ = 0.0, alpha_ = 0.0, w_ = 0.0, angle_ = 0.0, total_ = 0.0;
   const char* cap_ = "CIRCLE_RATE";
+  std::string where_;  // the item's FILE:LINE, or empty
 };
 
 /// ArduCopter 4.x's kinematic input shaper for a position given without velocity

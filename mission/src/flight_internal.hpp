@@ -122,6 +122,11 @@ inline double kinematicLimit(const Eigen::Vector3d& u, double xy, double up, dou
   return lim;
 }
 
+/// [m] Altitude above home of positional item `it` of `m` in its frame: absolute (0, 5) less the
+/// home's, relative (3, 6) as written, above terrain (10, 11) as written (flat terrain at home's
+/// height); throws std::invalid_argument naming the item for another frame.
+double altitudeAboveHome(const MissionItem& it, const Mission& m);
+
 /// `x` with up to 4 significant digits, for notes ("2.5", "10", "5.236").
 inline std::string num(double x) {
   char buf[32];

@@ -407,7 +407,7 @@ struct Flyer {
     leg(from, edge, speed, false, FlightPhase::Mission, step);
     rec.reached(step);
     detail::CircleTarget c(st, center, P.circle_rate, speed, P.accel, veh.p);
-    rec.note((st.where.empty() ? std::string() : st.where + ": ") + c.note());
+    rec.note(c.note());
     Eigen::Vector3d target = stoppingPoint(speed);  // AC_Circle::init: the target at the stopping point
     while (!c.done()) {
       const double nav_dt = navStep(veh, P, rec.dt());

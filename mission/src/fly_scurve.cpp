@@ -423,7 +423,7 @@ Eigen::Vector3d flyLoiterTurns(Flight& fl, const NavStep& st, const Params& P, F
   // circle_start: AC_Circle::init restarts the position controller at its stopping point.
   const Eigen::Vector3d start = fl.veh.stoppingPoint();
   detail::CircleTarget circle(st, center, P.circle_rate, speed, P.accel_xy, start);
-  fl.rec.note((st.where.empty() ? std::string() : st.where + ": ") + circle.note());
+  fl.rec.note(circle.note());
   detail::InputShaper shaper(speed, P.accel_xy, P.jerk_xy);
   shaper.reset(start.head<2>());
   const double z = here.z();

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "files_internal.hpp"
+#include "flight_internal.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/mission/planned_mission.hpp"
@@ -223,8 +224,7 @@ void px4TakeoffRules(const Mission& m, std::vector<std::string>& notes) {
     const MissionItem& it = m.items[k];
     if (k == 0 && it.command == static_cast<int>(Command::NavLand)) notes.push_back(it.where + ": the mission starts with a landing" + then);
     if (it.command == static_cast<int>(Command::NavTakeoff)) {
-      const bool absolute = it.frame == 0 || it.frame == 5;
-      const double above = absolute ? it.alt_m - m.home.alt_m : it.alt_m;
+      const double above = detail::altitudeAboveHome(it, m);
       if (!(above > 0.0)) notes.push_back(it.where + ": NAV_TAKEOFF at or below home's altitude (" + detail::numberText(above) + " m)" + then);
       if (positioned) notes.push_back(it.where + ": NAV_TAKEOFF after an item with a position" + then);
     } else if (isNavCommand(it.command) && it.command != static_cast<int>(Command::NavDelay)) {

@@ -14,21 +14,8 @@
 
 namespace wattswath::mission {
 namespace {
+using detail::altitudeAboveHome;
 
-// Altitude above home [m] of an item in its frame.
-double altitudeAboveHome(const MissionItem& it, const Mission& m) {
-  switch (it.frame) {
-    case 0:
-    case 5: return it.alt_m - m.home.alt_m;  // MAV_FRAME_GLOBAL(_INT): above mean sea level
-    case 3:
-    case 6:                                   // relative to home
-    case 10:
-    case 11: return it.alt_m;                 // above terrain: flat terrain at home's height assumed
-    default: break;
-  }
-  throw std::invalid_argument(it.where + ": " + commandName(it.command) + " in MAV_FRAME " + std::to_string(it.frame) +
-                              ", expected 0/5 (absolute), 3/6 (relative) or 10/11 (terrain)");
-}
 
 bool hasLatLon(const MissionItem& it) {
   return std::isfinite(it.lat_deg) && std::isfinite(it.lon_deg) && !(it.lat_deg == 0.0 && it.lon_deg == 0.0);
@@ -298,6 +285,24 @@ void assumeTakeoff(Sequencer& q) {
          detail::num(z) + " m" + (has_alt ? " (the first item's altitude)" : ""));
 }
 }  // namespace
+
+namespace detail {
+
+double altitudeAboveHome(const MissionItem& it, const Mission& m) {
+  switch (it.frame) {
+    case 0:
+    case 5: return it.alt_m - m.home.alt_m;  // MAV_FRAME_GLOBAL(_INT): above mean sea level
+    case 3:
+    case 6:                                   // relative to home
+    case 10:
+    case 11: return it.alt_m;                 // above terrain: flat terrain at home's height assumed
+    default: break;
+  }
+  throw std::invalid_argument(it.where + ": " + commandName(it.command) + " in MAV_FRAME " + std::to_string(it.frame) +
+                              ", expected 0/5 (absolute), 3/6 (relative) or 10/11 (terrain)");
+}
+
+}  // namespace detail
 
 const char* toString(FlightPhase p) {
   switch (p) {

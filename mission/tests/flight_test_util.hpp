@@ -13,6 +13,13 @@
 
 namespace wattswath::mission::testing {
 
+/// Notes (or warnings) one per line, to search in with find().
+inline std::string joined(const std::vector<std::string>& notes) {
+  std::string all;
+  for (const auto& n : notes) all += n + "\n";
+  return all;
+}
+
 /// A mission in local metres: home at the origin of a frame, a take-off to the first waypoint's
 /// height, an optional DO_CHANGE_SPEED (`speed` [m/s]), the waypoints as ENU offsets [m] with
 /// MAVLink `command` (16 NAV_WAYPOINT, 82 NAV_SPLINE_WAYPOINT) and hold `hold_s` [s], and an RTL.

@@ -12,18 +12,13 @@
 
 using namespace wattswath::mission;
 using wattswath::mission::testing::localMission;
+using wattswath::mission::testing::joined;
 using wattswath::mission::testing::minSpeedBetween;
 
 namespace {
 
 AutopilotConfig arduCopter(const std::string& version) {
   return parseAutopilot(R"({"firmware":"ArduCopter","version":")" + version + R"("})", "test");
-}
-
-std::string joined(const std::vector<std::string>& notes) {
-  std::string all;
-  for (const auto& n : notes) all += n + "\n";
-  return all;
 }
 
 }  // namespace
@@ -156,9 +151,7 @@ TEST(ArduPilotReading, Before45ASpeedChangeRightAfterTheTakeoffIsLostUnlessItIsN
       if (s.position.x() < 500.0) leg1 = std::max(leg1, v);
       if (s.position.y() > 100.0 && s.position.y() < 500.0) leg2 = std::max(leg2, v);
     }
-    std::string notes;
-    for (const auto& n : f.notes) notes += n + "\n";
-    return std::make_tuple(leg1, leg2, notes);
+    return std::make_tuple(leg1, leg2, joined(f.notes));
   };
   const auto [lost, lost2, lost_notes] = topSpeeds("4.3", false);
   EXPECT_NEAR(lost, 10.0, 0.05);

@@ -13,19 +13,21 @@
 #include "wattswath/mission/predict.hpp"
 
 using namespace wattswath::mission;
+using wattswath::mission::testing::joined;
 using wattswath::mission::testing::localMission;
 
 namespace {
 
-// The notes of `m` predicted for the IRIS vehicle flown by `ap`, joined one per line.
-std::string notesOf(const Mission& m, const AutopilotConfig& ap) {
+// `m` predicted for the IRIS vehicle (hover and kinetic effects) flown by `ap`.
+MissionPrediction irisPrediction(const Mission& m, const AutopilotConfig& ap) {
   const wattswath::energy::Vehicle v =
       wattswath::energy::loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json");
   const wattswath::energy::EnergyModel model = wattswath::energy::buildModel(v, {"hover", "kinetic"});
-  std::string all;
-  for (const std::string& w : predictMission(m, v, model, ap, PredictSettings{}).warnings) all += w + "\n";
-  return all;
+  return predictMission(m, v, model, ap, PredictSettings{});
 }
+
+// The notes of `m` predicted for the IRIS vehicle flown by `ap`, joined one per line.
+std::string notesOf(const Mission& m, const AutopilotConfig& ap) { return joined(irisPrediction(m, ap).warnings); }
 
 AutopilotConfig px4() {
   AutopilotConfig a;
@@ -78,16 +80,7 @@ namespace {
 const std::string kWplHome = "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t43.7160040\t10.4613040\t7.15\t1\n";
 
 MissionPrediction predictText(const std::string& text, const std::string& name, const AutopilotConfig& ap = {}) {
-  const wattswath::energy::Vehicle v =
-      wattswath::energy::loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json");
-  const wattswath::energy::EnergyModel model = wattswath::energy::buildModel(v, {"hover", "kinetic"});
-  return predictMission(parseQgcWpl(text, name), v, model, ap, PredictSettings{});
-}
-
-std::string joined(const std::vector<std::string>& notes) {
-  std::string all;
-  for (const auto& n : notes) all += n + "\n";
-  return all;
+  return irisPrediction(parseQgcWpl(text, name), ap);
 }
 
 }  // namespace
