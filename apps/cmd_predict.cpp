@@ -65,7 +65,8 @@ report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::Autop
                                          " Wh (" + report::formatNumber(p.total.energy_j, 0) + " J), " +
                                          report::formatNumber(p.total.distance_m, 0) + " m"}};
   if (p.battery.known) {
-    d.facts.push_back({"battery at landing", report::formatNumber(100.0 * p.battery.usable_left_end, 1) + " % usable left (reserve " +
+    d.facts.push_back({p.battery.ends_in_air ? "battery at the end (in the air)" : "battery at landing",
+                       report::formatNumber(100.0 * p.battery.usable_left_end, 1) + " % usable left (reserve " +
                                                  report::formatNumber(o.reserve_pct, 0) + " %)"});
     if (p.battery.energy_margin > 0.0) {
       d.facts.push_back({"with " + report::formatNumber(100.0 * p.battery.energy_margin, 0) + " % more energy",
@@ -108,6 +109,7 @@ nlohmann::json toJson(const ms::MissionPrediction& p, const ms::AutopilotConfig&
                     {"usable_left_at_landing_with_margin", p.battery.usable_left_end_with_margin},
                     {"fits_with_margin", p.battery.fits_with_margin},
                     {"depleted", p.battery.depleted},
+                    {"ends_in_air", p.battery.ends_in_air},
                     {"verdict", p.battery.verdict}};
     if (p.battery.depleted) j["battery"]["depleted_at_s"] = p.battery.depleted_at_s;
   } else {

@@ -107,7 +107,7 @@ report::BatteryTrace batteryTrace(const pl::FlownPath& f, const energy::Battery&
   bt.model = "Hwang et al. 2018 Eq. 9-15 (Peukert, linear voltage drop)";
   for (const auto& smp : res.series) {
     bt.t.push_back(smp.t);
-    bt.soc.push_back(100.0 * smp.usable_left);
+    bt.soc.push_back(res.depleted && &smp == &res.series.back() ? 0.0 : 100.0 * energy::countedUsableLeft(battery, smp));
     bt.voltage.push_back(smp.voltage_v);
   }
   return bt;

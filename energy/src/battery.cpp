@@ -168,4 +168,10 @@ std::pair<int, int> parseBatteryConfiguration(const std::string& text) {
   return {s, p};
 }
 
+double countedUsableLeft(const Battery& b, const BatterySample& s) {
+  const double c0 = b.capacityAh();
+  const double drawn = (s.current_a > 0.0 ? peukertCapacityAh(b, s.current_a) : c0) - s.residual_ah;
+  return std::min(1.0 - drawn / (b.pack.usable_fraction * c0), 1.0);
+}
+
 }  // namespace wattswath::energy

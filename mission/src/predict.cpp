@@ -15,8 +15,7 @@
 namespace wattswath::mission {
 namespace {
 
-// The usable charge left at landing (0 when the cut-off is reached) of `profile` with its power
-// scaled by `scale`, and the discharge it came from.
+// The discharge of `profile` with its power scaled by `scale` (Hwang et al., 1 s steps).
 energy::EnduranceResult discharge(const energy::Battery& b, std::vector<energy::PowerStep> profile, double scale) {
   for (auto& step : profile) step.power_w *= scale;
   energy::DischargeSettings ds;
@@ -24,31 +23,37 @@ energy::EnduranceResult discharge(const energy::Battery& b, std::vector<energy::
   return energy::simulateProfile(b, profile, ds);
 }
 
+// The charge left is counted as the autopilot counts it (energy::countedUsableLeft: drawn against
+// the usable capacity, as BATT_CAPACITY's remaining % and ground stations show it), not Hwang's
+// Peukert residual, which drops as the motors start and rises back when they stop; the cut-off
+// check keeps the Peukert law. This is that charge at the end of the flight, 0 at the cut-off.
 double usableLeft(const energy::Battery& b, const energy::EnduranceResult& r) {
-  const double left = (r.final_residual_ah - energy::cutoffResidualAh(b)) / (b.pack.usable_fraction * b.capacityAh());
-  return r.depleted ? 0.0 : std::min(left, 1.0);
+  if (r.depleted || r.series.empty()) return 0.0;
+  return energy::countedUsableLeft(b, r.series.back());
 }
 
-// One plain sentence on the reserve, with and without the margin for the prediction's error.
+// One plain sentence on the reserve, with and without the margin for the prediction's error. A
+// flight that ends in the air (no RTL or LAND) is judged where it ends, and says so.
 std::string verdictText(const BatteryPrediction& out, double endurance_s) {
   std::ostringstream v;
   v.precision(3);
   const double margin_pct = 100.0 * out.energy_margin;
+  const std::string lands = out.ends_in_air ? "ends the mission in the air (return and landing not counted) with" : "lands with";
   if (out.depleted) {
     v << "Does not fit: the battery reaches its cut-off " << endurance_s << " s into the flight.";
   } else if (!out.fits) {
-    v << "Fits, but lands with " << 100.0 * out.usable_left_end << " % of the usable charge, below the "
+    v << "Fits, but " << lands << " " << 100.0 * out.usable_left_end << " % of the usable charge, below the "
       << 100.0 * out.reserve_fraction << " % reserve.";
   } else if (out.energy_margin <= 0.0) {
-    v << "Fits: lands with " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
+    v << "Fits: " << lands << " " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
       << 100.0 * out.reserve_fraction << " %).";
   } else if (!out.fits_with_margin) {
-    v << "Too close to call: as predicted it lands with " << 100.0 * out.usable_left_end
+    v << "Too close to call: as predicted it " << lands << " " << 100.0 * out.usable_left_end
       << " % of the usable charge (reserve " << 100.0 * out.reserve_fraction << " %), but with " << margin_pct
       << " % more energy (the prediction's error margin, --energy-margin) only " << 100.0 * out.usable_left_end_with_margin
       << " %. Shorten the mission, or calibrate the model on your own logs (wattswath calibrate).";
   } else {
-    v << "Fits: lands with " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
+    v << "Fits: " << lands << " " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
       << 100.0 * out.reserve_fraction << " %), " << 100.0 * out.usable_left_end_with_margin << " % with " << margin_pct
       << " % more energy for the prediction's error.";
   }
@@ -56,7 +61,7 @@ std::string verdictText(const BatteryPrediction& out, double endurance_s) {
 }
 
 void batteryAlong(const energy::Battery& b, const FlightPieces& fp, const std::vector<double>& e, double reserve,
-                  double margin, BatteryPrediction& out) {
+                  double margin, bool ends_in_air, BatteryPrediction& out) {
   std::vector<energy::PowerStep> profile;
   profile.reserve(fp.pieces.size());
   for (std::size_t i = 0; i < fp.pieces.size(); ++i) {
@@ -65,10 +70,11 @@ void batteryAlong(const energy::Battery& b, const FlightPieces& fp, const std::v
   }
   const energy::EnduranceResult r = discharge(b, profile, 1.0);
   out.known = true;
+  out.ends_in_air = ends_in_air;
   out.reserve_fraction = reserve;
   for (const auto& smp : r.series) {
     out.t_s.push_back(smp.t);
-    out.usable_left.push_back(std::min(smp.usable_left, 1.0));
+    out.usable_left.push_back(r.depleted && &smp == &r.series.back() ? 0.0 : energy::countedUsableLeft(b, smp));
     out.voltage_v.push_back(smp.voltage_v);
   }
   out.depleted = r.depleted;
@@ -320,7 +326,8 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   p.breakdown.time = p.total.time_s;
   p.breakdown.length = p.total.distance_m;
   for (const std::string& n : p.flight.notes) p.warnings.push_back(n);
-  if (v.battery) batteryAlong(*v.battery, p.pieces, p.piece_energy_j, s.reserve_fraction, s.energy_margin, p.battery);
+  const bool ends_in_air = !p.flight.samples.empty() && p.flight.samples.back().airborne;
+  if (v.battery) batteryAlong(*v.battery, p.pieces, p.piece_energy_j, s.reserve_fraction, s.energy_margin, ends_in_air, p.battery);
   return p;
 }
 

@@ -207,7 +207,9 @@ void batteryFigure(HtmlReport& r, const MissionReportData& d) {
   r.figure(
       {"mission-battery", renderSvg(c),
        "Usable charge left (100 % full, 0 % at the cut-off voltage) along the predicted flight, against the reserve "
-       "to keep on landing."});
+       "to keep on landing, counted as the autopilot counts it (the charge drawn against the pack's capacity, "
+       "as a ground station shows it); a pack drawn hard reaches its cut-off sooner (Peukert), which the verdict "
+       "checks as well."});
 }
 
 std::vector<std::string> totalsRow(const MissionPhaseTotals& p, const std::string& name) {

@@ -58,16 +58,17 @@ struct ItemPrediction {
 /// The battery along the flight (when the vehicle file has one).
 struct BatteryPrediction {
   bool known = false;              ///< false: the vehicle has no battery; the rest is unset
-  double usable_left_end = 0.0;    ///< [-] usable charge left on landing (1 full, 0 cut-off)
+  double usable_left_end = 0.0;    ///< [-] usable charge left on landing as the autopilot counts it (1 - drawn / usable; 1 full, 0 cut-off)
   double reserve_fraction = 0.0;   ///< [-] reserve asked for
   bool fits = false;               ///< true when the landing leaves at least the reserve
   double energy_margin = 0.0;      ///< [-] extra energy checked for the prediction's error
   double usable_left_end_with_margin = 0.0;  ///< [-] usable charge left on landing with that extra energy
   bool fits_with_margin = false;   ///< true when the reserve is kept with the extra energy too
   bool depleted = false;           ///< true when the cut-off is reached in flight
+  bool ends_in_air = false;        ///< true when the mission ends without a landing (the "landing" figures are where it ends)
   double depleted_at_s = 0.0;      ///< [s] when the cut-off is reached (depleted only)
   std::vector<double> t_s;         ///< [s] times of the state-of-charge samples
-  std::vector<double> usable_left; ///< [-] usable charge left at t_s
+  std::vector<double> usable_left; ///< [-] usable charge left at t_s as the autopilot counts it (charge drawn against the usable capacity)
   std::vector<double> voltage_v;   ///< [V] terminal voltage at t_s
   std::string verdict;             ///< one plain sentence on the reserve
 };
