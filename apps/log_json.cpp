@@ -69,7 +69,7 @@ json coefficientsJson(const std::vector<calibration::FittedCoefficient>& cs, boo
 }
 
 void printMetrics(const std::string& label, const calibration::ErrorMetrics& m) {
-  std::cout << label << ": sample RMSE " << m.rmse_w << " W, whole-flight energy error " << m.energy_error_pct
+  std::cout << label << ": sample RMSE " << m.rmse_w << " W, whole-flight energy error (mean of |error| over the flights) " << m.energy_error_pct
             << " %, leg-energy MAPE " << m.leg_energy_mape_pct << " %\n";
 }
 

@@ -115,11 +115,11 @@ MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup
                               const logs::LogReadOptions& read) {
   const bool use_cal = setup.calibrated;
   const en::EnergyModel& model = setup.model;
-  const std::string model_text = use_cal ? "the vehicle file's calibration" : "--effects";
+  const std::string model_text = use_cal ? "the vehicle file's calibration" : "the vehicle's physics";
   MissionReplays out;
   std::string effects;
   for (const auto& e : model.effectNames()) effects += (effects.empty() ? "" : ", ") + e;
-  out.report.model = effects + (use_cal ? " (the vehicle file's calibration)" : " (--effects)");
+  out.report.model = effects + " (" + model_text + ")";
   out.report.autopilot = mission::toString(setup.autopilot.family);
   for (std::size_t i = 0; i < log_paths.size(); ++i) {
     MissionLog ml = readMissionLog(log_paths[i], read);
