@@ -16,6 +16,7 @@
 #include "replay_mission.hpp"
 #include "report_data.hpp"
 #include "wattswath/calibration/diagnose.hpp"
+#include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/logs/log_io.hpp"
 #include "wattswath/calibration/plan_prediction.hpp"
 #include "wattswath/calibration/user_effect.hpp"
@@ -52,7 +53,10 @@ void registerReplay(CLI::App& app) {
   auto* cmd = app.add_subcommand("replay", "Replay a model on measured kinematics: power per sample, energy per leg, "
                                            "phase and flight, residuals binned by speed, climb, acceleration, heading, time");
   addVehicleOption(cmd, o->vehicle);
-  cmd->add_option("--effects", o->effects, "Comma-separated effects of the model")->capture_default_str();
+  cmd->add_option("--effects", o->effects,
+                  "Comma-separated effects of the model, with the vehicle's physics (without it, a vehicle file with a "
+                  "calibration (wattswath calibrate) replays that calibration, else these)")
+      ->capture_default_str();
   cmd->add_option("--log", o->logs, "Flight log: canonical CSV, ArduPilot .bin or PX4 .ulg (repeatable)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--samples-out", o->samples_out, "Write per-sample measured/modelled power as CSV here");
   cmd->add_option("--plan", o->plan, "Plan (QGC .waypoints survey area, home = the logs' home): also predict each "
@@ -91,8 +95,15 @@ void registerReplay(CLI::App& app) {
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const std::optional<Wind> wind = windOption(o->wind);
     const auto v = en::loadVehicle(o->vehicle);
-    const auto still = en::buildModel(v, en::splitEffectList(o->effects));
+    // One model for the logs and the missions: the vehicle file's calibration unless --effects is
+    // given (predictionSetup below chooses the same way), else the vehicle's physics.
+    const auto cal = calibration::calibratedModel(v);
+    const bool use_cal = cal && effects_opt->count() == 0;
+    const auto still = use_cal ? cal->model : en::buildModel(v, en::splitEffectList(o->effects));
     const auto model = wind ? en::withWind(still, v, wind->air().x(), wind->air().y()) : still;
+    std::string model_name;
+    for (const auto& e : still.effectNames()) model_name += (model_name.empty() ? "" : ",") + e;
+    model_name += use_cal ? " (the vehicle file's calibration)" : " (the vehicle's physics)";
     const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     std::vector<calibration::LogReplay> reps;
     for (const auto& l : logs) reps.push_back(calibration::replay(model, l));
@@ -132,7 +143,7 @@ void registerReplay(CLI::App& app) {
     if (!o->report.empty() || !o->report_svg.empty()) {
       // With --mission the mission section comes first, then the model on the logged kinematics.
       auto data = validationFromReplays(reps);
-      data.facts.insert(data.facts.begin(), {{"vehicle", v.name}, {"model", o->effects + " (as given by the vehicle's physics)"}});
+      data.facts.insert(data.facts.begin(), {{"vehicle", v.name}, {"model", model_name}});
       report::HtmlReport page(o->missions.empty() ? "wattswath replay" : "wattswath replay: missions against their logs");
       page.facts(data.facts);
       if (!o->missions.empty()) report::addMissionReplay(page, missions.report);
@@ -151,6 +162,7 @@ void registerReplay(CLI::App& app) {
     }
     if (o->json) {
       printJson({{"effects", model.effectNames()},
+                 {"calibrated", use_cal},
                  {"metrics", metricsJson(m)},
                  {"flights", flightsJson(reps)},
                  {"residuals", residualsJson(calibration::residualTables(reps))},
@@ -163,7 +175,7 @@ void registerReplay(CLI::App& app) {
     o->measurement.print();
     for (const auto& n : missions.notes) std::cout << "note: " << n << "\n";
     if (!o->missions.empty()) printMissionReplays(missions.json);
-    printMetrics("model " + o->effects, m);
+    printMetrics("model " + model_name, m);
     for (const auto& r : reps) {
       std::cout << r.source << ": measured " << r.flight.measured_j << " J, modelled " << r.flight.modelled_j << " J ("
                 << r.flight.errorPct() << " %), " << r.legs.size() << " legs\n";

@@ -219,6 +219,11 @@ TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
   const json r = runJson("replay --vehicle " + out + " --log " + log + " --mission " + mission + " --json");
   const auto& m = r["mission_prediction"][0];
   EXPECT_EQ(m["model"], "the vehicle file's calibration");
+  // The logs are replayed with the same model as the missions (they took the default effects,
+  // uncalibrated, and the text printed both side by side).
+  EXPECT_TRUE(r["calibrated"].get<bool>());
+  EXPECT_NEAR(r["flights"][0]["modelled_j"].get<double>(), m["replay_energy_j"].get<double>(),
+              0.005 * m["replay_energy_j"].get<double>());
   EXPECT_GE(m["legs_matched"].get<int>(), 20);
   // Where the kinematics differ: the IRIS+ spent about 22 s below 1 m/s between its first and last
   // waypoint (docs/validation.md 5.2), its legs peak near the prediction's.
