@@ -178,7 +178,7 @@ void registerReplay(CLI::App& app) {
     printMetrics("model " + model_name, m);
     for (const auto& r : reps) {
       std::cout << r.source << ": measured " << r.flight.measured_j << " J, modelled " << r.flight.modelled_j << " J ("
-                << r.flight.errorPct() << " %), " << r.legs.size() << " legs\n";
+                << r.flight.errorPct() << " %), " << r.legs.size() << " segments (cut at stops and slow-downs)\n";
     }
     for (const auto& p : plans) {
       std::cout << p["source"].get<std::string>() << ": from the plan " << p["energy_j"].get<double>() << " J in "

@@ -140,14 +140,25 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap,
   for (const auto& w : p.warnings) std::cerr << "note: " << w << "\n";
 }
 
+// The predicted trajectory at 10 Hz with the modelled power of the step ending at each sample and
+// the energy drawn so far (toPieces makes one piece per step of positive duration, in order).
 std::string samplesCsv(const ms::MissionPrediction& p) {
   std::ostringstream os;
   os.precision(10);
-  os << "t_s,x_m,y_m,z_m,speed_mps,phase,seq\n";
-  for (const auto& s : p.flight.samples) {
+  os << "t_s,x_m,y_m,z_m,speed_mps,phase,seq,power_w,energy_j\n";
+  std::size_t piece = 0;
+  double energy = 0.0;
+  for (std::size_t i = 0; i < p.flight.samples.size(); ++i) {
+    const auto& s = p.flight.samples[i];
+    double power = 0.0;
+    if (i > 0 && s.t > p.flight.samples[i - 1].t && piece < p.piece_energy_j.size()) {
+      const double e = p.piece_energy_j[piece++];
+      energy += e;
+      power = e / (s.t - p.flight.samples[i - 1].t);
+    }
     const int seq = s.step >= 0 && s.step < static_cast<int>(p.items.size()) ? p.items[s.step].seq : -1;
     os << s.t << "," << s.position.x() << "," << s.position.y() << "," << s.position.z() << "," << s.velocity.norm() << ","
-       << ms::toString(s.phase) << "," << seq << "\n";
+       << ms::toString(s.phase) << "," << seq << "," << power << "," << energy << "\n";
   }
   return os.str();
 }
@@ -303,7 +314,10 @@ void addPredictOptions(CLI::App* cmd, PredictOptions& o) {
                   "as a forecast gives it, e.g. 6,45; or SPEED alone for any direction (the dearest of 8 is predicted); the "
                   "ArduCopter models fly against the drag at air speed and the energy model's drag is taken at air speed "
                   "(default: still air)");
-  cmd->add_option("--samples-out", o.samples_out, "Write the predicted trajectory (10 Hz) as CSV here");
+  cmd->add_option("--samples-out", o.samples_out,
+                  "Write the predicted trajectory (10 Hz) as CSV here: t_s, x_m, y_m, z_m (east, north, up of home), "
+                  "speed_mps, phase, seq (the mission item flown), power_w (modelled, over the step ending there), "
+                  "energy_j (drawn so far)");
   cmd->add_flag("--lenient", o.lenient, "Skip unsupported mission commands that do not move the vehicle with a warning instead of an error (a navigation command is never skipped)");
   addReportOptions(cmd, o.report, o.report_svg, o.force);
   addJsonFlag(cmd, o.json);
@@ -341,6 +355,14 @@ void registerPredictCommand(CLI::App& app) {
       "Energy, time and battery of a mission file (.plan or .waypoints) as the vehicle's autopilot flies it: "
       "take-off to landing, by phase and by item");
   addPredictOptions(cmd, *o);
+  cmd->footer(
+      "\nThe mission is flown by the vehicle file's `autopilot` (firmware, version, parameters; firmware defaults "
+      "without one): docs/autopilots.md says what each model follows. Times count from the take-off command.\n"
+      "--json: energy_j, energy_wh, time_s, distance_m; phases.{takeoff,mission,return,landing}.{energy_j, time_s, "
+      "distance_m}; items[] (seq, command, reached_s, completed_s, energy_j, time_s, distance_m); breakdown (energy by "
+      "effect); battery (known, usable_left_at_landing, reserve_fraction, fits, energy_margin, usable_left_at_landing_with_margin, "
+      "fits_with_margin, depleted, ends_in_air, verdict); autopilot; model; warnings[]; launch; wind; "
+      "calibration_dispute and calibration_coverage (null when none).");
   cmd->callback([o] { runPredict(*o); });
 }
 

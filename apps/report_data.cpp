@@ -144,7 +144,7 @@ report::ValidationReportData validationFromReplays(const std::vector<calibration
   for (std::size_t k = 0; k < replays.size(); ++k) {
     for (std::size_t i = 0; i < replays[k].legs.size(); ++i) {
       const auto& l = replays[k].legs[i];
-      const std::string label = (replays.size() > 1 ? "log " + std::to_string(k + 1) + " " : std::string()) + "leg " +
+      const std::string label = (replays.size() > 1 ? "log " + std::to_string(k + 1) + " " : std::string()) + "segment " +
                                 std::to_string(i + 1) + " (" + report::formatNumber(l.time_s, 1) + " s)";
       d.legs.push_back({label, l.measured_j, l.modelled_j});
     }

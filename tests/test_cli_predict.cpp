@@ -44,6 +44,24 @@ TEST(CliPredict, SurveyPlanGivesTheJsonContractAndABatteryVerdict) {
   EXPECT_TRUE(j["battery"]["known"].get<bool>());
   EXPECT_FALSE(j["battery"]["verdict"].get<std::string>().empty());
   EXPECT_EQ(j["autopilot"]["model"], "arducopter-leash");
+  // --samples-out carries the modelled power and the energy drawn so far, which ends at energy_j.
+  const std::string csv = tempPath("samples.csv");
+  std::remove(csv.c_str());
+  runJson("predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
+          sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --samples-out " + csv + " --json");
+  std::ifstream in(csv);
+  std::string header, line, last;
+  std::getline(in, header);
+  EXPECT_EQ(header, "t_s,x_m,y_m,z_m,speed_mps,phase,seq,power_w,energy_j");
+  double max_power = 0.0;
+  while (std::getline(in, line)) {
+    last = line;
+    const auto c1 = line.rfind(','), c0 = line.rfind(',', c1 - 1);
+    max_power = std::max(max_power, std::stod(line.substr(c0 + 1, c1 - c0 - 1)));
+  }
+  EXPECT_NEAR(std::stod(last.substr(last.rfind(',') + 1)), j["energy_j"].get<double>(), 1e-6 * j["energy_j"].get<double>());
+  EXPECT_GT(max_power, 100.0);  // an IRIS+ draws a couple of hundred watts
+  std::remove(csv.c_str());
 }
 
 TEST(CliPredict, AReserveWithinThePredictionsErrorIsTooCloseToCall) {

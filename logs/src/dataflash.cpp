@@ -191,7 +191,9 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
       const std::string what = "file ends " + std::to_string(n - pos) +
                                " bytes after the last message, too short for a message header (truncated)";
       if (!lenient) fail(pos, what);
-      log.warnings_.push_back(log.at(pos) + what);
+      log.warnings_.push_back(log.at(pos) + what + " in its last message, as ArduPilot's logger leaves a log it is "
+                                                    "still writing when the file is closed: that record is dropped, the "
+                                                    "rest is read");
       log.cut_end_ = true;
       break;
     }
@@ -224,7 +226,9 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
                                std::to_string(length) + " bytes but only " + std::to_string(n - pos) +
                                " remain: the file is truncated";
       if (!lenient) fail(pos, what);
-      log.warnings_.push_back(log.at(pos) + what);
+      log.warnings_.push_back(log.at(pos) + what + " in its last message, as ArduPilot's logger leaves a log it is "
+                                                    "still writing when the file is closed: that record is dropped, the "
+                                                    "rest is read");
       log.cut_end_ = true;
       break;
     }

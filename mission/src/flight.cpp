@@ -112,8 +112,12 @@ std::vector<NavStep> asArduPilotReadsThem(const std::vector<NavStep>& steps, std
         notes.push_back(stepName(st, k) + ": altitude 0 is the previous target's for ArduPilot (" + detail::num(t.z()) + " m)");
       }
       if (!st.has_position && (t - prev).norm() <= 0.01) {
-        notes.push_back(stepName(st, k) + ": latitude, longitude and altitude 0 are the previous target's for ArduPilot, where "
-                        "the vehicle already is: a leg of no length" + (st.hold_s > 0.0 ? ", then the hold" : ""));
+        notes.push_back(stepName(st, k) +
+                        (st.alt_given ? ": latitude and longitude 0 are the previous target's for ArduPilot, and its altitude, " +
+                                            detail::num(t.z()) + " m, is the vehicle's"
+                                      : std::string(": latitude, longitude and altitude 0 are the previous target's for "
+                                                    "ArduPilot, where the vehicle already is")) +
+                        ": a leg of no length" + (st.hold_s > 0.0 ? ", then the hold" : ""));
       }
       st.target = t;
       if (st.has_position) prev = t;

@@ -250,6 +250,14 @@ TEST(ArduPilotReading, AHereItemThatDoesNotMoveTheVehicleAndAHereCircleAreSaid) 
   EXPECT_NE(notes.find("test item 3: latitude, longitude and altitude 0 are the previous target's for ArduPilot, where the "
                        "vehicle already is: a leg of no length"),
             std::string::npos) << notes;
+  // With its altitude given, and the vehicle's (ArduPilot's inf_loop: a LOITER_TIME here at 100 m
+  // after the climb to 100 m), the note does not call that altitude 0.
+  Mission a = localMission({{100, 0, 10}, {0, 0, 10}});
+  a.items[2].lat_deg = a.items[2].lon_deg = 0.0;
+  notes = joined(flyMission(sequenceMission(a), arduCopter("4.5")).notes);
+  EXPECT_NE(notes.find("test item 3: latitude and longitude 0 are the previous target's for ArduPilot, and its altitude, 10 m, "
+                       "is the vehicle's: a leg of no length"),
+            std::string::npos) << notes;
   Mission c = localMission({{100, 0, 10}, {0, 0, 0}});
   c.items[2].command = 18;  // NAV_LOITER_TURNS here, 1 turn of 5 m
   c.items[2].lat_deg = c.items[2].lon_deg = 0.0;

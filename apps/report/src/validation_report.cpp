@@ -224,26 +224,28 @@ void addResiduals(HtmlReport& r, const ValidationReportData& d, std::size_t logs
   }
 }
 
-// Leg energies: measured against modelled on the diagonal, and as a table.
+// Segment energies (the log cut at its stops and slow-downs, SegmentSettings; not the mission's
+// legs): measured against modelled on the diagonal, and as a table.
 void addLegEnergies(HtmlReport& r, const ValidationReportData& d) {
-  r.heading("Leg energies");
+  r.heading("Segment energies");
   LineChart c;
-  c.title = "Leg energy: measured against modelled";
+  c.title = "Segment energy: measured against modelled";
   c.x = {"modelled energy", "kJ"};
   c.y = {"measured energy", "kJ"};
   c.diagonal = true;
   c.width = 520;
   c.height = 480;
   Series s;
-  s.name = "legs";
+  s.name = "segments";
   s.style = SeriesStyle::Points;
   for (const auto& l : d.legs) {
     s.x.push_back(l.modelled / 1000.0);
     s.y.push_back(l.measured / 1000.0);
   }
   c.series.push_back(s);
-  r.figure({"validation-legs", renderSvg(c), "Points on the dashed diagonal are legs the model gets exactly right."});
-  Table t{"Leg energies", {"leg", "measured [kJ]", "modelled [kJ]", "error [%]"}, {}, {false, true, true, true}, true};
+  r.figure({"validation-legs", renderSvg(c), "The logged flight cut into segments at its stops and slow-downs (not the mission's legs); points on the dashed "
+               "diagonal are segments the model gets exactly right."});
+  Table t{"Segment energies", {"segment", "measured [kJ]", "modelled [kJ]", "error [%]"}, {}, {false, true, true, true}, true};
   for (const auto& l : d.legs) {
     t.rows.push_back({l.label, kJ(l.measured), kJ(l.modelled),
                       l.measured != 0.0 ? formatNumber(100.0 * (l.modelled - l.measured) / l.measured, 1) : "-"});
