@@ -505,7 +505,7 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
     } else {  // Land
       if (st.has_position) {
         const Eigen::Vector3d over(st.target.x(), st.target.y(), target.z());
-        f.leg(target, over, speed, false, FlightPhase::Landing, ki);
+        f.leg(target, over, speed, false, FlightPhase::Mission, ki);  // the approach; the landing is the descent
       }
       rec.reached(ki);
       land(rec, P, ki, s);

@@ -344,7 +344,8 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       } else if (st.has_position) {
         land_xy = st.target.head<2>();
         const Eigen::Vector3d over{st.target.x(), st.target.y(), f.p.z()};
-        f.flyTo(over, over, cruise, P.acc_rad, ph, ki);
+        // The approach at altitude is a mission leg; the landing phase is the descent.
+        f.flyTo(over, over, cruise, P.acc_rad, FlightPhase::Mission, ki);
       }
       rec.reached(ki);
       auto law = [&](double h) {

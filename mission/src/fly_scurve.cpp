@@ -536,7 +536,8 @@ FlownMission flyArduCopterSCurve(const std::vector<NavStep>& steps, const Autopi
         // over the waypoint the vehicle stopped at, flown as a whole S-curve (as RTL's climb leg).
         LegSpec over = specOf(st, P, ki);
         over.target.z() = here.z() + hoverOffset(s);
-        here = flyChain(fl, {over}, here, P, FlightPhase::Landing, P.jerk, std::exchange(carried, 0.0));
+        // The approach at altitude is a mission leg; the landing phase is the descent.
+        here = flyChain(fl, {over}, here, P, FlightPhase::Mission, P.jerk, std::exchange(carried, 0.0));
       }
       // ModeAuto::land_start sets the descent limit back to WPNAV_SPEED_DN (get_default_speed_down:
       // the parameter, not a DO_CHANGE_SPEED of type 3), which land_run_vertical_control caps at.

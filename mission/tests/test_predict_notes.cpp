@@ -238,3 +238,23 @@ TEST(PredictNotes, TheChargeLeftIsCountedAsTheAutopilotCountsItAndAFlightEndingI
   EXPECT_NE(hovering.battery.verdict.find("ends the mission in the air (return and landing not counted) with"), std::string::npos)
       << hovering.battery.verdict;
 }
+
+// A NAV_LAND with a position is flown to at altitude, then descended (ModeAuto::do_land,
+// PX4's land item). The approach counted as "landing": a mission ending in a land 2986 m away put a
+// 5:33 cruise in the landing phase (ArduPilot's QGC test plan). It is now a mission leg in every
+// model, and the landing phase is the descent.
+TEST(PredictNotes, TheApproachOfALandWithAPositionIsMissionFlightAndTheLandingIsTheDescent) {
+  const std::string text = kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t20\t1\n2\t0\t3\t21\t0\t0\t0\t0\t43.7190\t10.4613\t0\t1\n";
+  AutopilotConfig leash;
+  leash.family = AutopilotFamily::ArduCopterLeash;
+  leash.firmware = "ArduCopter";
+  leash.version = "3.2";
+  for (const AutopilotConfig& ap : {AutopilotConfig{}, leash, px4()}) {
+    const MissionPrediction p = predictText(text, "land.waypoints", ap);
+    const Totals& landing = p.phases[static_cast<int>(FlightPhase::Landing)];
+    const Totals& mission = p.phases[static_cast<int>(FlightPhase::Mission)];
+    EXPECT_GT(mission.distance_m, 300.0) << toString(ap.family);  // the 333 m approach at 20 m
+    // The 20 m descent, and for PX4 the last metres to the land point closed while descending.
+    EXPECT_LT(landing.distance_m, 30.0) << toString(ap.family);
+  }
+}
