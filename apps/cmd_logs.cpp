@@ -24,6 +24,7 @@
 #include "wattswath/energy/tolerances.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/survey_area.hpp"
+#include "wattswath/report/svg.hpp"
 
 namespace wattswath::apps {
 namespace en = wattswath::energy;
@@ -177,8 +178,9 @@ void registerReplay(CLI::App& app) {
     if (!o->missions.empty()) printMissionReplays(missions.json);
     printMetrics("model " + model_name, m);
     for (const auto& r : reps) {
-      std::cout << r.source << ": measured " << r.flight.measured_j << " J, modelled " << r.flight.modelled_j << " J ("
-                << r.flight.errorPct() << " %), " << r.legs.size() << " segments (cut at stops and slow-downs)\n";
+      std::cout << r.source << ": measured " << report::formatNumber(r.flight.measured_j, 0) << " J, modelled "
+                << report::formatNumber(r.flight.modelled_j, 0) << " J (" << report::formatNumber(r.flight.errorPct(), 2) << " %), "
+                << r.legs.size() << " segments (cut at stops and slow-downs)\n";
     }
     for (const auto& p : plans) {
       std::cout << p["source"].get<std::string>() << ": from the plan " << p["energy_j"].get<double>() << " J in "

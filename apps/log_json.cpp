@@ -4,6 +4,8 @@
 #include <cmath>
 #include <iostream>
 
+#include "wattswath/report/svg.hpp"
+
 namespace wattswath::apps {
 namespace en = wattswath::energy;
 using nlohmann::json;
@@ -69,8 +71,9 @@ json coefficientsJson(const std::vector<calibration::FittedCoefficient>& cs, boo
 }
 
 void printMetrics(const std::string& label, const calibration::ErrorMetrics& m) {
-  std::cout << label << ": sample RMSE " << m.rmse_w << " W, whole-flight energy error (mean of |error| over the flights) " << m.energy_error_pct
-            << " %, leg-energy MAPE " << m.leg_energy_mape_pct << " %\n";
+  std::cout << label << ": sample RMSE " << report::formatNumber(m.rmse_w, 1)
+            << " W, whole-flight energy error (mean of |error| over the flights) " << report::formatNumber(m.energy_error_pct, 2)
+            << " %, leg-energy MAPE " << report::formatNumber(m.leg_energy_mape_pct, 2) << " %\n";
 }
 
 json identifiabilityJson(const std::vector<calibration::FittedCoefficient>& cs) {

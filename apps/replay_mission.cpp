@@ -14,6 +14,7 @@
 
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/mission/files.hpp"
+#include "wattswath/report/svg.hpp"
 
 namespace wattswath::apps {
 namespace en = wattswath::energy;
@@ -189,22 +190,22 @@ std::string kinematicsSentence(const json& m) {
 }
 
 void printMissionReplays(const json& missions) {
+  // Rounded as measured: times to 0.1 s, energies to 1 J, errors to 0.1 %.
+  const auto num = [](const json& x, int decimals) {
+    return x.is_null() ? std::string("-") : report::formatNumber(x.get<double>(), decimals);
+  };
   for (const auto& m : missions) {
     std::cout << m["log"].get<std::string>() << " against " << m["mission"].get<std::string>() << " ("
               << m["autopilot"].get<std::string>() << ", " << m["model"].get<std::string>() << "):\n  time "
-              << m["predicted_time_s"].get<double>() << " s predicted vs " << m["measured_time_s"].get<double>()
-              << " s measured (" << m["time_error_pct"].get<double>() << " %), energy "
-              << m["predicted_energy_j"].get<double>() << " J vs " << m["measured_energy_j"].get<double>() << " J ("
-              << m["energy_error_pct"].get<double>() << " %): kinematics " << m["kinematics_error_j"].get<double>()
-              << " J, physics " << m["physics_error_j"].get<double>() << " J\n"
+              << num(m["predicted_time_s"], 1) << " s predicted vs " << num(m["measured_time_s"], 1) << " s measured ("
+              << num(m["time_error_pct"], 1) << " %), energy " << num(m["predicted_energy_j"], 0) << " J vs "
+              << num(m["measured_energy_j"], 0) << " J (" << num(m["energy_error_pct"], 1) << " %): kinematics "
+              << num(m["kinematics_error_j"], 0) << " J, physics " << num(m["physics_error_j"], 0) << " J\n"
               << "  " << launchSentence(m["launch_from_mission_home_m"][0].get<double>(), m["launch_from_mission_home_m"][1].get<double>())
               << "\n  " << kinematicsSentence(m) << "\n  leg  measured s  predicted s  measured J  predicted J\n";
     for (const auto& l : m["legs"]) {
-      auto f = [](const json& x) {
-        return x.is_null() ? std::string("-") : std::to_string(static_cast<long>(std::lround(x.get<double>())));
-      };
-      std::cout << "  " << l["leg"].get<int>() << "  " << f(l["measured_time_s"]) << "  " << f(l["predicted_time_s"])
-                << "  " << f(l["measured_energy_j"]) << "  " << f(l["predicted_energy_j"]) << "\n";
+      std::cout << "  " << l["leg"].get<int>() << "  " << num(l["measured_time_s"], 1) << "  " << num(l["predicted_time_s"], 1)
+                << "  " << num(l["measured_energy_j"], 0) << "  " << num(l["predicted_energy_j"], 0) << "\n";
     }
   }
 }
