@@ -167,7 +167,7 @@ void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::ve
     LineChart c;
     const std::string name = d.log_names.empty() ? std::string() : d.log_names[k];
     c.title = "Measured and modelled electrical power" + (name.empty() ? std::string() : ": " + name);
-    c.x = {"time", "s"};
+    c.x = {"log time (the log's own clock)", "s"};
     c.y = {"power", "W"};
     if (!d.measured_power.empty()) c.series.push_back(Series("measured", t, slice(d.measured_power)));
     if (!d.modelled_power.empty()) c.series.push_back(Series("modelled", t, slice(d.modelled_power)));
