@@ -410,7 +410,12 @@ void fitEnergy(const std::vector<MissionFlight>& flights, const energy::EnergyMo
     os << c.effect << "." << c.name << ": " << c.value << " " << c.unit;
     if (c.at_bound) os << " (at its bound)";
     r.fitted.push_back(os.str());
-    if (c.at_bound) r.notes.push_back(c.effect + "." + c.name + " stopped at its bound: not determined by these logs");
+    if (c.at_bound) {
+      r.notes.push_back(c.effect + "." + c.name + " stopped at its bound (" + num(c.value) + " " + c.unit +
+                        "): these logs fit best beyond what the effect allows, so its value is not a measurement of the "
+                        "vehicle; the vehicle file stores the bound (refit with more varied flights, or leave the effect "
+                        "out with --effects)");
+    }
     if (!c.determined) r.notes.push_back(c.effect + "." + c.name + " is not constrained by these logs: its value is arbitrary");
   }
 }
