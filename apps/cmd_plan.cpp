@@ -500,6 +500,13 @@ struct PlanChecks {
   geo::ContainmentReport inside;  // the path outside the area and in no-fly zones
 };
 
+// [%] The share of the area the photos cover: the camera's footprint along the legs it is on along.
+double photoCoveragePct(const pl::SurveyProblem& flown_pr, const pl::PlanResult& r, const pl::PlanMission& pm) {
+  geo::CoveragePath photographed;
+  for (int i : pm.camera_legs) photographed.legs.push_back(r.plan.flown.path.legs[static_cast<size_t>(i)]);
+  return pl::coveragePercent(flown_pr, photographed);
+}
+
 // Checks the written path's coverage, its photos' and its containment; adds notes when the photos
 // cover less than the plan or the path strays.
 PlanChecks checkPlan(const PlanOpts& o, const PlanSetup& s, const pl::SurveyProblem& flown_pr, const pl::PlanResult& r,
@@ -508,9 +515,7 @@ PlanChecks checkPlan(const PlanOpts& o, const PlanSetup& s, const pl::SurveyProb
   PlanChecks c;
   const bool margin_cut = o.no_fly_margin > 0.0 && !pl::noFlyZones(pr).empty();
   c.whole_area_pct = margin_cut ? pl::coveragePercent(pr, r.plan.flown.path) : r.plan.coverage_pct;
-  geo::CoveragePath photographed;  // the legs the camera is on along
-  for (int i : pm.camera_legs) photographed.legs.push_back(r.plan.flown.path.legs[static_cast<size_t>(i)]);
-  c.photo_pct = s.photos ? pl::coveragePercent(flown_pr, photographed) : 0.0;
+  c.photo_pct = s.photos ? photoCoveragePct(flown_pr, r, pm) : 0.0;
   if (s.photos && c.photo_pct < 99.0)
     notes.push_back("camera: the photos cover " + fixedText(c.photo_pct, 1) +
                     " % of the area, less than the plan's coverage: the camera is off along turns (a spiral's corner "
@@ -521,6 +526,42 @@ PlanChecks checkPlan(const PlanOpts& o, const PlanSetup& s, const pl::SurveyProb
                     fixedText(c.inside.in_holes_m, 2) + " m in no-fly zones (up to " + fixedText(c.inside.max_depth_m, 2) +
                     " m deep); please report the area");
   return c;
+}
+
+// [%] Photos must cover at least this much of the area before a plan with arcs (a spiral's corners,
+// where the camera is off) is written for a camera; else straight sweeps are planned instead.
+constexpr double kPhotoCoverageMinPct = 99.0;
+
+// A camera is off along turns, and a spiral turns at every corner, so the cheapest plan can
+// photograph far less than its swath covers (63 % of the E-Spiral polygon). When the chosen plan's
+// photos miss kPhotoCoverageMinPct, the area is planned again with straight sweeps only (as
+// --no-spiral), and that plan is kept when its photos cover more; a note says what was traded.
+void straightIfPhotosMiss(const pl::SurveyProblem& flown_pr, const energy::Vehicle& vehicle, const energy::EnergyModel& model,
+                          const pl::PlannerSettings& ps, const pl::FlightScoring& scoring, const std::string& vehicle_path,
+                          pl::PlanResult& r, PlanFlight& flight, std::vector<std::string>& flight_notes) {
+  if (r.plan.pattern == "boustrophedon") return;  // straight sweeps already: nothing to trade
+  const double pct = photoCoveragePct(flown_pr, r, flight.mission);
+  if (pct >= kPhotoCoverageMinPct) return;
+  progress("plan: the photos of the " + r.plan.pattern + " plan cover " + fixedText(pct, 1) +
+           " % of the area; planning again with straight sweeps only");
+  pl::PlannerSettings straight = ps;
+  straight.spirals = false;
+  pl::PlanResult r2 = pl::planCoverage(flown_pr, vehicle, model, straight, [](const std::string& line) { progress(line); });
+  std::vector<std::string> notes2;
+  PlanFlight f2 = flyFinalists(r2, scoring, vehicle_path, notes2);
+  const double pct2 = photoCoveragePct(flown_pr, r2, f2.mission);
+  const std::string was = "the cheapest plan (" + r.plan.pattern + ", " + fixedText(flight.prediction.total.energy_j / 1000.0, 1) +
+                          " kJ as flown) photographs " + fixedText(pct, 1) + " % of the area (the camera is off along its turns)";
+  if (pct2 <= pct) {
+    flight_notes.push_back("camera: " + was + "; straight sweeps would photograph " + fixedText(pct2, 1) + " %, so it is kept");
+    return;
+  }
+  notes2.push_back("camera: " + was + "; written instead: straight sweeps (" + r2.plan.pattern + ", " +
+                   fixedText(f2.prediction.total.energy_j / 1000.0, 1) + " kJ as flown), whose photos cover " +
+                   fixedText(pct2, 1) + " % (--no-spiral plans so from the start)");
+  r = std::move(r2);
+  flight = std::move(f2);
+  flight_notes = std::move(notes2);
 }
 
 void runPlan(const PlanOpts& o) {
@@ -544,7 +585,8 @@ void runPlan(const PlanOpts& o) {
   pl::FlightScoring scoring = flightScoring(o, s, vehicle, wind);
   std::vector<std::string> flight_notes;
   progress("plan: flying the finalists' missions with the vehicle's autopilot model");
-  const PlanFlight flight = flyFinalists(r, scoring, o.vehicle, flight_notes);
+  PlanFlight flight = flyFinalists(r, scoring, o.vehicle, flight_notes);
+  if (s.photos && ps.spirals) straightIfPhotosMiss(flown_pr, vehicle, model, ps, scoring, o.vehicle, r, flight, flight_notes);
   if (vehicle.battery) r.battery = pl::predictBatteryUse(r.plan.flown, *vehicle.battery);
   if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
   checkFlown(pr, r.plan.flown.path, o.no_fly_margin);

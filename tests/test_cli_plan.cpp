@@ -290,6 +290,24 @@ TEST(CliPlanShared, EveryESpiralAreaWithTheESpiralCamera) {
   }
 }
 
+// A camera is off along turns, and a spiral turns at every corner: on the E-Spiral polygon at 20 m
+// (80 deg, 60 % overlap) the cheapest plan was a spiral whose photos covered 63.2 % of the area while
+// the plan said 100 % (fresh-eyes review). Such a plan is now replaced by straight sweeps, and said.
+TEST(CliPlanShared, ACameraPlanWhosePhotosMissTheAreaIsPlannedWithStraightSweeps) {
+  const auto out = outDir("espiral_polygon_camera");
+  const auto r = run(cliBinary() + " plan " + wattswath::test::sharedData("espiral/area__polygon.waypoints") + " --vehicle " +
+                     sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --out " + out +
+                     " --altitude 20 --fov 80 --overlap 0.6 --json 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  EXPECT_GE(j.at("mission").at("camera").at("photo_coverage_pct").get<double>(), 99.0);
+  EXPECT_NE(j.at("pattern").get<std::string>(), "spiral");
+  std::string notes;
+  for (const auto& n : j.at("notes")) notes += n.get<std::string>() + "\n";
+  EXPECT_NE(notes.find("camera: the cheapest plan (spiral"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("written instead: straight sweeps"), std::string::npos) << notes;
+}
+
 TEST(CliPlanShared, IrisWaypointsWithNoFlyFile) {
   const auto out = outDir("iris_wpl");
   const auto j = planJson(wattswath::test::sharedData("iris-flights/plan__real_flight_area.waypoints"), out,
