@@ -449,6 +449,7 @@ pl::FlightScoring flightScoring(const PlanOpts& o, const PlanSetup& s, const ene
   scoring.mission = mo;
   scoring.vehicle = &vehicle;
   if (wind) scoring.settings.wind = wind->air();
+  scoring.settings.reserve_fraction = o.sorties.reserve_pct / 100.0;  // --reserve, for the flight's verdict
   return scoring;
 }
 
@@ -482,6 +483,15 @@ void writePlanReport(const PlanOpts& o, const PlanSetup& s, const pl::PlanResult
   const auto& pm = flight.mission;
   auto data = planReportData(r, s.problem, vehicle, model, o.area);
   data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), *s.area.frame);
+  // The battery along the written mission as the autopilot model flies it (the verdict's flight).
+  if (data.battery && flight.prediction.battery.known) {
+    const auto& b = flight.prediction.battery;
+    data.battery->model += "; mission.plan flown take-off to landing, charge counted as the autopilot counts it";
+    data.battery->t = b.t_s;
+    data.battery->soc.clear();
+    for (const double u : b.usable_left) data.battery->soc.push_back(100.0 * u);
+    data.battery->voltage = b.voltage_v;
+  }
   const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
   data.facts.push_back({"flown by", flight.autopilot + ": " + fixedText(flight.prediction.total.energy_j / 1000.0, 1) + " kJ, " +
                                         fixedText(flight.prediction.total.time_s / 60.0, 1) +
@@ -587,7 +597,18 @@ void runPlan(const PlanOpts& o) {
   progress("plan: flying the finalists' missions with the vehicle's autopilot model");
   PlanFlight flight = flyFinalists(r, scoring, o.vehicle, flight_notes);
   if (s.photos && ps.spirals) straightIfPhotosMiss(flown_pr, vehicle, model, ps, scoring, o.vehicle, r, flight, flight_notes);
-  if (vehicle.battery) r.battery = pl::predictBatteryUse(r.plan.flown, *vehicle.battery);
+  // The battery as the written mission flies, take-off to landing (the flight model's pieces), with
+  // --reserve: the verdict, the chart and predict on mission.plan agree.
+  if (vehicle.battery) {
+    std::vector<energy::PowerStep> profile;
+    for (std::size_t i = 0; i < flight.prediction.pieces.pieces.size(); ++i) {
+      const double d = flight.prediction.pieces.pieces[i].duration;
+      if (d > 0.0) profile.push_back({d, std::max(0.0, flight.prediction.piece_energy_j[i] / d)});
+    }
+    pl::BatteryUseSettings bs;
+    bs.reserve_fraction = o.sorties.reserve_pct / 100.0;
+    r.battery = pl::predictBatteryUse(profile, *vehicle.battery, bs);
+  }
   if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
   checkFlown(pr, r.plan.flown.path, o.no_fly_margin);
   const auto& pm = flight.mission;

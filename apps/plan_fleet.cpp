@@ -18,7 +18,9 @@ void addSortieOptions(CLI::App* cmd, SortieRequest& req) {
   cmd->add_option("--sorties", req.sorties,
                   "split the survey into sorties that each land with the battery reserve: 'auto' (the fewest that fit, "
                   "with the least total energy among those) or a count; writes sortie_01.plan/.waypoints, ... beside mission.plan");
-  cmd->add_option("--reserve", req.reserve_pct, "usable battery charge each sortie keeps on landing [%] (default 25)")
+  cmd->add_option("--reserve", req.reserve_pct,
+                  "usable battery charge to keep on landing [%] (default 25): the battery verdict of the plan, and of "
+                  "each sortie with --sorties")
       ->check(CLI::Range(0.0, 90.0));
   cmd->add_option("--energy-margin", req.energy_margin_pct,
                   "each sortie keeps the reserve with this much more energy too, for the prediction's own error [%] "

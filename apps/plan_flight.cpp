@@ -51,6 +51,7 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
                         std::vector<std::string>& notes) {
   PredictionSetup setup = predictionSetup(*scoring.vehicle, vehicle_path, "", 25.0);
   setup.settings.wind = scoring.settings.wind;  // this run's (plan --wind), as predict --wind sets it
+  setup.settings.reserve_fraction = scoring.settings.reserve_fraction;  // plan --reserve
   std::vector<std::pair<std::string, const planner::PlanCandidate*>> cands = {{"plan", &r.plan}};
   if (r.per_cell && r.per_cell->valid) cands.push_back({"per-cell", &*r.per_cell});
   if (r.best_spiral && r.best_spiral->valid) cands.push_back({"best spiral", &*r.best_spiral});

@@ -42,7 +42,9 @@ report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr) {
                          {"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"}};
   if (r.battery && r.battery->usable_energy_j > 0.0) {
     const double share = 100.0 * r.battery->mission_energy_j / r.battery->usable_energy_j;
-    facts.push_back({"battery", fixedText(share, 0) + " % of one battery's usable energy; " +
+    facts.push_back({"battery", fixedText(share, 0) + " % of one battery's usable energy as mission.plan flies (lands with " +
+                                    fixedText(r.battery->remaining_pct, 0) + " % of the usable charge, reserve " +
+                                    fixedText(r.battery->reserve_pct, 0) + " %); " +
                                     std::to_string(static_cast<int>(std::ceil(share / 100.0 - 1e-9))) + " battery(ies) needed"});
   }
   double farthest = 0.0;

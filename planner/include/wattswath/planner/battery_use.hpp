@@ -5,7 +5,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/planner/speed.hpp"
 
@@ -23,7 +25,7 @@ struct BatteryUse {
   double mission_energy_j = 0.0;   ///< [J] electrical energy of the flight
   double margin_j = 0.0;           ///< [J] usable minus mission energy (negative: does not fit)
   double margin_pct = 0.0;         ///< [%] margin over usable energy
-  double remaining_pct = 0.0;      ///< [%] usable charge left on landing (Hwang discharge of the per-leg powers)
+  double remaining_pct = 0.0;      ///< [%] usable charge left on landing, counted (charge drawn against the usable capacity)
   double reserve_pct = 0.0;        ///< [%] reserve asked for (settings)
   bool fits = false;               ///< true when the flight ends above the cut-off with the reserve left
   std::string warning;             ///< empty when it fits; else a sentence saying why and by how much
@@ -32,6 +34,13 @@ struct BatteryUse {
 /// Discharges `battery` along the per-leg powers of `flown` (leg energy over leg time).
 /// Throws std::invalid_argument on settings out of range.
 BatteryUse predictBatteryUse(const FlownPath& flown, const energy::Battery& battery,
+                             const BatteryUseSettings& settings = {});
+
+/// Discharges `battery` along `profile`, a flight's powers from take-off to landing (e.g. the
+/// autopilot model's flight of the written mission). The charge left is counted as the autopilot
+/// counts it (drawn against the usable capacity); the cut-off follows Hwang's Peukert law.
+/// Throws std::invalid_argument on settings out of range.
+BatteryUse predictBatteryUse(const std::vector<energy::PowerStep>& profile, const energy::Battery& battery,
                              const BatteryUseSettings& settings = {});
 
 }  // namespace wattswath::planner
