@@ -289,8 +289,11 @@ void setSpacing(const PlanOpts& o, PlanSetup& s) {
     pr.spacing = pr.footprint = o.spacing;
     return;
   }
-  if (!(o.overlap >= 0.0 && o.overlap < 1.0))
-    throw std::invalid_argument("--overlap = " + std::to_string(o.overlap) + ": expected a fraction in [0, 1) (or give --spacing)");
+  if (o.overlap < 0.0)  // not given (its placeholder is -1)
+    throw std::invalid_argument("a camera needs --overlap (the side overlap of its photos, a fraction in [0, 1), e.g. 0.7), "
+                                "or give --spacing instead of a camera");
+  if (!(o.overlap < 1.0))
+    throw std::invalid_argument("--overlap = " + fixedText(o.overlap, 3) + ": expected a fraction in [0, 1) (or give --spacing)");
   s.side_overlap = o.overlap;
   s.frontal_overlap = o.frontal_overlap >= 0.0 ? o.frontal_overlap : o.overlap;
   if (o.frontal_overlap < 0.0)
@@ -607,7 +610,11 @@ void runPlan(const PlanOpts& o) {
     }
     pl::BatteryUseSettings bs;
     bs.reserve_fraction = o.sorties.reserve_pct / 100.0;
+    // The search's own warning (its idealised plan) gives way to the flight's.
+    if (r.battery && !r.battery->warning.empty())
+      r.notes.erase(std::remove(r.notes.begin(), r.notes.end(), r.battery->warning), r.notes.end());
     r.battery = pl::predictBatteryUse(profile, *vehicle.battery, bs);
+    if (!r.battery->fits) r.notes.push_back(r.battery->warning);
   }
   if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
   checkFlown(pr, r.plan.flown.path, o.no_fly_margin);
@@ -656,7 +663,11 @@ void runPlan(const PlanOpts& o) {
 void registerPlanCommand(CLI::App& app) {
   auto o = std::make_shared<PlanOpts>();
   auto* cmd = app.add_subcommand("plan", "Plan the minimum-energy coverage flight of a survey area and write the mission");
-  cmd->add_option("AREA", o->area, "survey area (GeoJSON, KML, WKT, QGC .waypoints)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("AREA", o->area,
+                  "survey area: GeoJSON, KML, WKT, QGC .waypoints or .plan, Mission Planner .poly, or any polygon "
+                  "format GDAL reads (GeoPackage, Shapefile, GML, ...; see `wattswath area info --help`)")
+      ->required()
+      ->check(CLI::ExistingFile);
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--no-fly", o->no_fly, "no-fly zone file(s)")->check(CLI::ExistingFile);
   addAreaSelectOptions(cmd, o->layer, o->where);

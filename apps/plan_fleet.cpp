@@ -107,7 +107,8 @@ void printFleet(const nlohmann::json& j) {
               report::formatMinSec(j["one_vehicle_makespan_s"].get<double>()).c_str(), j["swap_time_s"].get<double>(),
               j["launch_interval_s"].get<double>());
   for (const auto& v : j["schedule"])
-    std::printf("  vehicle %d: %d sorties, first take-off %s, last landing %s min:s\n", v["vehicle"].get<int>(), v["sorties"].get<int>(),
+    std::printf("  vehicle %d: %d %s, first take-off %s, last landing %s min:s\n", v["vehicle"].get<int>(), v["sorties"].get<int>(),
+                v["sorties"].get<int>() == 1 ? "sortie" : "sorties",
                 report::formatMinSec(v["first_takeoff_s"].get<double>()).c_str(), report::formatMinSec(v["last_landing_s"].get<double>()).c_str());
   std::printf("  separation: at least %.1f m between airborne vehicles, checked on the flown trajectories; least found %s; %d start delay(s) of 5 s kept it\n",
               j["separation_m"].get<double>(), least.c_str(), j["delays"].get<int>());

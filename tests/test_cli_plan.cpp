@@ -142,6 +142,13 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   EXPECT_NE(html.find(", take-off (1), return and landing ("), std::string::npos);  // numbered as in mission.plan
 }
 
+// A camera without --overlap named its placeholder: "--overlap = -1.000000: expected a fraction".
+TEST(CliPlan, ACameraWithoutOverlapAsksForIt) {
+  expectError("plan " + sourcePath("data/areas/espiral_rectangle.geojson") + " --vehicle " + iris() +
+                  " --sensor-mm 13.2,8.8 --focal-mm 8.8 --altitude 20 --out " + outDir("no_overlap"),
+              "a camera needs --overlap (the side overlap of its photos");
+}
+
 TEST(CliPlan, TextOutputSaysWhenNoCameraCommandsAreWritten) {
   const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/espiral_rectangle.geojson") + " --vehicle " + iris() +
                      " --spacing 30 --out " + outDir("nocamera") + " --no-report 2>/dev/null");

@@ -150,7 +150,8 @@ std::optional<geometry::PolygonWithHoles> areaWithZones(const SurveyProblem& pr,
     });
     if (is_hole) continue;
     if (!inside) {
-      *why = "a no-fly zone crosses the area boundary (subtract it from the area first, as `plan` does)";
+      *why = "a no-fly zone (grown by the no-fly margin) crosses the area boundary: this search needs the zones "
+             "inside the area, as holes, and was not run (the one-angle sweeps go around the zone)";
       return std::nullopt;
     }
     Ring h = z;
