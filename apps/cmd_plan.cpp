@@ -699,7 +699,8 @@ void registerPlanCommand(CLI::App& app) {
   addSortieOptions(cmd, o->sorties);
   cmd->add_option("--overshoot", o->overshoot,
                   "let sweep lines run on this far beyond the area's boundary to turn there (QGC's turnaround distance) "
-                  "[m] (default 0: every flown point stays inside the area)")
+                  "[m] (default 0: every flown point from the first sweep to the last stays inside the area; the way out from "
+                  "home and back is not counted, as home may lie outside it)")
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--camera-max-speed", o->camera_max_speed, "largest ground speed on sweep legs the camera allows [m/s] (0: none)")
       ->check(CLI::Range(0.0, 200.0));

@@ -142,6 +142,21 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   EXPECT_NE(html.find(", take-off (1), return and landing ("), std::string::npos);  // numbered as in mission.plan
 }
 
+// Without --home a plan takes off at the area's first vertex; a clockwise ring (as a Shapefile
+// stores it) was reversed and then took off at its last vertex.
+TEST(CliPlan, AClockwiseAreaTakesOffAtItsFirstVertex) {
+  const std::string area = (std::filesystem::temp_directory_path() / "wattswath_test_plan_clockwise.geojson").string();
+  std::ofstream(area) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},"geometry":)"
+                      << R"({"type":"Polygon","coordinates":[[[10.4610,43.7150],[10.4610,43.7160],[10.4625,43.7160],)"
+                      << R"([10.4625,43.7150],[10.4610,43.7150]]]}}]})";
+  const auto out = outDir("clockwise");
+  planJson(area, out, "--spacing 20");
+  const auto home = nlohmann::json::parse(slurp(out + "/mission.plan")).at("mission").at("plannedHomePosition");
+  EXPECT_NEAR(home.at(0).get<double>(), 43.7150, 1e-7);
+  EXPECT_NEAR(home.at(1).get<double>(), 10.4610, 1e-7);
+  std::remove(area.c_str());
+}
+
 // A camera without --overlap named its placeholder: "--overlap = -1.000000: expected a fraction".
 TEST(CliPlan, ACameraWithoutOverlapAsksForIt) {
   expectError("plan " + sourcePath("data/areas/espiral_rectangle.geojson") + " --vehicle " + iris() +

@@ -189,10 +189,13 @@ void validateRing(LabeledRing& r, bool wantCcw, const std::string& source, const
                           " m^2), starting at " + k.labels.front());
   }
   if ((a > 0.0) != wantCcw) {
+    // Reversed, and rotated so that the file's first vertex stays first (plan takes off there by default).
     std::reverse(k.pts.begin(), k.pts.end());
     std::reverse(k.labels.begin(), k.labels.end());
+    std::rotate(k.pts.begin(), k.pts.end() - 1, k.pts.end());
+    std::rotate(k.labels.begin(), k.labels.end() - 1, k.labels.end());
     notes.push_back(at + ": reversed the vertex order to " + (wantCcw ? "counter-clockwise" : "clockwise") +
-                    (wantCcw ? " (outer boundaries run CCW)" : " (holes run CW)"));
+                    (wantCcw ? " (outer boundaries run CCW)" : " (holes run CW)") + ", " + k.labels.front() + " still first");
   }
   r = std::move(k);
 }
