@@ -286,6 +286,10 @@ TEST(CliPlan, ClearErrors) {
   expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --spacing 15 --out " +
                   outDir("errors3") + " --home 43.7159,10.461794",
               "within the no-fly margin");
+  // Home well inside that zone is said to be inside it ("0.00 m from no-fly zone 0" before).
+  expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --spacing 15 --out " +
+                  outDir("errors4") + " --home 43.71585,10.4619",
+              "home is inside no-fly zone 0");
   expectError("plan " + sourcePath("data/vehicles/iris.json") + " --vehicle " + iris() + " --spacing 10 --out " +
                   outDir("errors2"),
               "iris.json");

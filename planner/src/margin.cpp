@@ -37,11 +37,15 @@ void checkHome(const geo::Point& home, const std::vector<geo::Ring>& zones, doub
   at.kind = geo::PrimitiveKind::TurnInPlace;
   at.start = at.end = home;
   for (size_t z = 0; z < zones.size(); ++z) {
-    const double d = geo::insideRing(zones[z], home) ? 0.0 : geo::distanceToRing(at, zones[z]);
+    const double edge = geo::distanceToRing(at, zones[z]);
+    if (geo::insideRing(zones[z], home) && edge > 0.01)
+      throw std::invalid_argument("home is inside no-fly zone " + std::to_string(z) + " (counted from 0 in the order the "
+                                  "zones were given), " + metres(edge) + " m from its edge: move home (--home)");
+    const double d = geo::insideRing(zones[z], home) ? 0.0 : edge;
     if (d < margin)
       throw std::invalid_argument("home is " + metres(d) + " m from no-fly zone " + std::to_string(z) +
-                                  ", within the no-fly margin of " + metres(margin) +
-                                  " m: move home (--home) or lower --no-fly-margin");
+                                  " (counted from 0 in the order the zones were given), within the no-fly margin of " +
+                                  metres(margin) + " m: move home (--home) or lower --no-fly-margin");
   }
 }
 

@@ -34,8 +34,8 @@ std::string slowLegsNote(const std::vector<int>& legs, double slowest) {
   return "mission: " + std::to_string(legs.size()) + " leg(s) planned slower than " + fixed(kMinCommandedSpeed, 1) +
          " m/s (leg " + names + "; slowest " + fixed(slowest, 2) + " m/s) are commanded at " +
          fixed(kMinCommandedSpeed, 1) +
-         " m/s: ArduCopter ignores DO_CHANGE_SPEED below 1 m/s (3.x) or 0.2 m/s (4.x), so the speed flown "
-         "there differs from the speed scored";
+         " m/s, the least speed the written missions command whatever the autopilot (ArduCopter ignores "
+         "DO_CHANGE_SPEED below 1 m/s in 3.x, 0.2 m/s in 4.x), so the speed flown there differs from the speed scored";
 }
 
 /// True when rings `a` and `b` have the same vertices within 1 mm (in any order).
