@@ -513,6 +513,10 @@ struct PlanChecks {
   geo::ContainmentReport inside;  // the path outside the area and in no-fly zones
 };
 
+/// [s] Photos closer together in time than this get a note asking to check the camera (many survey
+/// cameras take one every 1-2 s).
+constexpr double kCheckTriggerIntervalS = 1.5;
+
 // [%] The share of the area the photos cover: the camera's footprint along the legs it is on along.
 double photoCoveragePct(const pl::SurveyProblem& flown_pr, const pl::PlanResult& r, const pl::PlanMission& pm) {
   geo::CoveragePath photographed;
@@ -533,6 +537,17 @@ PlanChecks checkPlan(const PlanOpts& o, const PlanSetup& s, const pl::SurveyProb
     notes.push_back("camera: the photos cover " + fixedText(c.photo_pct, 1) +
                     " % of the area, less than the plan's coverage: the camera is off along turns (a spiral's corner "
                     "arcs too), whose footprint the plan's coverage counts");
+  if (s.photos && o.trigger_interval_s <= 0.0) {
+    // A camera takes a photo at most so often; without --trigger-interval the sweeps are not capped for it.
+    double fastest = 0.0;
+    for (int i : pm.camera_legs) fastest = std::max(fastest, r.plan.flown.speeds.cruise[static_cast<size_t>(i)]);
+    const double every = fastest > 0.0 ? s.photos->trigger_distance_m / fastest : 0.0;
+    if (every > 0.0 && every < kCheckTriggerIntervalS)
+      notes.push_back("camera: the sweeps are flown at up to " + fixedText(fastest, 1) + " m/s with a photo every " +
+                      fixedText(s.photos->trigger_distance_m, 2) + " m, one every " + fixedText(every, 2) +
+                      " s: check that the camera triggers that fast, or give --trigger-interval S (its shortest interval) "
+                      "to cap the sweep speed");
+  }
   c.inside = pl::planContainment(pr, r.plan.flown.path);
   if (c.inside.total() > 0.0 && o.overshoot <= 0.0)  // the tests hold this at 0; say so if it ever is not
     notes.push_back("the path runs " + fixedText(c.inside.outside_m, 2) + " m outside the area and " +
