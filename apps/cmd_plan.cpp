@@ -670,7 +670,8 @@ void runPlan(const PlanOpts& o) {
   printFlight(flight);
   if (!sorties.is_null()) printSorties(sorties);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
-  std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv\n";
+  std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv"
+            << (o.gpkg ? ", plan.gpkg" : "") << (o.no_report ? std::string() : ", " + reportPath(o)) << "\n";
 }
 
 }  // namespace
