@@ -484,17 +484,8 @@ void writePlanReport(const PlanOpts& o, const PlanSetup& s, const pl::PlanResult
                      const energy::EnergyModel& model, const PlanFlight& flight, const std::string& plan_text,
                      const std::optional<SortieOutcome>& split) {
   const auto& pm = flight.mission;
-  auto data = planReportData(r, s.problem, vehicle, model, o.area);
+  auto data = planReportData(r, s.problem, vehicle, model, o.area, flight.prediction.battery);
   data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), *s.area.frame);
-  // The battery along the written mission as the autopilot model flies it (the verdict's flight).
-  if (data.battery && flight.prediction.battery.known) {
-    const auto& b = flight.prediction.battery;
-    data.battery->model += "; mission.plan flown take-off to landing, charge counted as the autopilot counts it";
-    data.battery->t = b.t_s;
-    data.battery->soc.clear();
-    for (const double u : b.usable_left) data.battery->soc.push_back(100.0 * u);
-    data.battery->voltage = b.voltage_v;
-  }
   const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
   data.facts.push_back({"flown by", flight.autopilot + ": " + fixedText(flight.prediction.total.energy_j / 1000.0, 1) + " kJ, " +
                                         fixedText(flight.prediction.total.time_s / 60.0, 1) +
@@ -618,17 +609,12 @@ void runPlan(const PlanOpts& o) {
   // The battery as the written mission flies, take-off to landing (the flight model's pieces), with
   // --reserve: the verdict, the chart and predict on mission.plan agree.
   if (vehicle.battery) {
-    std::vector<energy::PowerStep> profile;
-    for (std::size_t i = 0; i < flight.prediction.pieces.pieces.size(); ++i) {
-      const double d = flight.prediction.pieces.pieces[i].duration;
-      if (d > 0.0) profile.push_back({d, std::max(0.0, flight.prediction.piece_energy_j[i] / d)});
-    }
     pl::BatteryUseSettings bs;
     bs.reserve_fraction = o.sorties.reserve_pct / 100.0;
     // The search's own warning (its idealised plan) gives way to the flight's.
     if (r.battery && !r.battery->warning.empty())
       r.notes.erase(std::remove(r.notes.begin(), r.notes.end(), r.battery->warning), r.notes.end());
-    r.battery = pl::predictBatteryUse(profile, *vehicle.battery, bs);
+    r.battery = pl::predictBatteryUse(ms::powerProfile(flight.prediction), *vehicle.battery, bs);
     if (!r.battery->fits) r.notes.push_back(r.battery->warning);
   }
   if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);

@@ -99,29 +99,24 @@ void addCandidates(report::PlanReportData& d, const pl::PlanResult& r) {
                            r.best_spiral->flown.time});
 }
 
-/// The battery's state of charge and voltage along the plan's legs (Hwang et al.'s battery model).
-report::BatteryTrace batteryTrace(const pl::FlownPath& f, const energy::Battery& battery) {
-  std::vector<energy::PowerStep> steps;
-  for (size_t i = 0; i < f.leg_time.size(); ++i)
-    if (f.leg_time[i] > 0.0) steps.push_back({f.leg_time[i], f.leg_energy[i] / f.leg_time[i]});
-  const auto res = energy::simulateProfile(battery, steps);
+/// The battery's state of charge and voltage along the written mission's predicted flight.
+report::BatteryTrace batteryTrace(const mission::BatteryPrediction& b) {
   report::BatteryTrace bt;
-  bt.model = "Hwang et al. 2018 Eq. 9-15 (Peukert, linear voltage drop)";
-  for (const auto& smp : res.series) {
-    bt.t.push_back(smp.t);
-    bt.soc.push_back(res.depleted && &smp == &res.series.back() ? 0.0 : 100.0 * energy::countedUsableLeft(battery, smp));
-    bt.voltage.push_back(smp.voltage_v);
-  }
+  bt.model = "Hwang et al. 2018; mission.plan as flown";  // the charge counted as the autopilot counts it
+  bt.t = b.t_s;
+  for (const double u : b.usable_left) bt.soc.push_back(100.0 * u);
+  bt.voltage = b.voltage_v;
   return bt;
 }
 
 }  // namespace
 
 /// The plan report's data from the planner's result: the facts, map legs and breakdowns
-/// (addLegsAndBreakdowns), the plan and baselines as scored candidates, and the Hwang battery trace
-/// when the vehicle has a battery.
+/// (addLegsAndBreakdowns), the plan and baselines as scored candidates, and the battery along the
+/// written mission's flight when the vehicle has a battery.
 report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyProblem& pr, const energy::Vehicle& v,
-                                      const energy::EnergyModel& model, const std::string& area_file) {
+                                      const energy::EnergyModel& model, const std::string& area_file,
+                                      const mission::BatteryPrediction& battery) {
   report::PlanReportData d;
   d.title = "wattswath plan: " + fs::path(area_file).filename().string();
   const auto& f = r.plan.flown;
@@ -141,7 +136,7 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
   d.home = pr.home;
   addLegsAndBreakdowns(d, f, v, model);
   addCandidates(d, r);
-  if (v.battery) d.battery = batteryTrace(f, *v.battery);
+  if (battery.known) d.battery = batteryTrace(battery);
   return d;
 }
 

@@ -169,6 +169,7 @@ std::pair<int, int> parseBatteryConfiguration(const std::string& text) {
 }
 
 double countedUsableLeft(const Battery& b, const BatterySample& s) {
+  if (s.usable_left <= 0.0) return 0.0;  // the cut-off: nothing more can be drawn at that current
   const double c0 = b.capacityAh();
   const double drawn = (s.current_a > 0.0 ? peukertCapacityAh(b, s.current_a) : c0) - s.residual_ah;
   return std::min(1.0 - drawn / (b.pack.usable_fraction * c0), 1.0);

@@ -14,6 +14,10 @@ constexpr std::uint8_t kHead1 = 0xA3;
 constexpr std::uint8_t kHead2 = 0x95;
 constexpr int kFmtType = 128;
 constexpr int kFmtLength = 89;  // 3 header + B B n[4] N[16] Z[64]
+/// Appended to the warning when a file that ends inside its last record is read anyway.
+constexpr const char* kCutEndAccepted =
+    "; ArduPilot's logger leaves its last record cut when the file is closed while it writes: that part is "
+    "dropped, the rest is read";
 
 std::string hexByte(std::uint8_t b) {
   static const char* digits = "0123456789ABCDEF";
@@ -191,9 +195,7 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
       const std::string what = "file ends " + std::to_string(n - pos) +
                                " bytes after the last message, too short for a message header (truncated)";
       if (!lenient) fail(pos, what);
-      log.warnings_.push_back(log.at(pos) + what + " in its last message, as ArduPilot's logger leaves a log it is "
-                                                    "still writing when the file is closed: that record is dropped, the "
-                                                    "rest is read");
+      log.warnings_.push_back(log.at(pos) + what + kCutEndAccepted);
       log.cut_end_ = true;
       break;
     }
@@ -226,9 +228,7 @@ Log Log::parse(std::vector<std::uint8_t> bytes, const std::string& source, bool 
                                std::to_string(length) + " bytes but only " + std::to_string(n - pos) +
                                " remain: the file is truncated";
       if (!lenient) fail(pos, what);
-      log.warnings_.push_back(log.at(pos) + what + " in its last message, as ArduPilot's logger leaves a log it is "
-                                                    "still writing when the file is closed: that record is dropped, the "
-                                                    "rest is read");
+      log.warnings_.push_back(log.at(pos) + what + kCutEndAccepted);
       log.cut_end_ = true;
       break;
     }

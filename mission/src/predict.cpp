@@ -28,8 +28,7 @@ energy::EnduranceResult discharge(const energy::Battery& b, std::vector<energy::
 // Peukert residual, which drops as the motors start and rises back when they stop; the cut-off
 // check keeps the Peukert law. This is that charge at the end of the flight, 0 at the cut-off.
 double usableLeft(const energy::Battery& b, const energy::EnduranceResult& r) {
-  if (r.depleted || r.series.empty()) return 0.0;
-  return energy::countedUsableLeft(b, r.series.back());
+  return r.series.empty() ? 0.0 : energy::countedUsableLeft(b, r.series.back());
 }
 
 // One plain sentence on the reserve, with and without the margin for the prediction's error. A
@@ -60,21 +59,15 @@ std::string verdictText(const BatteryPrediction& out, double endurance_s) {
   return v.str();
 }
 
-void batteryAlong(const energy::Battery& b, const FlightPieces& fp, const std::vector<double>& e, double reserve,
-                  double margin, bool ends_in_air, BatteryPrediction& out) {
-  std::vector<energy::PowerStep> profile;
-  profile.reserve(fp.pieces.size());
-  for (std::size_t i = 0; i < fp.pieces.size(); ++i) {
-    const double d = fp.pieces[i].duration;
-    profile.push_back({d, d > 0.0 ? std::max(0.0, e[i] / d) : 0.0});
-  }
+void batteryAlong(const energy::Battery& b, const std::vector<energy::PowerStep>& profile, double reserve, double margin,
+                  bool ends_in_air, BatteryPrediction& out) {
   const energy::EnduranceResult r = discharge(b, profile, 1.0);
   out.known = true;
   out.ends_in_air = ends_in_air;
   out.reserve_fraction = reserve;
   for (const auto& smp : r.series) {
     out.t_s.push_back(smp.t);
-    out.usable_left.push_back(r.depleted && &smp == &r.series.back() ? 0.0 : energy::countedUsableLeft(b, smp));
+    out.usable_left.push_back(energy::countedUsableLeft(b, smp));
     out.voltage_v.push_back(smp.voltage_v);
   }
   out.depleted = r.depleted;
@@ -327,8 +320,18 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   p.breakdown.length = p.total.distance_m;
   for (const std::string& n : p.flight.notes) p.warnings.push_back(n);
   const bool ends_in_air = !p.flight.samples.empty() && p.flight.samples.back().airborne;
-  if (v.battery) batteryAlong(*v.battery, p.pieces, p.piece_energy_j, s.reserve_fraction, s.energy_margin, ends_in_air, p.battery);
+  if (v.battery) batteryAlong(*v.battery, powerProfile(p), s.reserve_fraction, s.energy_margin, ends_in_air, p.battery);
   return p;
+}
+
+std::vector<energy::PowerStep> powerProfile(const MissionPrediction& p) {
+  std::vector<energy::PowerStep> profile;
+  profile.reserve(p.pieces.pieces.size());
+  for (std::size_t i = 0; i < p.pieces.pieces.size(); ++i) {
+    const double d = p.pieces.pieces[i].duration;
+    profile.push_back({d, d > 0.0 ? std::max(0.0, p.piece_energy_j[i] / d) : 0.0});
+  }
+  return profile;
 }
 
 }  // namespace wattswath::mission

@@ -75,9 +75,10 @@ EnduranceResult simulateProfile(const Battery& b, const std::vector<PowerStep>& 
                                 const DischargeSettings& s = {});
 
 /// Usable charge left after sample `s` of a discharge of `b` as an autopilot counts it: the charge
-/// drawn so far against the usable capacity, 1 - drawn / (lambda C0) [-] (1 full, at most 1).
-/// `s.usable_left` instead reads the residual at the present current (Peukert): it drops as a draw
-/// starts and rises when it stops, which decides the cut-off but is not charge gained or lost.
+/// drawn so far against the usable capacity, 1 - drawn / (lambda C0) [-] (1 full, at most 1; 0 at
+/// the cut-off, the sample where `s.usable_left` reaches 0). `s.usable_left` instead reads the
+/// residual at the present current (Peukert): it drops as a draw starts and rises when it stops,
+/// which decides the cut-off but is not charge gained or lost.
 double countedUsableLeft(const Battery& b, const BatterySample& s);
 
 /// Usable energy of `b` when drawn at constant power `power_w` [W]: power times endurance [J].

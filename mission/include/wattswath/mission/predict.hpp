@@ -91,4 +91,8 @@ struct MissionPrediction {
 MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
                                  const AutopilotConfig& autopilot, const PredictSettings& s = {});
 
+/// The power drawn along a prediction, take-off to landing: one step per piece, its energy over its
+/// duration [W] (what the battery is discharged along).
+std::vector<energy::PowerStep> powerProfile(const MissionPrediction& p);
+
 }  // namespace wattswath::mission
