@@ -214,6 +214,22 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
   }
 }
 
+/// True when `l` declares line geometries (a plan's legs, a track), not areas.
+bool isLineLayer(OGRLayer& l) {
+  const OGRwkbGeometryType t = wkbFlatten(l.GetGeomType());
+  return t == wkbLineString || t == wkbMultiLineString || t == wkbCircularString || t == wkbCompoundCurve ||
+         t == wkbMultiCurve;
+}
+
+/// True when `ds` has more than one layer and one of them is not declared as lines (it may hold the area).
+bool hasAreaLayer(GDALDataset& ds) {
+  if (ds.GetLayerCount() < 2) return false;
+  for (auto* l : ds.GetLayers()) {
+    if (!isLineLayer(*l)) return true;
+  }
+  return false;
+}
+
 /// The NULL-terminated list of `names` (pointers into them).
 std::vector<const char*> cList(const std::vector<std::string>& names) {
   std::vector<const char*> l;
@@ -258,9 +274,15 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
     return out;
   }
   const bool gpx = std::string(ds->GetDriverName()) == "GPX";
+  const bool lines_skipped = !gpx && hasAreaLayer(*ds);
   for (auto* l : ds->GetLayers()) {
     const std::string n = l->GetName();
     if (gpx && (n == "track_points" || n == "route_points")) continue;  // the same vertices as tracks / routes
+    if (lines_skipped && isLineLayer(*l)) {
+      out.notes.push_back(source + ": layer \"" + n + "\" skipped: it holds lines, and the file has an area layer (--layer \"" +
+                          n + "\" reads its lines as closed rings)");
+      continue;
+    }
     readLayer(*l, source, sel, out, vertices);
   }
   return out;

@@ -116,6 +116,28 @@ TEST(AreaFormats, LayerAndWhereChooseFeatures) {
   fs::remove_all(d);
 }
 
+// A plan's GeoPackage (plan --gpkg) holds its legs as lines beside the area: read back without
+// --layer, the area is read and the line layer skipped with a note naming it (it failed on the lines).
+TEST(AreaFormats, AGeoPackageWithALineLayerBesideTheAreaReadsTheArea) {
+  const geo::SurveyArea ref = geo::readSurveyArea(kIris);
+  const fs::path d = tempDir("lines");
+  const fs::path gpkg = d / "plan.gpkg";
+  ogr2ogr("-f GPKG -nln legs -nlt MULTILINESTRING -where \"role = 'area'\"", gpkg, kIris);
+  ogr2ogr("-f GPKG -update -nln area", gpkg, kIris);
+  const geo::SurveyArea a = geo::readSurveyArea(gpkg.string());
+  expectSamePolygon(a, ref, 0.01);
+  std::string notes;
+  for (const auto& n : a.repairs) notes += n + "\n";
+  EXPECT_NE(notes.find("layer \"legs\" skipped: it holds lines"), std::string::npos) << notes;
+  geo::ReadOptions o;
+  o.layer = "legs";  // asked for by name, its lines are read as closed rings
+  const geo::SurveyArea legs = geo::readSurveyArea(gpkg.string(), o);
+  notes.clear();
+  for (const auto& n : legs.repairs) notes += n + "\n";
+  EXPECT_NE(notes.find("lines read as closed rings"), std::string::npos) << notes;
+  fs::remove_all(d);
+}
+
 TEST(AreaFormats, UtmGeoJsonIsReprojectedNotCalledSwapped) {
   const fs::path d = tempDir("utm");
   const fs::path utm = d / "utm.geojson";
