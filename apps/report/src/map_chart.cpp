@@ -2,7 +2,10 @@
 // arrow and a scale bar or metre axes, rendered to self-contained SVG with the SvgWriter.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "chart_common.hpp"
 #include "wattswath/report/charts.hpp"
@@ -28,7 +31,34 @@ bool needsColourBar(const MapView& m) {
   return std::any_of(m.path.begin(), m.path.end(), [](const MapPolyline& l) { return l.colour.empty(); });
 }
 
+/// A label's box on the map [px].
+struct LabelBox {
+  double x0, y0, x1, y1;
+  bool overlaps(const LabelBox& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+/// Where the label of a marker of radius `r` at (x, y) goes: above right, below right, above left or
+/// below left of it, the first that overlaps no label in `placed` (added to it); none when all do
+/// (the marker's tooltip still names it).
+std::optional<LabelBox> placeLabel(double x, double y, double r, const std::string& label, double font_px,
+                                   std::vector<LabelBox>& placed) {
+  const double w = 0.62 * font_px * static_cast<double>(label.size()), h = font_px;
+  const double gap = r + 3;
+  const LabelBox candidates[] = {{x + gap, y - r - 1 - h, x + gap + w, y - r - 1},
+                                 {x + gap, y + r + 1, x + gap + w, y + r + 1 + h},
+                                 {x - gap - w, y - r - 1 - h, x - gap, y - r - 1},
+                                 {x - gap - w, y + r + 1, x - gap, y + r + 1 + h}};
+  for (const auto& c : candidates) {
+    if (std::none_of(placed.begin(), placed.end(), [&](const LabelBox& p) { return p.overlaps(c); })) {
+      placed.push_back(c);
+      return c;
+    }
+  }
+  return std::nullopt;
+}
+
 void drawMarkers(SvgWriter& svg, const MapView& m, const MapFrame& f) {
+  std::vector<LabelBox> placed;
   for (const auto& k : m.markers) {
     const double x = f.X(k.position.x()), y = f.Y(k.position.y()), r = k.size;
     svg.open("g", {{"class", "marker"}});
@@ -48,14 +78,16 @@ void drawMarkers(SvgWriter& svg, const MapView& m, const MapFrame& f) {
       a.insert(a.end(), style.begin(), style.end());
       svg.leaf("circle", a);
     }
-    const bool small = r < 5;
-    svg.text(x + r + 3, y - r - 1, k.label,
-             {{"fill", k.colour},
-              {"font-weight", "bold"},
-              {"font-size", small ? "11" : "12"},
-              {"stroke", "#ffffff"},
-              {"stroke-width", "3"},
-              {"paint-order", "stroke"}});
+    const double font_px = r < 5 ? 11 : 12;
+    if (const auto box = placeLabel(x, y, r, k.label, font_px, placed)) {
+      svg.text(box->x0, box->y1, k.label,
+               {{"fill", k.colour},
+                {"font-weight", "bold"},
+                {"font-size", r < 5 ? "11" : "12"},
+                {"stroke", "#ffffff"},
+                {"stroke-width", "3"},
+                {"paint-order", "stroke"}});
+    }
     svg.close();
   }
 }

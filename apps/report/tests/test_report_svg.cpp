@@ -2,6 +2,9 @@
 #include <cmath>
 #include <limits>
 #include <regex>
+#include <set>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -252,6 +255,38 @@ TEST(ReportSvg, MapByCategoryWithLegendAndMetreAxes) {
   EXPECT_NE(svg.find("r=\"3\""), std::string::npos);          // the small waypoint dot
   m.path[1].colour.clear();                                   // one piece by value: the colour bar needs its unit
   EXPECT_THROW(wr::renderSvg(m), std::invalid_argument);
+}
+
+// Waypoints close together on a map (a stop and the next leg's start, home and the last item) have
+// their numbers placed around the dot where they overlap no other label; a fifth at the same place
+// keeps its tooltip and leaves its label out rather than printing it over the others.
+TEST(ReportSvg, MapLabelsAreMovedRoundTheirMarkerNotDrawnOverEachOther) {
+  wr::MapView m;
+  m.axes = true;
+  m.path = {{{{0, 0}, {100, 0}}, 0.0, "mission"}};
+  m.path[0].colour = "#0072B2";
+  for (const char* label : {"11", "12", "13", "14", "15"}) {
+    wr::MapMarker wp{{50, 0}, label, wr::MapMarker::Shape::Circle, "#222222"};
+    wp.size = 3.0;
+    m.markers.push_back(wp);
+  }
+  const std::string svg = wr::renderSvg(m);
+  EXPECT_EQ(xmlProblem(svg), "");
+  std::set<std::pair<std::string, std::string>> corners;  // (x, y) of each label drawn
+  for (const char* label : {"11", "12", "13", "14"}) {
+    const std::size_t end = svg.find(std::string(">") + label + "</text>");
+    ASSERT_NE(end, std::string::npos) << label;
+    const std::size_t start = svg.rfind("<text", end);
+    const std::string tag = svg.substr(start, end - start);
+    const auto attr = [&](const std::string& name) {
+      const std::size_t a = tag.find(" " + name + "=\"") + name.size() + 3;
+      return tag.substr(a, tag.find('"', a) - a);
+    };
+    corners.insert({attr("x"), attr("y")});
+  }
+  EXPECT_EQ(corners.size(), 4u);                                // four places round the dot
+  EXPECT_EQ(svg.find(">15</text>"), std::string::npos);         // no fifth place: left out
+  EXPECT_NE(svg.find("<title>15 ("), std::string::npos);        // its tooltip stays
 }
 
 TEST(ReportSvg, EventTicksSitOutsideThePlotAndLabelsDoNotOverlap) {
