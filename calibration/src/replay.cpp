@@ -121,7 +121,7 @@ Phase airbornePhase(const MotionState& m, const SegmentSettings& set) {
 // Fills the motion states and phases of `P`. On the ground: near the lowest height, at rest and
 // drawing well under the median power (motors idle).
 void classifySamples(const std::vector<LogSample>& S, const std::vector<double>& t, const SegmentSettings& set,
-                     PreparedLog& P) {
+                     const std::vector<logs::TimeWindow>& air, PreparedLog& P) {
   const int n = static_cast<int>(S.size());
   const std::vector<double> heading = headings(S, set.stop_speed);
   const std::vector<double> uw = unwrap(heading);
@@ -136,7 +136,12 @@ void classifySamples(const std::vector<LogSample>& S, const std::vector<double>&
     m.acceleration = S[i].acceleration;
     m.heading = heading[i];
     m.yaw_rate = logs::detail::localSlope(n, i, half, [&](int j) { return t[j]; }, [&](int j) { return uw[j]; });
-    m.airborne = !(S[i].position.z() - zmin < set.ground_height && S[i].velocity.head<2>().norm() < set.stop_speed &&
+    // Outside every airborne window the log's reader found (landed flags, current), the vehicle is on
+    // the ground whatever its altitude estimate says (an EKF's z drifts on the ground).
+    const bool in_air_window =
+        air.empty() || std::any_of(air.begin(), air.end(), [&](const logs::TimeWindow& w) { return S[i].t >= w.begin && S[i].t <= w.end; });
+    m.airborne = in_air_window &&
+                 !(S[i].position.z() - zmin < set.ground_height && S[i].velocity.head<2>().norm() < set.stop_speed &&
                    std::abs(S[i].velocity.z()) < set.vertical_speed && P.measured[i] < set.ground_power_fraction * pmed);
     P.phase[i] = m.airborne ? airbornePhase(m, set) : Phase::Ground;
   }
@@ -225,7 +230,7 @@ PreparedLog prepareLog(const FlightLog& log, const SegmentSettings& set, const s
   if (n < 2) throw std::invalid_argument(log.source + ": a log needs at least 2 samples to replay");
   PreparedLog P;
   const std::vector<double> t = copySamples(log, P);
-  classifySamples(log.samples, t, set, P);
+  classifySamples(log.samples, t, set, log.airborne, P);
   const std::vector<int> starts =
       waypoints.empty() ? legStartsFromSpeed(log.samples, set) : legStartsAtWaypoints(P.position, waypoints);
   P.legs = legsFromBoundaries(starts, P.position, P.states, t, set.stop_speed);
