@@ -1,10 +1,16 @@
 // `wattswath endurance` (Hwang et al. forward flight + battery) and `wattswath models` (every
 // power model side by side).
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
+#include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "wattswath/energy/battery.hpp"
@@ -57,6 +63,55 @@ nlohmann::json flightJson(const en::ForwardFlightState& s, const en::EnduranceRe
           {"energy_wh", r.energy_j / 3600.0}};
 }
 
+// The speed of longest endurance between the neighbours of the best of `speeds` (`best_u`), by golden
+// section, with its endurance [min]: the best of a coarse list is a grid point, not the optimum.
+std::pair<double, double> refineBest(const en::ForwardFlightParameters& params, const en::Battery& battery, double dt,
+                                     const std::vector<double>& speeds, double best_u) {
+  const auto minutes = [&](double u) {
+    en::DischargeSettings ds;
+    ds.dt_s = dt;
+    ds.keep_series = false;
+    return en::endurance(battery, en::forwardFlight(params, u).electrical_power_w, ds).endurance_s / 60.0;
+  };
+  std::vector<double> sorted = speeds;
+  std::sort(sorted.begin(), sorted.end());
+  const auto at = std::find(sorted.begin(), sorted.end(), best_u);
+  double lo = at == sorted.begin() ? *at : *(at - 1), hi = at + 1 == sorted.end() ? *at : *(at + 1);
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int k = 0; k < 60 && hi - lo > 1e-4; ++k) {
+    const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+    if (minutes(a) >= minutes(b)) {
+      hi = b;  // the longer endurance is left of b
+    } else {
+      lo = a;
+    }
+  }
+  const double u = 0.5 * (lo + hi), t = minutes(u);
+  return t > minutes(best_u) ? std::make_pair(u, t) : std::make_pair(best_u, minutes(best_u));
+}
+
+// What the endurance table cannot show: where the efficiency comes from, a best speed at the end of
+// the range given (the best may lie beyond it), speeds above the vehicle's limit.
+std::vector<std::string> enduranceNotes(const en::ForwardFlightParameters& params, const en::Vehicle& v,
+                                        const std::vector<double>& speeds, double best_u) {
+  std::vector<std::string> notes;
+  if (!params.efficiency_note.empty()) notes.push_back(params.efficiency_note);
+  const double lo = *std::min_element(speeds.begin(), speeds.end()), hi = *std::max_element(speeds.begin(), speeds.end());
+  if (speeds.size() > 1 && ((best_u == lo && lo > 0.0) || best_u == hi)) {
+    std::ostringstream os;
+    os << "the longest endurance is at the " << (best_u == lo ? "lowest" : "highest") << " speed given (" << best_u
+       << " m/s): the best speed may lie beyond the range; widen --speed";
+    notes.push_back(os.str());
+  }
+  const double fastest = *std::max_element(speeds.begin(), speeds.end());
+  if (fastest > v.max_speed_mps) {
+    std::ostringstream os;
+    os << "speeds above the vehicle's max_speed_mps (" << v.max_speed_mps << " m/s) are computed but cannot be flown";
+    notes.push_back(os.str());
+  }
+  return notes;
+}
+
 void registerEndurance(CLI::App& app) {
   struct Opts {
     std::string vehicle, speed = "0", battery;
@@ -98,15 +153,20 @@ void registerEndurance(CLI::App& app) {
       curve.push_back(flightJson(s, r));
       if (r.endurance_s / 60.0 > best_t) best_t = r.endurance_s / 60.0, best_u = u;
     }
+    if (speeds.size() > 1) std::tie(best_u, best_t) = refineBest(params, *v.battery, o->dt, speeds, best_u);
     nlohmann::json out = {{"vehicle", v.name}, {"mass_kg", params.mass_kg}, {"payload_kg", o->payload},
                           {"battery", std::to_string(v.battery->series) + "S" + std::to_string(v.battery->parallel) + "P"}};
+    const std::vector<std::string> notes = enduranceNotes(params, v, speeds, best_u);
     if (speeds.size() == 1) {
       for (auto it = curve[0].begin(); it != curve[0].end(); ++it) out[it.key()] = it.value();
     } else {
       out["curve"] = curve;
       out["max_endurance_speed_mps"] = best_u;
       out["max_endurance_min"] = best_t;
+      out["max_endurance_at_range_end"] = best_u == *std::min_element(speeds.begin(), speeds.end()) ||
+                                          best_u == *std::max_element(speeds.begin(), speeds.end());
     }
+    out["notes"] = notes;
     if (o->json) {
       printJson(out);
       return;
@@ -124,6 +184,7 @@ void registerEndurance(CLI::App& app) {
                 << "\n";
     }
     if (speeds.size() > 1) std::cout << "max endurance " << best_t << " min at " << best_u << " m/s\n";
+    for (const auto& n : notes) std::cout << "note: " << n << "\n";
   });
 }
 
@@ -135,7 +196,7 @@ struct ModelColumn {
 std::vector<ModelColumn> peerModels(const en::Vehicle& v) {
   std::vector<ModelColumn> out;
   out.push_back({"marins", "this vehicle (Marins et al. 2018 closed form)", en::marinsModel(v)});
-  out.push_back({"hwang", "this vehicle (Hwang et al. 2018 Eq. 1-8; efficiency from extensions.hwang or eta_mot*eta_prop)",
+  out.push_back({"hwang", "this vehicle (Hwang et al. 2018 Eq. 1-8; efficiency from extensions.hwang, else eta_mot*eta_prop / 2: Marins Eq. 4 is twice ideal momentum theory)",
                  en::hwangModel(v)});
   en::LiuParameters liu;
   liu.mass_kg = v.mass_kg;

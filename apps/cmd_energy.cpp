@@ -11,6 +11,7 @@
 #include "cli.hpp"
 #include "report_data.hpp"
 #include "wattswath/report/svg.hpp"
+#include "wattswath/energy/forward_flight.hpp"
 #include "wattswath/energy/marins.hpp"
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/optimal_speed.hpp"
@@ -80,17 +81,30 @@ void registerHover(CLI::App& app) {
   cmd->callback([o]() {
     const auto v = en::loadVehicle(o->vehicle);
     const double p0 = en::marinsRotorPowerW(v), ph = en::marinsHoverPowerW(v), pi = en::idealHoverPowerW(v);
+    // A file whose efficiency was fitted for ideal momentum theory (extensions.hwang) hovers at
+    // Hwang's power; Eq. 4, twice ideal, doubles it with that efficiency.
+    const auto hwang = en::forwardFlightParameters(v);
+    const bool hwang_efficiency = hwang.efficiency_note.empty();
+    const double p_hwang = en::forwardFlight(hwang, 0.0).electrical_power_w;
+    std::string note;
+    if (hwang_efficiency && std::abs(p_hwang - ph) > 0.01 * ph) {
+      note = "this vehicle's efficiency was set for ideal momentum theory (extensions.hwang): with it Hwang's model "
+             "hovers at " + report::formatNumber(p_hwang, 1) + " W, and Marins Eq. 4, twice ideal, gives P_hov twice that";
+    }
     if (o->json) {
       printJson({{"vehicle", v.name},
                  {"p0_w", p0},
                  {"p_hover_w", ph},
                  {"p_ideal_momentum_w", pi},
-                 {"total_efficiency", v.totalEfficiency()}});
+                 {"p_hover_hwang_w", p_hwang},
+                 {"total_efficiency", v.totalEfficiency()},
+                 {"note", note.empty() ? nlohmann::json(nullptr) : nlohmann::json(note)}});
     } else {
       std::cout << "vehicle: " << v.name << "\n"
                 << "P0 (rotor power, Marins Eq. 4):        " << p0 << " W\n"
                 << "P_hov (electrical, Eq. 5, eta " << v.totalEfficiency() << "): " << ph << " W\n"
                 << "ideal momentum theory T^1.5/sqrt(2 rho A): " << pi << " W (Eq. 4 is twice this)\n";
+      if (!note.empty()) std::cout << "note: " << note << "\n";
     }
   });
 }

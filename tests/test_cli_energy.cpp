@@ -104,3 +104,37 @@ TEST(CliEnergy, ReproduceOutDevNullIsRefusedAndDevNullSurvives) {
   ASSERT_EQ(::stat("/dev/null", &st), 0);
   EXPECT_TRUE(S_ISCHR(st.st_mode));
 }
+
+// Hwang's model with a Marins vehicle file (no extensions.hwang) hovers at the file's own P_hov: its
+// eta_mot x eta_prop goes with Marins Eq. 4, twice ideal momentum theory, so endurance halves it
+// (it promised the IRIS 25.9 min at 107.5 W, half of `hover`'s 215.1 W and of the 225 W measured).
+TEST(CliEnergy, EnduranceOfAMarinsVehicleHoversAtItsHoverPowerAndSaysWhy) {
+  const auto hover = runJson("hover");
+  const auto e = runJson("endurance --speed 0");
+  EXPECT_NEAR(e["power_w"].get<double>(), hover["p_hover_w"].get<double>(), 0.01 * hover["p_hover_w"].get<double>());
+  ASSERT_EQ(e["notes"].size(), 1u);
+  EXPECT_NE(e["notes"][0].get<std::string>().find("twice ideal momentum theory"), std::string::npos) << e["notes"];
+  EXPECT_TRUE(hover["note"].is_null());
+  // A file fitted for Hwang's model says that Eq. 4 doubles its hover power.
+  const auto r = run(cliBinary() + " hover --vehicle " + sourcePath("data/vehicles/hwang-hexacopter.json") + " --json");
+  const auto hex = nlohmann::json::parse(r.output);
+  EXPECT_NEAR(hex["p_hover_w"].get<double>(), 2.0 * hex["p_hover_hwang_w"].get<double>(), 1.0);
+  EXPECT_FALSE(hex["note"].is_null());
+}
+
+// The best speed of a coarse --speed range is refined between its neighbours, not a grid point (the
+// hexacopter's 0:100:10 said 0 m/s, where 5 m/s flies longer), and speeds above max_speed_mps are said.
+TEST(CliEnergy, EnduranceRefinesTheBestSpeedAndSaysWhatCannotBeFlown) {
+  const std::string hex = " --vehicle " + sourcePath("data/vehicles/hwang-hexacopter.json") + " --json";
+  const auto coarse = nlohmann::json::parse(run(cliBinary() + " endurance --speed 0:100:10" + hex).output);
+  const auto at5 = nlohmann::json::parse(run(cliBinary() + " endurance --speed 5" + hex).output);
+  EXPECT_GT(coarse["max_endurance_speed_mps"].get<double>(), 1.0);
+  EXPECT_LT(coarse["max_endurance_speed_mps"].get<double>(), 10.0);
+  EXPECT_GE(coarse["max_endurance_min"].get<double>(), at5["endurance_min"].get<double>());
+  EXPECT_FALSE(coarse["max_endurance_at_range_end"].get<bool>());
+  std::string notes = coarse["notes"].dump();
+  EXPECT_NE(notes.find("above the vehicle's max_speed_mps (20 m/s)"), std::string::npos) << notes;
+  const auto edge = nlohmann::json::parse(run(cliBinary() + " endurance --speed 0:3:1" + hex).output);
+  EXPECT_TRUE(edge["max_endurance_at_range_end"].get<bool>());
+  EXPECT_NE(edge["notes"].dump().find("highest speed given"), std::string::npos) << edge["notes"];
+}

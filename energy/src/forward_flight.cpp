@@ -205,7 +205,15 @@ ForwardFlightParameters forwardFlightParameters(const Vehicle& v, double payload
       throw std::invalid_argument(std::string("extensions.hwang.") + e.what());
     }
   } else {
-    p.efficiency = EfficiencyCurve::constant(v.totalEfficiency());
+    // Marins Eq. 4, for which the vehicle file's eta_mot x eta_prop is chosen, is exactly twice ideal
+    // momentum theory (docs/reproduction.md): read against it the same vehicle has half that
+    // efficiency, and hovers at the power its file gives (the IRIS: 215 W, 225 W measured).
+    p.efficiency = EfficiencyCurve::constant(0.5 * v.totalEfficiency());
+    p.efficiency_note = "efficiency " + fmt(0.5 * v.totalEfficiency()) +
+                        ": the vehicle file has no extensions.hwang efficiency, and its eta_mot x eta_prop (" +
+                        fmt(v.totalEfficiency()) +
+                        ") goes with Marins Eq. 4, which is twice ideal momentum theory, so it is halved here and the "
+                        "hover power is the file's Marins hover power (docs/reproduction.md)";
   }
   return p;
 }

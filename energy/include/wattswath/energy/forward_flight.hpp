@@ -56,6 +56,9 @@ struct ForwardFlightParameters {
   double disk_area_m2 = 0.0;      ///< [m^2] total disk area A = N pi r^2 (Eq. 7)
   double drag_area_m2 = 0.0;      ///< [m^2] S * C_d (Eq. 3)
   EfficiencyCurve efficiency = EfficiencyCurve::constant(1.0);  ///< eta(T) (Eq. 8)
+  /// Where `efficiency` comes from, in words, when it is not the vehicle file's extensions.hwang
+  /// (empty when it is).
+  std::string efficiency_note;
 
   /// Weight W [N].
   double weightN() const { return mass_kg * gravity_mps2; }
