@@ -322,6 +322,18 @@ void checkWritable(const std::string& path, bool force, const std::vector<std::s
   const fs::path target(path);
   if (path.empty()) throw std::runtime_error("output path is empty, expected a file name");
   if (fs::is_directory(target, ec)) throw std::runtime_error(path + ": is a folder, expected an output file name");
+  // The same name twice in one run (an input, or another output not written yet): one would be lost.
+  const fs::path canonical = fs::weakly_canonical(target, ec);
+  for (const auto& in : inputs) {
+    std::error_code ec2;
+    if (!in.empty() && !ec && fs::weakly_canonical(fs::path(in), ec2) == canonical && !ec2) {
+      if (fs::exists(target, ec2)) {
+        throw std::runtime_error(path + ": is also an input file; refusing to overwrite an input, choose another output");
+      }
+      throw std::runtime_error(path + ": is named twice in this run (also as " + in +
+                               ", another output); one would overwrite the other, choose another output");
+    }
+  }
   if (!fs::exists(target, ec)) return;
   if (!fs::is_regular_file(target, ec)) throw std::runtime_error(path + ": exists and is not a regular file");
   for (const auto& in : inputs) {

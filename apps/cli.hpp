@@ -108,7 +108,8 @@ CLI::Option* addForceFlag(CLI::App* cmd, bool& force);
 
 /// Checks, before any work is done, that `path` may be written: throws std::runtime_error naming
 /// the path when it is a folder, when it already exists and `force` is false ("use --force"), or
-/// when it is one of `inputs` (an input is never overwritten, even with --force).
+/// when it is one of `inputs` (an input is never overwritten, even with --force; an output of the
+/// same run not written yet, passed among `inputs`, is refused as named twice).
 void checkWritable(const std::string& path, bool force, const std::vector<std::string>& inputs = {});
 
 // Register functions: one per apps/cmd_*.cpp. main.cpp calls each.

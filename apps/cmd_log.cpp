@@ -4,6 +4,8 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
@@ -26,6 +28,14 @@ double metaNumber(const logs::FlightLog& log, const std::string& key) {
   }
 }
 
+// The rate the reader recorded under `key` [Hz], else the samples' own mean rate (a CSV has one clock).
+double rateOf(const logs::FlightLog& log, const std::string& key) {
+  const double r = metaNumber(log, key);
+  if (std::isfinite(r)) return r;
+  return log.samples.size() > 1 && log.duration() > 0.0 ? static_cast<double>(log.samples.size() - 1) / log.duration()
+                                                        : std::nan("");
+}
+
 struct Range {
   double min = INFINITY, max = -INFINITY;
   std::vector<double> air;  // values inside airborne windows
@@ -45,6 +55,23 @@ nlohmann::json rangeJson(Range r) {
     j["median_airborne"] = nullptr;
   }
   return j;
+}
+
+// Values no multirotor battery gives, with the unit mistake that usually makes them (the readers
+// take volts and amperes; a CSV in mV or mA reads 1000 times too large).
+std::vector<std::string> plausibility(const nlohmann::json& j) {
+  std::vector<std::string> out;
+  const auto& i = j["current_a"]["median_airborne"];
+  if (i.is_number() && i.get<double>() > 500.0) {
+    out.push_back("the median current in the air, " + fixedText(i.get<double>(), 0) +
+                  " A, is more than a multirotor battery gives (a few to a few hundred A): is current_a logged in mA?");
+  }
+  const auto& v = j["voltage_v"]["max"];
+  if (v.is_number() && v.get<double>() > 100.0) {
+    out.push_back("the voltage reaches " + fixedText(v.get<double>(), 0) +
+                  " V, more than a multirotor battery (up to about 60 V for 14S): is voltage_v logged in mV?");
+  }
+  return out;
 }
 
 nlohmann::json infoJson(const logs::FlightLog& log) {
@@ -84,7 +111,7 @@ nlohmann::json infoJson(const logs::FlightLog& log) {
       {"airborne_source", meta(log, "airborne_source")},
       {"battery_source", meta(log, "battery_source")},
       {"position_source", meta(log, "position_source")},
-      {"sample_rates_hz", {{"battery", metaNumber(log, "battery_rate_hz")}, {"position", metaNumber(log, "position_rate_hz")}}},
+      {"sample_rates_hz", {{"battery", rateOf(log, "battery_rate_hz")}, {"position", rateOf(log, "position_rate_hz")}}},
       {"voltage_v", rangeJson(v)},
       {"current_a", rangeJson(i)},
       {"power_w", rangeJson(p)},
@@ -92,7 +119,52 @@ nlohmann::json infoJson(const logs::FlightLog& log) {
       {"events", log.events.size()},
       {"warnings", meta(log, "warnings")},
   };
+  j["plausibility"] = plausibility(j);
   return j;
+}
+
+// `x` [unit] with `decimals`, or "not logged" when null.
+std::string shown(const nlohmann::json& x, int decimals, const std::string& unit) {
+  if (!x.is_number() || !std::isfinite(x.get<double>())) return "not logged";
+  return fixedText(x.get<double>(), decimals) + (unit.empty() ? "" : " " + unit);
+}
+
+// One line "name: min to max unit[, median in the air m unit]", or "name: not logged".
+std::string rangeText(const nlohmann::json& r, int decimals, const std::string& unit) {
+  if (!r["min"].is_number()) return "not logged";
+  std::string t = shown(r["min"], decimals, "") + " to " + shown(r["max"], decimals, unit);
+  if (r["median_airborne"].is_number()) t += ", median in the air " + shown(r["median_airborne"], decimals, unit);
+  return t;
+}
+
+// A field the log may not have (a CSV names no firmware, no sources): its text or "not in the log".
+std::string orNotInLog(const std::string& s) { return s.empty() ? "not in the log" : s; }
+
+void printInfo(const logs::FlightLog& log, const nlohmann::json& j) {
+  const auto source = [&](const std::string& name, const std::string& rate) {
+    const std::string src = j[name].get<std::string>();
+    const std::string hz = shown(j["sample_rates_hz"][rate], 2, "Hz");
+    return (src.empty() ? std::string("the log's own samples") : src) + ", " + hz;
+  };
+  std::cout << "file:      " << log.source << " (" << log.format << ")\n"
+            << "firmware:  " << orNotInLog(j["firmware"].get<std::string>()) << "\n"
+            << "vehicle:   " << orNotInLog(j["vehicle"].get<std::string>()) << "\n"
+            << "span:      " << fixedText(j["start_s"].get<double>(), 2) << " s to " << fixedText(j["end_s"].get<double>(), 2)
+            << " s (" << fixedText(log.duration(), 1) << " s, " << log.samples.size() << " samples)\n"
+            << "battery:   " << source("battery_source", "battery") << "\n"
+            << "position:  " << source("position_source", "position") << "\n"
+            << "voltage:   " << rangeText(j["voltage_v"], 2, "V") << "\n"
+            << "current:   " << rangeText(j["current_a"], 2, "A") << "\n"
+            << "power:     " << rangeText(j["power_w"], 1, "W") << "\n";
+    const std::string how = j["airborne_source"].get<std::string>();
+  std::cout << "airborne" << (how.empty() ? std::string() : " (" + how + ")") << ": "
+            << (log.airborne.empty() ? "no window found" : fixedText(j["airborne_s"].get<double>(), 1) + " s in all") << "\n";
+  for (const auto& w : log.airborne)
+    std::cout << "  " << fixedText(w.begin, 2) << " s to " << fixedText(w.end, 2) << " s (" << fixedText(w.end - w.begin, 1) << " s)\n";
+  for (const auto& m : j["modes"])
+    std::cout << "mode at " << fixedText(m["t_s"].get<double>(), 2) << " s: " << m["mode"].get<std::string>() << "\n";
+  if (!meta(log, "warnings").empty()) std::cout << "warnings:  " << meta(log, "warnings") << "\n";
+  for (const auto& n : j["plausibility"]) std::cout << "check:     " << n.get<std::string>() << "\n";
 }
 
 void registerInfo(CLI::App& log_cmd) {
@@ -115,20 +187,7 @@ void registerInfo(CLI::App& log_cmd) {
       printJson(j);
       return;
     }
-    std::cout << "file:      " << log.source << " (" << log.format << ")\n"
-              << "firmware:  " << j["firmware"].get<std::string>() << "\n"
-              << "vehicle:   " << j["vehicle"].get<std::string>() << "\n"
-              << "span:      " << j["start_s"] << " s to " << j["end_s"] << " s (" << log.duration() << " s, "
-              << log.samples.size() << " samples)\n"
-              << "battery:   " << j["battery_source"].get<std::string>() << ", " << j["sample_rates_hz"]["battery"] << " Hz\n"
-              << "position:  " << j["position_source"].get<std::string>() << ", " << j["sample_rates_hz"]["position"] << " Hz\n"
-              << "voltage:   " << j["voltage_v"]["min"] << " to " << j["voltage_v"]["max"] << " V\n"
-              << "current:   " << j["current_a"]["min"] << " to " << j["current_a"]["max"] << " A, median in the air "
-              << j["current_a"]["median_airborne"] << " A\n"
-              << "airborne (" << j["airborne_source"].get<std::string>() << "):\n";
-    for (const auto& w : log.airborne) std::cout << "  " << w.begin << " s to " << w.end << " s (" << w.end - w.begin << " s)\n";
-    for (const auto& m : j["modes"]) std::cout << "mode at " << m["t_s"] << " s: " << m["mode"].get<std::string>() << "\n";
-    if (!meta(log, "warnings").empty()) std::cout << "warnings:  " << meta(log, "warnings") << "\n";
+    printInfo(log, j);
   });
 }
 

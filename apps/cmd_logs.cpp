@@ -93,6 +93,7 @@ void registerReplay(CLI::App& app) {
     inputs.insert(inputs.end(), o->missions.begin(), o->missions.end());
     inputs.push_back(o->vehicle);
     if (!o->samples_out.empty()) checkWritable(o->samples_out, o->force, inputs);
+    inputs.push_back(o->samples_out);  // the report must not take its name either
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const std::optional<Wind> wind = windOption(o->wind);
     const auto v = en::loadVehicle(o->vehicle);

@@ -117,6 +117,23 @@ TEST_F(OutputSafety, ReplaySamplesOutRefusesExistingAndNeverItsLog) {
   EXPECT_NE(readAll(out).find("measured_w"), std::string::npos);
 }
 
+// Two outputs of one run given the same name: the report silently replaced the samples CSV (or the
+// other way round). Refused before any work, for new files as for old ones.
+TEST_F(OutputSafety, TwoOutputsOfOneRunWithTheSameNameAreRefused) {
+  const std::string log = path("log.csv");
+  ASSERT_EQ(runCli({"simulate", "--vehicle", kVehicle, "--out", log}).status, 0);
+  const std::string same = path("same.out");
+  Outcome r = runCli({"replay", "--vehicle", kVehicle, "--log", log, "--samples-out", same, "--report", same});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("is named twice in this run"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(same));
+  // Spelled differently, the same file.
+  r = runCli({"replay", "--vehicle", kVehicle, "--log", log, "--samples-out", same, "--report",
+              (dir_ / "." / "same.out").string()});
+  EXPECT_NE(r.status, 0);
+  EXPECT_FALSE(fs::exists(same));
+}
+
 TEST_F(OutputSafety, LogConvertRefusesExistingOutAndNeverItsInput) {
   const std::string log = path("log.csv");
   ASSERT_EQ(runCli({"simulate", "--vehicle", kVehicle, "--out", log}).status, 0);

@@ -157,6 +157,23 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
                            num(log.airborne.back().begin, 10) + " s): the landing is not in the log");
     raw.meta["ends_airborne"] = "yes";
   }
+  if (!log.airborne.empty() && log.airborne.front().begin <= b.t.front()) {
+    raw.warnings.push_back("the log starts while airborne (at " + num(b.t.front(), 10) + " s, airborne until " +
+                           num(log.airborne.front().end, 10) + " s" +
+                           (raw.landed.empty() ? ", current above " + num(opt.airborne.current_threshold_a) + " A" : std::string()) +
+                           "): the take-off is not in the log");
+    raw.meta["starts_airborne"] = "yes";
+  }
+  // The windows were found on the battery's clock; the samples are where position data exist too.
+  if (!log.samples.empty()) {
+    std::vector<TimeWindow> clipped;
+    for (auto w : log.airborne) {
+      w.begin = std::max(w.begin, log.samples.front().t);
+      w.end = std::min(w.end, log.samples.back().t);
+      if (w.end > w.begin) clipped.push_back(w);
+    }
+    log.airborne.swap(clipped);
+  }
   // Each reader collects its events kind by kind; the log lists them in time order (stable: one
   // time keeps the readers' order).
   std::stable_sort(raw.events.begin(), raw.events.end(), [](const LogEvent& a, const LogEvent& b) { return a.t < b.t; });
@@ -345,6 +362,7 @@ FlightLog readFlightLog(const std::string& path, const LogReadOptions& options) 
       i.push_back(s.current);
     }
     log.airborne = detectAirborne(t, i, {}, options.airborne);
+    log.metadata["airborne_source"] = "current > " + num(options.airborne.current_threshold_a) + " A";
   }
   applyTimeWindow(log, options);
   checkSampleGaps(log, options.max_gap_s);

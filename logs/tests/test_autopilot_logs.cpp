@@ -10,6 +10,9 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -330,6 +333,67 @@ TEST(AutopilotLogs, LogEndingInTheAirSaysSo) {
   for (const auto& name : {kAc35, kPx19, kPx115}) {
     EXPECT_EQ(wattswath::logs::readFlightLog(logPath(name)).metadata.count("ends_airborne"), 0u) << name;
   }
+}
+
+// The 3.5 and PX4 1.9 logs begin in the air (README: an RTL, a mission's end): the reader says the
+// take-off is not in the log, and the airborne windows, found on the battery's clock, stay inside
+// the samples (the PX4 window began 0.5 s before the first sample, the 3.3 one ended after the last).
+TEST(AutopilotLogs, LogStartingInTheAirSaysSoAndWindowsStayInsideTheSamples) {
+  for (const auto& name : {kAc35, kPx19}) {
+    const auto log = wattswath::logs::readFlightLog(logPath(name));
+    EXPECT_EQ(log.metadata.at("starts_airborne"), "yes") << name;
+    EXPECT_NE(log.metadata.at("warnings").find("the log starts while airborne"), std::string::npos) << name;
+  }
+  for (const auto& name : {kAc33, kAc35, kPx19, kPx115}) {
+    const auto log = wattswath::logs::readFlightLog(logPath(name));
+    for (const auto& w : log.airborne) {
+      EXPECT_GE(w.begin, log.samples.front().t) << name;
+      EXPECT_LE(w.end, log.samples.back().t) << name;
+    }
+  }
+  EXPECT_EQ(wattswath::logs::readFlightLog(logPath(kAc33)).metadata.count("starts_airborne"), 0u);  // takes off in it
+  EXPECT_EQ(wattswath::logs::readFlightLog(logPath(kPx115)).metadata.count("starts_airborne"), 0u);
+}
+
+// `log info` reads as text, not as JSON leftovers, and says when a current is in mA.
+TEST_F(TempDir, LogInfoTextSaysWhatIsNotLoggedAndCatchesMilliamperes) {
+  using wattswath::test::cliBinary;
+  using wattswath::test::run;
+  const std::string csv = sharedData("iris-flights/2017-10-18_1436_energy14.csv");
+  const auto r = run(cliBinary() + " log info " + csv + " 2>&1");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("null"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("firmware:  not in the log"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("power:     158.6 to 294.7 W"), std::string::npos) << r.output;
+  // The same log with its current in mA (the header keeps its name, the values are 1000 times larger).
+  std::ifstream in(csv);
+  std::ostringstream out;
+  std::string line;
+  int current_col = -1;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || current_col == -2) {
+      out << line << "\n";
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c.substr(0, c.find('\r')));
+    if (current_col < 0) {
+      current_col = static_cast<int>(std::find(cells.begin(), cells.end(), "current_a") - cells.begin());
+      ASSERT_LT(current_col, static_cast<int>(cells.size())) << line;
+      out << line << "\n";
+      continue;
+    }
+    cells[current_col] = std::to_string(1000.0 * std::stod(cells[current_col]));
+    for (std::size_t k = 0; k < cells.size(); ++k) out << (k ? "," : "") << cells[k];
+    out << "\n";
+  }
+  const std::string text = out.str();
+  const std::string ma = write("ma.csv", std::vector<std::uint8_t>(text.begin(), text.end()));
+  const auto m = run(cliBinary() + " log info " + ma + " --json 2>&1");
+  EXPECT_EQ(m.status, 0) << m.output;
+  EXPECT_NE(m.output.find("is current_a logged in mA?"), std::string::npos) << m.output;
 }
 
 // Seeded random corruption: every outcome is a log or an exception with a message, never a crash.
