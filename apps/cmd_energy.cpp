@@ -1,4 +1,5 @@
 // Energy commands of the closed-form model: hover, leg, vopt, turns (Marins et al. 2018).
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -109,6 +110,21 @@ void registerHover(CLI::App& app) {
   });
 }
 
+// What a leg's numbers do not show: a cruise speed the leg is too short to reach, or one above the
+// vehicle's limit.
+std::vector<std::string> legNotes(double asked, double peak, double max_speed) {
+  std::vector<std::string> notes;
+  if (peak < asked - 1e-6) {
+    notes.push_back("the leg is too short to reach " + report::formatNumber(asked, 1) + " m/s at the vehicle's acceleration: it peaks at " +
+                    report::formatNumber(peak, 2) + " m/s");
+  }
+  if (asked > max_speed) {
+    notes.push_back(report::formatNumber(asked, 1) + " m/s is above the vehicle's max_speed_mps (" + report::formatNumber(max_speed, 1) +
+                    " m/s): computed as asked, but not flyable");
+  }
+  return notes;
+}
+
 void registerLeg(CLI::App& app) {
   struct Opts {
     std::string vehicle, drag = "exact";
@@ -134,23 +150,29 @@ void registerLeg(CLI::App& app) {
     const auto model = legModel(v, o->drag, {});
     const auto pieces = en::buildLegProfile(o->distance, o->entry, o->speed, o->exit, limitsOf(v));
     const auto b = model.evaluate(pieces);
+    double peak = 0.0;
+    for (const auto& p : pieces) peak = std::max({peak, p.v_start, p.v_end});
+    const std::vector<std::string> notes = legNotes(o->speed, peak, v.max_speed_mps);
     if (o->json) {
       printJson({{"vehicle", v.name},
                  {"distance_m", o->distance},
                  {"speed_mps", o->speed},
+                 {"peak_speed_mps", peak},
                  {"entry_speed_mps", o->entry},
                  {"exit_speed_mps", o->exit},
                  {"drag", o->drag},
                  {"energy_j", b.total()},
                  {"time_s", b.time},
                  {"breakdown", breakdownJson(b)},
-                 {"by_phase", phaseJson(b)}});
+                 {"by_phase", phaseJson(b)},
+                 {"notes", notes}});
       return;
     }
-    std::cout << std::fixed << std::setprecision(1) << "leg " << o->distance << " m at " << o->speed << " m/s ("
-              << o->entry << " -> " << o->exit << " m/s), drag " << o->drag << "\n"
+    std::cout << std::fixed << std::setprecision(1) << "leg " << o->distance << " m, cruise speed asked " << o->speed
+              << " m/s, flown up to " << peak << " m/s (" << o->entry << " -> " << o->exit << " m/s), drag " << o->drag << "\n"
               << "energy " << b.total() << " J, time " << b.time << " s\n";
     for (const auto& name : b.effects) std::cout << "  " << std::setw(15) << name << " " << b.byEffect(name) << " J\n";
+    for (const auto& n : notes) std::cout << "note: " << n << "\n";
   });
 }
 
@@ -240,7 +262,7 @@ void registerTurns(CLI::App& app) {
       "turns", "Sharp stop vs rounded turn at a corner between two legs (Marins Eq. 12-16, Table V)");
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--distance", o->distance, "Length of each of the two legs [m], > 0")->required();
-  cmd->add_option("--angle", o->angle, "Interior angle beta between the legs [deg], in (0, 180]")->required();
+  cmd->add_option("--angle", o->angle, "Interior angle beta between the legs [deg], in [0.5, 180]")->required();
   cmd->add_option("--max-speed", o->max_speed, "Speed limit [m/s] (default: the vehicle's max_speed_mps)");
   cmd->add_option("--sharp-speed", o->sharp_speed, "Cruise speed of the sharp stop's legs [m/s] (default: optimal)");
   cmd->add_option("--rounded-speed", o->rounded_speed, "Speed of the rounded path [m/s] (default: optimal)");
@@ -278,6 +300,12 @@ void registerTurns(CLI::App& app) {
                       " m on each branch (R cot(beta/2), Marins Eq. 15), beyond the " + formatNumber(o->distance) +
                       " m legs: at so sharp an angle the loop flies far from the corner; stop and turn, or turn on a "
                       "tighter radius at a lower speed");
+    }
+    if (o->angle > 150.0) {
+      notes.push_back("at beta = " + report::formatNumber(o->angle, 1) + " deg the legs are nearly one straight line, but Marins' "
+                      "rounded turn (Eq. 15) still flies its loop of pi + beta (" + report::formatNumber(180.0 + o->angle, 0) +
+                      " deg): both strategies are costed as the paper defines them, and flying straight through costs less "
+                      "than either");
     }
     if (!o->report.empty() || !o->report_svg.empty()) {
       auto data = turnReportData(model, limitsOf(v), v.max_yaw_rate_radps, v_max, st, o->angle, o->distance);

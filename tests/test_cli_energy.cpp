@@ -1,5 +1,7 @@
 // The energy commands' JSON contract (keys named in issue 2) and their errors on bad arguments.
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <sys/stat.h>
 
 #include <nlohmann/json.hpp>
@@ -137,4 +139,17 @@ TEST(CliEnergy, EnduranceRefinesTheBestSpeedAndSaysWhatCannotBeFlown) {
   const auto edge = nlohmann::json::parse(run(cliBinary() + " endurance --speed 0:3:1" + hex).output);
   EXPECT_TRUE(edge["max_endurance_at_range_end"].get<bool>());
   EXPECT_NE(edge["notes"].dump().find("highest speed given"), std::string::npos) << edge["notes"];
+}
+
+// A leg too short for its cruise speed says the speed it peaks at (it was labelled "at 8.0 m/s" while
+// flying 3.16 m/s), and a speed above the vehicle's limit is said to be one.
+TEST(CliEnergy, LegSaysTheSpeedItReallyReaches) {
+  const auto j = runJson("leg --distance 10 --speed 8");
+  EXPECT_NEAR(j["peak_speed_mps"].get<double>(), std::sqrt(10.0), 0.01);  // sqrt(a d), a = 1 m/s^2
+  ASSERT_EQ(j["notes"].size(), 1u);
+  EXPECT_NE(j["notes"][0].get<std::string>().find("peaks at 3.16 m/s"), std::string::npos) << j["notes"];
+  const auto fast = runJson("leg --distance 1000 --speed 30");
+  EXPECT_NEAR(fast["peak_speed_mps"].get<double>(), 30.0, 1e-6);
+  EXPECT_NE(fast["notes"].dump().find("above the vehicle's max_speed_mps (16.0 m/s)"), std::string::npos) << fast["notes"];
+  EXPECT_TRUE(runJson("leg --distance 600 --speed 10")["notes"].empty());
 }
