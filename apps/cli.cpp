@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -36,6 +37,22 @@ void addAreaSelectOptions(CLI::App* cmd, std::string& layer, std::string& where)
   cmd->add_option("--where", where, "area files GDAL reads (all but WKT, QGC and Mission Planner files): read only features matching this OGR SQL filter, e.g. \"name = 'field 3'\"");
 }
 
+namespace {
+// A CLI11 validator of a finite number against `ok`, saying "<expected>, got <value>" otherwise.
+CLI::Validator numberCheck(const std::string& expected, bool (*ok)(double)) {
+  return CLI::Validator(
+      [expected, ok](std::string& text) -> std::string {
+        double x = 0.0;
+        if (!CLI::detail::lexical_cast(text, x) || !std::isfinite(x)) return "expected a number " + expected + ", got " + text;
+        return ok(x) ? std::string() : "expected a number " + expected + ", got " + text;
+      },
+      expected == "> 0" ? "POSITIVE" : "NONNEGATIVE");
+}
+}  // namespace
+
+const CLI::Validator kPositive = numberCheck("> 0", [](double x) { return x > 0.0; });
+const CLI::Validator kNonNegative = numberCheck(">= 0", [](double x) { return x >= 0.0; });
+
 std::string formatNumber(double x) {
   std::ostringstream os;
   os.precision(10);
@@ -64,7 +81,7 @@ void addLogReadOptions(CLI::App* cmd, logs::LogReadOptions& o) {
                   "Position message/topic: XKF1, NKF1, NKF6, EKF1 (.bin) or vehicle_local_position (.ulg)");
   cmd->add_option("--airborne-current", o.airborne.current_threshold_a,
                   "Current above which the vehicle counts as flying where no take-off/landing is logged [A]")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   cmd->add_option("--max-gap", o.max_gap_s,
                   "Longest time between two samples; a longer gap (logger stopped, two flights) is refused [s]")
       ->check(CLI::Range(1e-3, 1e7));

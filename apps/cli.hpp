@@ -25,6 +25,13 @@ void printJson(const nlohmann::json& j);
 /// Adds the common `--vehicle FILE` option (required) to `cmd`, storing into `path`.
 CLI::Option* addVehicleOption(CLI::App* cmd, std::string& path);
 
+/// CLI11 check of a number > 0 whose message names the value ("must be > 0, got 0"; CLI11's own
+/// PositiveNumber printed its range up to DBL_MAX in 300 digits).
+extern const CLI::Validator kPositive;
+
+/// CLI11 check of a number >= 0, worded as kPositive.
+extern const CLI::Validator kNonNegative;
+
 /// Adds the common `--json` flag to `cmd`.
 CLI::Option* addJsonFlag(CLI::App* cmd, bool& json);
 

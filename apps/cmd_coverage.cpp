@@ -66,12 +66,12 @@ void addCoverageOptions(CLI::App* cmd, CoverageOpts& o) {
   cmd->add_option("--pattern", o.pattern, "Coverage pattern")
       ->check(CLI::IsMember({"spiral", "boustrophedon"}))
       ->capture_default_str();
-  cmd->add_option("--angle", o.angle_deg, "Sweep direction [deg] (0 = lines along east, counter-clockwise), 0..180")
+  cmd->add_option("--angle", o.angle_deg, "Sweep direction [deg] (0 = lines along east, counter-clockwise; 180 is the same lines), -360..360")
       ->check(CLI::Range(-360.0, 360.0))
       ->capture_default_str();
-  auto* spacing = cmd->add_option("--spacing", o.spacing, "Distance between passes [m], > 0")->check(CLI::PositiveNumber);
-  auto* alt = cmd->add_option("--altitude", o.altitude, "Camera height above ground [m], > 0")->check(CLI::PositiveNumber);
-  auto* fov = cmd->add_option("--fov", o.fov_deg, "Camera field of view across track [deg], 0..180")->check(CLI::Range(0.0, 180.0));
+  auto* spacing = cmd->add_option("--spacing", o.spacing, "Distance between passes [m], > 0")->check(kPositive);
+  auto* alt = cmd->add_option("--altitude", o.altitude, "Camera height above ground [m], > 0")->check(kPositive);
+  auto* fov = cmd->add_option("--fov", o.fov_deg, "Camera field of view across track [deg], in (0, 180)")->check(CLI::Range(0.0, 180.0));
   auto* overlap = cmd->add_option("--overlap", o.overlap, "Side overlap fraction, 0..1")->check(CLI::Range(0.0, 0.99));
   spacing->excludes(alt)->excludes(fov)->excludes(overlap);
   alt->needs(fov);
@@ -80,7 +80,7 @@ void addCoverageOptions(CLI::App* cmd, CoverageOpts& o) {
       ->check(CLI::IsMember({"sharp", "rounded"}))
       ->capture_default_str();
   cmd->add_option("--radius", o.radius, "Arc radius of rounded corners [m] (v / omega_max), >= 0")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   cmd->add_option("--start", o.start, "Boustrophedon start corner in the sweep frame")
       ->check(CLI::IsMember({"bottom-left", "bottom-right", "top-left", "top-right"}))
       ->capture_default_str();
@@ -95,6 +95,9 @@ void addCoverageOptions(CLI::App* cmd, CoverageOpts& o) {
 // The distance between passes [m]: --spacing, else the camera's swath at --altitude and --fov.
 double passSpacing(const CoverageOpts& o) {
   if (o.spacing > 0.0) return o.spacing;
+  if (!(o.fov_deg > 0.0 && o.fov_deg < 180.0)) {
+    throw std::runtime_error("--fov = " + formatNumber(o.fov_deg) + " deg, expected a field of view in (0, 180) deg");
+  }
   g::CameraSettings cam;
   cam.altitude = o.altitude;
   cam.fov = o.fov_deg * kDeg;

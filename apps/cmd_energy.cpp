@@ -142,7 +142,7 @@ void registerLeg(CLI::App& app) {
   addDragOption(cmd, o->drag);
   addJsonFlag(cmd, o->json);
   cmd->callback([o]() {
-    requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
+    requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length in (0, 10000] km");
     requireRange("--speed", o->speed, 0.0, true, 200.0, "a cruise speed in (0, 200] m/s");
     requireRange("--entry-speed", o->entry, 0.0, false, 200.0, "a speed in [0, 200] m/s");
     requireRange("--exit-speed", o->exit, 0.0, false, 200.0, "a speed in [0, 200] m/s");
@@ -200,7 +200,7 @@ void registerVopt(CLI::App& app) {
   addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
     checkReportWritable(o->report, o->report_svg, o->force, {o->vehicle});
-    requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
+    requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length in (0, 10000] km");
     requireRange("--entry-speed", o->entry, 0.0, false, 200.0, "a speed in [0, 200] m/s");
     requireRange("--exit-speed", o->exit, 0.0, false, 200.0, "a speed in [0, 200] m/s");
     const auto v = en::loadVehicle(o->vehicle);
@@ -273,7 +273,7 @@ void registerTurns(CLI::App& app) {
   addReportOptions(cmd, o->report, o->report_svg, o->force);
   cmd->callback([o]() {
     checkReportWritable(o->report, o->report_svg, o->force, {o->vehicle});
-    requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length > 0 m");
+    requireRange("--distance", o->distance, 0.0, true, 1e7, "a leg length in (0, 10000] km");
     requireRange("--angle", o->angle, en::kMinTurnAngle * 180.0 / M_PI, false, 180.0,
                  "an interior angle in [0.5, 180] deg (below it Marins' rounded turn overshoots the vertex without bound)");
     const auto v = en::loadVehicle(o->vehicle);

@@ -674,7 +674,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--no-fly", o->no_fly, "no-fly zone file(s)")->check(CLI::ExistingFile);
   addAreaSelectOptions(cmd, o->layer, o->where);
   cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
-  cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(CLI::PositiveNumber);
+  cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(kPositive);
   cmd->add_flag("--allow-large", o->allow_large,
                 "Plan even when the area needs more than 5000 sweep lines at this spacing or has more than 1000 "
                 "vertices (refused by default: planning time and memory grow with them)");
@@ -688,7 +688,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--fov-along", o->fov_along_deg, "camera field of view along track [deg] (default: --fov, a square footprint)")
       ->check(CLI::Range(0.0, 180.0));
   cmd->add_option("--sensor-mm", o->sensor_mm, "camera sensor width,height [mm], with --focal-mm (instead of --fov)");
-  cmd->add_option("--focal-mm", o->focal_mm, "camera focal length [mm], with --sensor-mm")->check(CLI::PositiveNumber);
+  cmd->add_option("--focal-mm", o->focal_mm, "camera focal length [mm], with --sensor-mm")->check(kPositive);
   cmd->add_option("--image-px", o->image_px, "image width,height [px], with --sensor-mm: ground sampling distance");
   cmd->add_option("--overlap", o->overlap, "side overlap between neighbouring swaths, fraction in [0, 1)");
   cmd->add_option("--frontal-overlap", o->frontal_overlap,

@@ -50,6 +50,22 @@ TEST(CliCoverage, MissingSpacingIsAnError) {
   EXPECT_NE(r.output.find("--spacing"), std::string::npos) << r.output;
 }
 
+// A spacing of 0 said "not in range 0.000000 to 1797693134862315708...", 300 digits; a field of view
+// of 0 blamed a sensor width the user never gave, one of 180 deg answered in radians.
+TEST(CliCoverage, BadNumbersAreNamedInTheUnitsGiven) {
+  const std::string area = sharedData("espiral/area__rectangle.waypoints");
+  auto r = run(cliBinary() + " coverage " + area + " --spacing 0 2>&1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("--spacing: expected a number > 0, got 0"), std::string::npos) << r.output;
+  EXPECT_LT(r.output.size(), 200u) << r.output;
+  for (const char* fov : {"0", "180"}) {
+    r = run(cliBinary() + " coverage " + area + " --altitude 10 --overlap 0.1 --fov " + fov + " 2>&1");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find(std::string("--fov = ") + fov + " deg, expected a field of view in (0, 180) deg"), std::string::npos)
+        << r.output;
+  }
+}
+
 // Issue 22: on every area of ../shared/data, no flown point of `coverage` (any pattern) or `plan`
 // is outside the area or inside a hole or no-fly zone (outside_area_m and in_no_fly_m, measured by
 // geometry::checkContainment: exact for lines, 1 mm tolerance at the boundary).
