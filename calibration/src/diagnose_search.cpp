@@ -110,8 +110,13 @@ size_t coefficientCount(const EnergyModel& m, const std::string& n) {
 // Why a fitted candidate is not a finding (empty: it may be): a coefficient at a bound, or a
 // payload "released" outside the logs.
 std::string boundProblem(const std::string& name, const FitResult& full, const std::vector<PreparedLog>& logs) {
+  // A part of the effect fitted to zero (climb's descent_mass: climbing costs, descending does not)
+  // while another part is measured away from its bounds: the effect is that other part alone.
+  bool measured_part = false;
+  for (const auto& c : full.coefficients) measured_part = measured_part || (c.effect == name && c.determined && !c.at_bound);
   for (const auto& c : full.coefficients) {
     if (c.effect != name) continue;
+    if (c.at_bound && measured_part && c.value == 0.0 && (c.name == "descent_mass" || c.name == "climb_mass")) continue;
     if (c.at_bound) {
       return c.name + " stopped at its bound (" + num(c.value) + " " + c.unit +
              "): the candidate's form does not fit what is missing";

@@ -74,6 +74,17 @@ TEST(HiddenEffect, ClimbFoundAndClimbMassWithin10Percent) {
   EXPECT_NEAR(coefficient(d.candidates[0], "descent_mass").value, 0.6, 0.15);
 }
 
+// The climb effect as `simulate` and `buildModel` make it by default: descending saves nothing
+// (descent_mass 0, its bound). Its fit stops there, which is the truth, and it was refused as "at
+// its bound": the verdict said unexplained. A part fitted to zero beside a measured part is found.
+TEST(HiddenEffect, ClimbWithoutADescentSavingIsFound) {
+  const auto d = diagnoseHidden(paperPlus(std::make_unique<ClimbEffect>(2.2, 0.0)), kPaper);
+  EXPECT_EQ(d.verdict, "missing_effect") << d.conclusion;
+  ASSERT_FALSE(d.found.empty());
+  EXPECT_EQ(d.found[0].effect, "climb");
+  EXPECT_NEAR(coefficient(d.found[0], "climb_mass").value, 2.2, 0.22);
+}
+
 TEST(HiddenEffect, WindFoundAndVectorWithinHalfMetrePerSecond) {
   const Vehicle v = iris();
   const auto d = diagnoseHidden(
