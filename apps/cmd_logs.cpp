@@ -400,9 +400,10 @@ void registerSimulate(CLI::App& app) {
   addVehicleOption(cmd, o->vehicle);
   cmd->add_option("--effects", o->effects, "Effects of the true model (hidden ones included)")->capture_default_str();
   cmd->add_option("--set", o->sets, "Coefficient of the true model, effect.coefficient=value (repeatable), "
-                                    "e.g. wind.wind_east=3");
+                                    "e.g. --effects hover,kinetic,wind --set wind.wind_east=3 (wind replaces parasitic_drag)");
   addEffectFileOption(cmd, o->effect_files, "user-defined effects that --effects may name");
-  cmd->add_option("--path", o->path, "Waypoints x y z [m] per line (default: a 160 m x 50 m lawnmower at 15 m)")
+  cmd->add_option("--path", o->path, "Waypoints x y z [m] per line (default: take-off to 15 m, a 160 m x 50 m lawnmower, a climb to 25 m, "
+                                 "a diagonal to (80, 90) m and back over the start, landing)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--rate", o->sim.rate_hz, "Sample rate [Hz]")->check(CLI::Range(0.1, 1000.0))->capture_default_str();
   cmd->add_option("--speed", o->sim.cruise_speed, "Cruise speed [m/s]")->check(CLI::Range(0.5, 40.0))->capture_default_str();

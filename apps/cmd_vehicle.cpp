@@ -167,7 +167,9 @@ void runParams(const ParamsOptions& o) {
     progress(r.determined ? "airframe response (extensions.airframe.response_s): " + std::to_string(r.response_s) +
                                 " s lag of the acceleration behind the position controller's, R^2 " + std::to_string(r.r2)
                           : "airframe response not determined by this log: " + r.reason +
-                                " (predict takes the attitude time constant, ArduCopter ATC_INPUT_TC)");
+                                (p.firmware.family == "PX4"
+                                     ? std::string(" (predict's PX4 model follows its jerk-limited setpoints without a lag)")
+                                     : std::string(" (predict takes the attitude time constant, ArduCopter ATC_INPUT_TC)")));
   }
 }
 
