@@ -68,8 +68,10 @@ std::string describeValues(const std::string& effect, const std::vector<FittedCo
     }
     const double sig = std::isfinite(e.sigma) && std::isfinite(n.sigma) ? std::hypot(e.sigma, n.sigma) / std::sqrt(2.0)
                                                                         : std::numeric_limits<double>::quiet_NaN();
-    return "wind " + pm(speed, sig, 2) + " m/s towards " + num(std::round(bearing), 3) +
-           " deg (compass bearing the air moves to), drag area " + pm(a) + " m^2";
+    const double from = std::fmod(std::round(bearing) + 180.0, 360.0);
+    return "wind " + pm(speed, sig, 2) + " m/s from " + num(from, 3) + " deg (towards " + num(std::round(bearing), 3) +
+           " deg; as replay --wind and predict --wind take it: " + num(speed, 2) + "," + num(from, 3) + "), drag area " +
+           pm(a) + " m^2";
   }
   if (effect == "translational_lift") {
     const auto &p = get("induced_power"), &v = get("induced_velocity");

@@ -92,6 +92,11 @@ TEST(HiddenEffect, WindFoundAndVectorWithinHalfMetrePerSecond) {
   EXPECT_EQ(d.candidates[0].effect, "wind") << d.candidates[0].summary;
   EXPECT_NEAR(coefficient(d.candidates[0], "wind_east").value, 3.0, 0.5);
   EXPECT_NEAR(coefficient(d.candidates[0], "wind_north").value, -2.0, 0.5);
+  // Air moving towards the east-south-east (124 deg) comes from 304 deg, as replay/predict --wind take
+  // it (SPEED,FROM): the summary said only "towards", and copied into --wind it was 180 deg wrong.
+  const std::string& text = d.candidates[0].summary;
+  EXPECT_NE(text.find("from 30"), std::string::npos) << text;
+  EXPECT_NE(text.find("as replay --wind and predict --wind take it: 3."), std::string::npos) << text;
 }
 
 TEST(HiddenEffect, TranslationalLiftFoundAndInducedPowerWithin20Percent) {
