@@ -3,7 +3,10 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cli.hpp"
 #include "wattswath/geometry/check.hpp"
@@ -79,7 +82,7 @@ void addCoverageOptions(CLI::App* cmd, CoverageOpts& o) {
   cmd->add_option("--corners", o.corners, "Corner shape: sharp (stop, turn in place) or rounded (arc)")
       ->check(CLI::IsMember({"sharp", "rounded"}))
       ->capture_default_str();
-  cmd->add_option("--radius", o.radius, "Arc radius of rounded corners [m] (v / omega_max), >= 0")
+  cmd->add_option("--radius", o.radius, "Arc radius of rounded corners [m], > 0 with --corners rounded: your cruise speed over the yaw rate limit, v / omega_max")
       ->check(kNonNegative);
   cmd->add_option("--start", o.start, "Boustrophedon start corner in the sweep frame")
       ->check(CLI::IsMember({"bottom-left", "bottom-right", "top-left", "top-right"}))
@@ -142,8 +145,44 @@ CoverageResult coverArea(const g::SurveyArea& area, const CoverageOpts& o, doubl
   return cr;
 }
 
+// The widest gap [m] between neighbouring passes of the boustrophedon paths (consecutive sweep legs
+// of a cell; the lines are spread evenly, so it is at most the spacing asked); NaN for a spiral.
+double widestPassGap(const CoverageResult& cr, const CoverageOpts& o, double spacing) {
+  if (o.pattern != "boustrophedon") return std::nan("");
+  const g::Point normal(-std::sin(o.angle_deg * kDeg), std::cos(o.angle_deg * kDeg));
+  double widest = std::nan("");
+  for (const auto& p : cr.paths) {
+    std::optional<double> last;
+    for (const auto& l : p.legs) {
+      if (l.role != g::LegRole::Sweep || l.kind != g::PrimitiveKind::Line) continue;
+      const double offset = normal.dot(0.5 * (l.start + l.end));
+      const double gap = last ? std::abs(offset - *last) : 0.0;
+      if (last && gap > 1e-3 && gap <= 1.001 * spacing) widest = std::isnan(widest) ? gap : std::max(widest, gap);
+      last = offset;
+    }
+  }
+  return widest;
+}
+
+// What the numbers do not show: arcs smaller than the --radius asked (they must fit between passes).
+std::vector<std::string> coverageNotes(const CoverageResult& cr, const CoverageOpts& o) {
+  std::vector<std::string> notes;
+  if (o.corners != "rounded") return notes;
+  double largest = 0.0;
+  for (const auto& p : cr.paths)
+    for (const auto& l : p.legs)
+      if (l.kind == g::PrimitiveKind::Arc) largest = std::max(largest, l.radius);
+  if (largest < 0.999 * o.radius) {
+    notes.push_back("--radius " + formatNumber(o.radius) + " m does not fit: the arcs use at most " + fixedText(largest, 2) +
+                    " m (an arc must fit between neighbouring passes and inside the area)");
+  }
+  return notes;
+}
+
 // Prints the coverage as JSON or text.
 void printCoverage(const CoverageResult& cr, const CoverageOpts& o, double spacing) {
+  const double gap = widestPassGap(cr, o, spacing);
+  const std::vector<std::string> notes = coverageNotes(cr, o);
   size_t legs = 0;
   double length = 0.0;
   int turns = 0;
@@ -165,11 +204,15 @@ void printCoverage(const CoverageResult& cr, const CoverageOpts& o, double spaci
                {"pattern", o.pattern},
                {"angle_deg", o.angle_deg},
                {"spacing_m", spacing},
-               {"problems", cr.problems}});
+               {"widest_pass_gap_m", std::isnan(gap) ? nlohmann::json(nullptr) : nlohmann::json(gap)},
+               {"problems", cr.problems},
+               {"notes", notes}});
     return;
   }
   std::cout << "pattern:  " << o.pattern << " (sweep angle " << o.angle_deg << " deg)\n"
-            << "spacing:  " << spacing << " m\n"
+            << "spacing:  " << (std::isnan(gap) ? "" : "at most ") << spacing << " m"
+            << (std::isnan(gap) ? std::string() : " (passes spread evenly across each cell: at most " + fixedText(gap, 2) + " m apart)")
+            << "\n"
             << "cells:    " << cr.cells << "\n"
             << "legs:     " << legs << " (" << turns << " turns)\n"
             << "length:   " << length << " m\n"
@@ -177,6 +220,7 @@ void printCoverage(const CoverageResult& cr, const CoverageOpts& o, double spaci
             << "outside:  " << cr.outside.outside_m << " m outside the area, " << cr.outside.in_holes_m
             << " m in holes or no-fly zones\n";
   for (const auto& p : cr.problems) std::cout << "problem:  " << p << "\n";
+  for (const auto& n : notes) std::cout << "note:     " << n << "\n";
   if (!o.out.empty()) std::cerr << "wrote " << o.out << std::endl;
 }
 
@@ -189,6 +233,10 @@ void runCoverage(const CoverageOpts& o) {
   }
   if (o.spacing <= 0.0 && o.altitude <= 0.0) {
     throw std::runtime_error("coverage: give --spacing M or --altitude M --fov DEG [--overlap F]");
+  }
+  if (o.corners == "rounded" && !(o.radius > 0.0)) {
+    throw std::runtime_error("--corners rounded needs --radius M > 0, the arcs' radius: the cruise speed over the yaw rate "
+                             "limit, v / omega_max (8 m/s at 2.1 rad/s: 3.8 m); without it the corners would be sharp");
   }
   g::ReadOptions ro;
   ro.no_fly_files = o.no_fly;

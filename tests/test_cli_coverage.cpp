@@ -102,3 +102,21 @@ TEST(CliCoverage, NoFlownPointOutsideTheSharedAreas) {
     }
   }
 }
+
+// A --radius that cannot fit between passes is said, with the radius the arcs use (50 m asked, 9.99 m
+// flown, nothing said); rounded corners without a radius are refused (they came out sharp); the
+// passes, spread evenly, are said to be closer than the spacing asked (19.67 m for 21.45 m).
+TEST(CliCoverage, RoundedCornersAndPassesSayWhatIsFlown) {
+  const std::string out = std::string(::testing::TempDir()) + "/r50.geojson";
+  const auto j = coverageJson("--spacing 21.45 --corners rounded --radius 50 --force --out " + out);
+  ASSERT_EQ(j["notes"].size(), 1u) << j["notes"];
+  EXPECT_NE(j["notes"][0].get<std::string>().find("--radius 50 m does not fit: the arcs use at most"), std::string::npos);
+  EXPECT_LE(j["widest_pass_gap_m"].get<double>(), 21.45);
+  EXPECT_NEAR(j["widest_pass_gap_m"].get<double>(), 19.67, 0.05);
+  EXPECT_TRUE(coverageJson("--spacing 21.45 --corners rounded --radius 3 --force --out " + out)["notes"].empty());
+  const auto r = run(cliBinary() + " coverage " + sharedData("espiral/area__rectangle.waypoints") +
+                     " --spacing 21.45 --corners rounded --out " + out + " --force 2>&1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("--corners rounded needs --radius M > 0"), std::string::npos) << r.output;
+  EXPECT_TRUE(coverageJson("--pattern spiral --spacing 21.45")["widest_pass_gap_m"].is_null());
+}
