@@ -38,6 +38,7 @@ nlohmann::json reproRow(const std::string& quantity, double paper, double ours, 
                         const std::string& note) {
   const double diff = paper != 0.0 ? 100.0 * (ours - paper) / std::abs(paper) : 0.0;
   nlohmann::json j = {{"quantity", quantity}, {"paper", paper}, {"ours", ours}, {"unit", unit}, {"diff_pct", diff}};
+  if (unit == "%") j["diff_points"] = ours - paper;  // a share's difference reads in points, not as a ratio
   if (!note.empty()) j["note"] = note;
   return j;
 }
@@ -65,9 +66,13 @@ std::string reproMarkdownTable(const nlohmann::json& rows) {
     const double diff = r.at("diff_pct").get<double>();
     std::string note = r.value("note", "");
     if (note.empty() && std::abs(diff) > 1.0) note = "unexplained";
-    char d[32];
-    std::snprintf(d, sizeof d, "%+.2f %%", diff);
+    char d[48];
     const std::string unit = r.value("unit", "");
+    if (unit == "%") {
+      std::snprintf(d, sizeof d, "%+.2f points", r.at("diff_points").get<double>());
+    } else {
+      std::snprintf(d, sizeof d, "%+.2f %%", diff);
+    }
     const std::string u = unit.empty() ? "" : " " + unit;
     md += "| " + r.at("quantity").get<std::string>() + " | " + reproNumber(r.at("paper").get<double>()) + u + " | " +
           reproNumber(r.at("ours").get<double>()) + u + " | " + d + " | " + note + " |\n";
@@ -121,9 +126,10 @@ void registerReproduceCommand(CLI::App& app) {
     if (!o->out.empty()) writeTextFileAtomic(o->out, all.markdown);  // never into the checkout unasked
     if (o->json) {
       printJson(all.json);
-    } else {
+    } else if (o->out.empty()) {
       std::cout << all.markdown;
-      if (!o->out.empty()) std::cerr << "wrote " << o->out << std::endl;
+    } else {
+      std::cout << "wrote " << o->out << "\n";  // the report is in the file, not repeated here
     }
   });
 }

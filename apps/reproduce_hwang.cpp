@@ -244,11 +244,13 @@ ReproSection reproducePeers(const ReproContext& ctx) {
   nlohmann::json jd = nlohmann::json::array();
   for (auto [d, pv] : std::vector<std::pair<double, double>>{{10, 2.72}, {50, 6.86}, {100, 9.41}, {200, 11.85}}) {
     const double ours = dm.stopToStopOptimalSpeed(d);
-    md << "| " << f(d, 0) << " | " << f(pv) << " | " << f(ours) << " | " << f(100.0 * (ours - pv) / pv, 1) << " % |\n";
+    const bool ceiling = ours * ours >= d - 1e-9;  // the leg is too short to cruise: the peak sqrt(a d), not an optimum
+    md << "| " << f(d, 0) << " | " << f(pv) << " | " << f(ours) << (ceiling ? " (sqrt(a d): the leg's peak, no optimum below it)" : "")
+       << " | " << f(100.0 * (ours - pv) / pv, 1) << " % |\n";
     jd.push_back(reproRow("v_opt stop-to-stop " + f(d, 0) + " m", pv, ours, "m/s",
                           std::string("published table from the measured non-linear ramps; ours uses the code's "
                                       "constant 1 m/s^2 ramps") +
-                              (ours * ours >= d - 1e-9 ? " (triangular limit sqrt(a d))" : "")));
+                              (ceiling ? " (triangular limit sqrt(a d))" : "")));
   }
   // Zeng.
   const en::ZengParameters zp;
