@@ -94,6 +94,16 @@ TEST(CliEnergy, ReproduceMarinsEveryDifferenceOver1PercentIsExplained) {
   }
   EXPECT_EQ(rows, 29);  // 3 hover + 2 optimal velocity + 12 strategy + 12 Table V rows
   EXPECT_NEAR(j.at("eq4_over_ideal").get<double>(), 2.0, 1e-12);
+  // A share (a saving in %) differs in points: 23.87 % against 17.34 % is +6.53 points, not +37.6 %.
+  for (const auto& row : j.at("strategies_600m_45deg")) {
+    if (row.at("unit") != "%") continue;
+    EXPECT_DOUBLE_EQ(row.at("diff_points").get<double>(), row.at("ours").get<double>() - row.at("paper").get<double>());
+  }
+  const auto md = run("cat /tmp/wattswath_test_reproduction.md");
+  EXPECT_NE(md.output.find("| Saving of strategy 2 | 17.34 % | 23.87 % | +6.53 points |"), std::string::npos);
+  const auto spiral = nlohmann::json::parse(r.output).at("spiral_case");
+  EXPECT_EQ(spiral.at("tolerance_pct").get<double>(), 3.0);
+  EXPECT_TRUE(spiral.at("within_tolerance").get<bool>());
 }
 
 // Regression: writing a report through a temporary file and a rename once replaced /dev/null
