@@ -218,6 +218,9 @@ void registerVopt(CLI::App& app) {
                                    {"no kinetic", legModel(v, o->drag, {"kinetic"})},
                                    {"no drag", legModel(v, o->drag, {"parasitic_drag"})}},
                                   model, lim, o->distance, o->entry, o->exit, v_max);
+      if (o->entry > 0.0 || o->exit > 0.0) {
+        data.leg_ends = "from " + formatNumber(o->entry) + " to " + formatNumber(o->exit) + " m/s";
+      }
       data.facts.insert(data.facts.begin(),
                         {{"vehicle", v.name},
                          {"leg", formatNumber(o->distance) + " m from " + formatNumber(o->entry) + " to " +

@@ -41,7 +41,7 @@ HtmlReport speedReport(const SpeedReportData& d) {
       if (std::isfinite(lo)) c.series.push_back(v);
     }
     r.heading("Optimal speed (Marins et al. Fig. 3)");
-    r.figure({"vopt-distance", renderSvg(c), "The speed that minimises a stop-to-stop leg's energy, for model variants."});
+    r.figure({"vopt-distance", renderSvg(c), "The speed that minimises the energy of a leg flown " + d.leg_ends + ", for model variants."});
     Table t{"Optimal cruise speed [m/s]", {"model variant", "leg length [m]", "v_opt [m/s]"}, {}, {false, true, true}, true};
     for (const auto& k : d.curves) {
       for (std::size_t i = 0; i < k.distance.size() && i < k.speed.size(); ++i) {

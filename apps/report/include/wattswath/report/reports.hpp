@@ -258,6 +258,7 @@ struct SpeedReportData {
   std::vector<SpeedCurve> curves;                        ///< v_opt vs distance per model variant
   std::vector<LegEnergyCurve> legs;                      ///< E(v) for a few leg lengths
   std::optional<double> v_max;                           ///< [m/s] speed limit (drawn as a line)
+  std::string leg_ends = "stop-to-stop";                 ///< how the legs begin and end, for the captions
 };
 
 /// Builds the optimal-speed report (v_opt vs distance, leg energy vs speed).
