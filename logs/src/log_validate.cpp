@@ -1,7 +1,9 @@
 // One validation of the values the DataFlash and ULog readers extract, with the canonical CSV
 // reader's bounds (tolerances.hpp), and the check of gaps between samples of any assembled log.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "autopilot_log_internal.hpp"
 #include "wattswath/logs/tolerances.hpp"
@@ -128,6 +130,19 @@ void validateDerivedAcceleration(const Raw& raw, const std::string& source) {
 
 void checkSampleGaps(const FlightLog& log, double max_gap_s) {
   const auto& s = log.samples;
+  // Every step long (1 Hz logged in ms reads 1000 s a step): a unit, not a stopped logger.
+  if (s.size() > 2) {
+    std::vector<double> steps;
+    for (std::size_t k = 1; k < s.size(); ++k) steps.push_back(s[k].t - s[k - 1].t);
+    std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+    const double median = steps[steps.size() / 2];
+    if (median > max_gap_s) {
+      throw std::runtime_error(log.source + ": the samples are a median " + detail::num(median) +
+                               " s apart, more than the " + detail::num(max_gap_s) +
+                               " s allowed between two: is time_s logged in milliseconds (or microseconds)? The canonical "
+                               "log's time is in seconds (docs: flight-log CSV format)");
+    }
+  }
   for (std::size_t k = 1; k < s.size(); ++k) {
     const double gap = s[k].t - s[k - 1].t;
     if (gap <= max_gap_s) continue;

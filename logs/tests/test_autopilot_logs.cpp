@@ -548,3 +548,14 @@ TEST(MissionSpan, FromTheSwitchIntoTheMissionModeToTheLanding) {
   EXPECT_FALSE(wattswath::logs::missionSpan(wattswath::logs::readFlightLog(logPath(kAc35))).has_value());
   EXPECT_FALSE(wattswath::logs::missionSpan(wattswath::logs::readFlightLog(dir + "/iris-flights/2017-10-18_1436_energy14.csv")).has_value());
 }
+
+// A 1 Hz log whose time is in milliseconds: every step is 1000 "s". It was called a stopped logger
+// ("no sample for 1001 s"); it is a unit, and said so.
+TEST_F(TempDir, TimeInMillisecondsIsSaidToBeOne) {
+  std::string text = "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,ax_mps2,ay_mps2,az_mps2,yaw_rad,voltage_v,current_a\n";
+  for (int k = 0; k < 20; ++k) text += std::to_string(1000 * k) + ",0,0,10,0,0,0,0,0,0,0,12.0,20.0\n";
+  const std::string p = write("ms.csv", std::vector<std::uint8_t>(text.begin(), text.end()));
+  const std::string e = errorOf(p);
+  EXPECT_NE(e.find("median 1000 s apart"), std::string::npos) << e;
+  EXPECT_NE(e.find("is time_s logged in milliseconds"), std::string::npos) << e;
+}
