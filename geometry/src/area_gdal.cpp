@@ -184,6 +184,7 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
     const long i = sel.where.empty() ? index : static_cast<long>(feature->GetFID());
     ++index;
     const std::string name = (sel.layer_in_names ? lname + ", " : std::string()) + "feature " + std::to_string(i);
+    ++out.features;
     if (sel.strict && CPLGetLastErrorType() >= CE_Failure) brokenFeature(i, name, source, sel);  // raised fetching it
     OGRGeometry* g = feature->GetGeometryRef();
     if (!g) {
@@ -263,6 +264,13 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
   }
   RawArea out;
   size_t vertices = 0;
+  const auto whereMatchedNothing = [&](RawArea& a) {
+    if (!sel.where.empty() && a.features == 0) {
+      fail(source, "--where \"" + sel.where + "\" matched no feature" +
+                       (sel.layer.empty() ? std::string() : " of layer \"" + sel.layer + "\"") + "; nothing to read");
+    }
+    return a;
+  };
   if (!sel.layer.empty()) {
     OGRLayer* l = ds->GetLayerByName(sel.layer.c_str());
     if (!l) {
@@ -271,7 +279,7 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
       fail(source, "no layer named \"" + sel.layer + "\" (--layer); the file has: " + names);
     }
     readLayer(*l, source, sel, out, vertices);
-    return out;
+    return whereMatchedNothing(out);
   }
   const bool gpx = std::string(ds->GetDriverName()) == "GPX";
   const bool lines_skipped = !gpx && hasAreaLayer(*ds);
@@ -285,7 +293,7 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
     }
     readLayer(*l, source, sel, out, vertices);
   }
-  return out;
+  return whereMatchedNothing(out);
 }
 
 RawArea parseWithGdal(const std::string& bytes, const std::string& source, const GdalRead& sel) {

@@ -36,6 +36,7 @@ struct RawArea {
   std::optional<GeoPoint> home;          ///< home point (lat/lon) if the file has one
   bool geodetic = true;                  ///< lon/lat degrees (true) or metres (false)
   std::vector<std::string> notes;        ///< format-level repair notes
+  std::size_t features = 0;              ///< features a GIS reader read (after --layer / --where)
 };
 
 /// ASCII lower case.

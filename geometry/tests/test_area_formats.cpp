@@ -104,8 +104,10 @@ TEST(AreaFormats, LayerAndWhereChooseFeatures) {
   o.where = "role = 'area'";
   const geo::SurveyArea a = geo::readSurveyArea(gpkg.string(), o);
   EXPECT_FALSE(a.home.has_value());  // the home point was filtered out
-  o.where = "role = 'nothing'";
-  EXPECT_NE(errorOf(gpkg.string(), o).find("no polygon found"), std::string::npos);
+  o.where = "role = 'nothing'";  // said to match nothing (it read "no polygon found")
+  EXPECT_NE(errorOf(gpkg.string(), o).find("--where \"role = 'nothing'\" matched no feature of layer \"fields\""),
+            std::string::npos)
+      << errorOf(gpkg.string(), o);
   o.layer = "missing";
   const std::string e = errorOf(gpkg.string(), o);
   EXPECT_NE(e.find("no layer named \"missing\" (--layer); the file has: fields, other"), std::string::npos) << e;
