@@ -8,13 +8,14 @@
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
 #include "wattswath/energy/battery.hpp"
 #include "wattswath/energy/forward_flight.hpp"
+#include "wattswath/energy/optimal_speed.hpp"
 #include "wattswath/energy/peers.hpp"
 
 namespace wattswath::apps {
@@ -63,8 +64,9 @@ nlohmann::json flightJson(const en::ForwardFlightState& s, const en::EnduranceRe
           {"energy_wh", r.energy_j / 3600.0}};
 }
 
-// The speed of longest endurance between the neighbours of the best of `speeds` (`best_u`), by golden
-// section, with its endurance [min]: the best of a coarse list is a grid point, not the optimum.
+// The speed of longest endurance between the neighbours of the best of `speeds` (`best_u`), with its
+// endurance [min] (the one minimiser of the energy library, on minus the endurance): the best of a
+// coarse list is a grid point, not the optimum.
 std::pair<double, double> refineBest(const en::ForwardFlightParameters& params, const en::Battery& battery, double dt,
                                      const std::vector<double>& speeds, double best_u) {
   const auto minutes = [&](double u) {
@@ -76,18 +78,14 @@ std::pair<double, double> refineBest(const en::ForwardFlightParameters& params, 
   std::vector<double> sorted = speeds;
   std::sort(sorted.begin(), sorted.end());
   const auto at = std::find(sorted.begin(), sorted.end(), best_u);
-  double lo = at == sorted.begin() ? *at : *(at - 1), hi = at + 1 == sorted.end() ? *at : *(at + 1);
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  for (int k = 0; k < 60 && hi - lo > 1e-4; ++k) {
-    const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-    if (minutes(a) >= minutes(b)) {
-      hi = b;  // the longer endurance is left of b
-    } else {
-      lo = a;
-    }
-  }
-  const double u = 0.5 * (lo + hi), t = minutes(u);
-  return t > minutes(best_u) ? std::make_pair(u, t) : std::make_pair(best_u, minutes(best_u));
+  const double lo = at == sorted.begin() ? *at : *(at - 1), hi = at + 1 == sorted.end() ? *at : *(at + 1);
+  const double at_best = minutes(best_u);
+  if (!(hi > lo)) return {best_u, at_best};
+  en::CruiseSpeedSettings search;
+  search.speed_tolerance = 1e-4;
+  const double u = en::minimiseOnInterval([&](double x) { return -minutes(x); }, lo, hi, search);
+  const double t = minutes(u);
+  return t > at_best ? std::make_pair(u, t) : std::make_pair(best_u, at_best);
 }
 
 // What the endurance table cannot show: where the efficiency comes from, a best speed at the end of
@@ -96,15 +94,15 @@ std::vector<std::string> enduranceNotes(const en::ForwardFlightParameters& param
                                         const std::vector<double>& speeds, double best_u) {
   std::vector<std::string> notes;
   if (!params.efficiency_note.empty()) notes.push_back(params.efficiency_note);
-  const double lo = *std::min_element(speeds.begin(), speeds.end()), hi = *std::max_element(speeds.begin(), speeds.end());
+  const auto [lo_it, hi_it] = std::minmax_element(speeds.begin(), speeds.end());
+  const double lo = *lo_it, hi = *hi_it;
   if (speeds.size() > 1 && ((best_u == lo && lo > 0.0) || best_u == hi)) {
     std::ostringstream os;
     os << "the longest endurance is at the " << (best_u == lo ? "lowest" : "highest") << " speed given (" << best_u
        << " m/s): the best speed may lie beyond the range; widen --speed";
     notes.push_back(os.str());
   }
-  const double fastest = *std::max_element(speeds.begin(), speeds.end());
-  if (fastest > v.max_speed_mps) {
+  if (hi > v.max_speed_mps) {
     std::ostringstream os;
     os << "speeds above the vehicle's max_speed_mps (" << v.max_speed_mps << " m/s) are computed but cannot be flown";
     notes.push_back(os.str());
@@ -163,8 +161,8 @@ void registerEndurance(CLI::App& app) {
       out["curve"] = curve;
       out["max_endurance_speed_mps"] = best_u;
       out["max_endurance_min"] = best_t;
-      out["max_endurance_at_range_end"] = best_u == *std::min_element(speeds.begin(), speeds.end()) ||
-                                          best_u == *std::max_element(speeds.begin(), speeds.end());
+      const auto [lo, hi] = std::minmax_element(speeds.begin(), speeds.end());
+      out["max_endurance_at_range_end"] = best_u == *lo || best_u == *hi;
     }
     out["notes"] = notes;
     if (o->json) {
