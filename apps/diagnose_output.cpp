@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "cli.hpp"
 #include "log_json.hpp"
 
 namespace wattswath::apps {
@@ -95,8 +96,8 @@ json diagnosisJson(const calibration::Diagnosis& d) {
 void printDiagnosis(const calibration::Diagnosis& d) {
   std::cout << "verdict: " << d.verdict << "\n  " << d.conclusion << "\n";
   for (const auto& f : d.found) {
-    std::cout << "found: " << f.effect << " - " << f.summary << " (held-out " << f.rmse_w << " W, likelihood ratio "
-              << f.lr_statistic << " > " << f.lr_threshold << ")\n";
+    std::cout << "found: " << f.effect << " - " << f.summary << " (held-out " << fixedText(f.rmse_w, 1)
+              << " W, likelihood ratio " << fixedText(f.lr_statistic, 1) << " > " << fixedText(f.lr_threshold, 1) << ")\n";
   }
   if (!d.found.empty()) {
     std::string set;
@@ -114,17 +115,18 @@ void printDiagnosis(const calibration::Diagnosis& d) {
     for (size_t k = 0; k < d.signatures.size(); ++k) {
       const auto& g = d.signatures[k];
       if (!g.significant && (any || k >= 3)) continue;
-      std::cout << "  " << g.signal << " (" << 100.0 * g.strength << " % of its variance, " << g.form
+      std::cout << "  " << g.signal << " (" << fixedText(100.0 * g.strength, 1) << " % of its variance, " << g.form
                 << (g.significant ? "" : ", not significant: a lead") << "): " << g.sentence << "\n";
     }
   }
-  std::cout << "white noise " << d.noise_w << " W, residual correlated over " << d.autocorrelation_time << " samples\n";
+  std::cout << "white noise " << fixedText(d.noise_w, 1) << " W, residual correlated over "
+            << fixedText(d.autocorrelation_time, 1) << " samples\n";
   std::cout << "search:\n";
   for (const auto& x : d.search) std::cout << "  " << x << "\n";
   std::cout << "candidates of the first round, best first (held-out RMSE after adding the effect):\n";
   for (const auto& c : d.candidates) {
-    std::cout << "  " << c.effect << ": " << c.rmse_w << " W (" << c.improvement_pct << " %, likelihood ratio " << c.lr_statistic
-              << ") - " << c.summary << (c.kept ? "" : " [not kept: " + c.why_not_kept + "]") << "\n";
+    std::cout << "  " << c.effect << ": " << fixedText(c.rmse_w, 1) << " W (" << fixedText(c.improvement_pct, 1)
+              << " %, likelihood ratio " << fixedText(c.lr_statistic, 1) << ") - " << c.summary << (c.kept ? "" : " [not kept: " + c.why_not_kept + "]") << "\n";
     if (!c.indistinct_from.empty()) {
       std::cout << "    cannot be told apart from:";
       for (const auto& n : c.indistinct_from) std::cout << " " << n;

@@ -1,7 +1,6 @@
 // Fitting an energy model's coefficients to measured power (Ceres Levenberg-Marquardt within the
-// coefficients' bounds, covariance for their uncertainties). Ceres is private to this file.
+// coefficients' bounds; their covariance from the Jacobian, coefficient_covariance.cpp). Ceres is private to this file.
 #include <ceres/ceres.h>
-#include <ceres/covariance.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "coefficient_covariance.hpp"
 #include "excitation.hpp"
 #include "time_series.hpp"
 #include "number_text.hpp"
@@ -287,27 +287,21 @@ void listCoefficients(FitResult& out, const std::vector<std::vector<std::string>
   }
 }
 
-// Formal uncertainty of the free coefficients: covariance of the linearised problem times the
-// residual variance; a free coefficient the data do not constrain is marked not determined, and
-// strongly correlated pairs are noted.
-void addUncertainty(FitResult& out, const Blocks& b, ceres::Problem& problem, double final_cost, size_t n) {
-  size_t p = 0;
-  for (const auto& c : out.coefficients) p += c.determined ? 1 : 0;
-  // Correlated residuals carry n / tau independent samples' worth of information (issue 18).
-  const double s2 = n > p ? 2.0 * final_cost / (n - p) * out.autocorrelation_time : 0.0;
-  ceres::Covariance::Options copt;
-  copt.algorithm_type = ceres::DENSE_SVD;
-  copt.null_space_rank = -1;
-  copt.min_reciprocal_condition_number = 1e-14;
-  ceres::Covariance cov(copt);
-  std::vector<std::pair<const double*, const double*>> pairs;
-  for (size_t a = 0; a < b.ptrs.size(); ++a)
-    for (size_t c = a; c < b.ptrs.size(); ++c) pairs.emplace_back(b.ptrs[a], b.ptrs[c]);
-  if (pairs.empty()) return;
-  if (!cov.Compute(pairs, &problem)) {
-    out.notes.push_back("covariance is singular: some coefficients are not determined");
-    return;
+// Jacobian of the residuals (rows) in the free coefficients (columns, in out.coefficients'
+// order), with Ceres's Huber correction sqrt(rho') on rows beyond the loss scale.
+Eigen::MatrixXd freeJacobian(const FitResult& out, const Blocks& b, const Points& pts, const std::vector<size_t>& free,
+                             double huber_w) {
+  PowerCost cost(out.model, b.block_of, &pts, b.values);
+  const size_t n = pts.state.size();
+  std::vector<double> residuals(n);
+  std::vector<std::vector<double>> jac(b.ptrs.size());
+  std::vector<double*> jp;
+  for (size_t k = 0; k < b.ptrs.size(); ++k) {
+    jac[k].resize(n * b.values[k].size());
+    jp.push_back(jac[k].data());
   }
+  std::vector<const double*> params(b.ptrs.begin(), b.ptrs.end());
+  cost.Evaluate(params.data(), residuals.data(), jp.data());
   struct Ref {
     size_t block, idx;
   };
@@ -315,42 +309,65 @@ void addUncertainty(FitResult& out, const Blocks& b, ceres::Problem& problem, do
   const auto& effects = out.model.effects();
   for (size_t k = 0; k < effects.size(); ++k)
     for (size_t c = 0; c < effects[k]->coefficients().size(); ++c) refs.push_back({static_cast<size_t>(b.block_of[k]), c});
-  auto covAt = [&](const Ref& x, const Ref& y) {
-    const size_t nx = b.values[x.block].size(), ny = b.values[y.block].size();
-    std::vector<double> m(nx * ny);
-    if (x.block <= y.block) {
-      cov.GetCovarianceBlock(b.ptrs[x.block], b.ptrs[y.block], m.data());
-      return m[x.idx * ny + y.idx];
-    }
-    cov.GetCovarianceBlock(b.ptrs[y.block], b.ptrs[x.block], m.data());
-    return m[y.idx * nx + x.idx];
-  };
-  for (size_t i = 0; i < refs.size(); ++i) {
-    auto& c = out.coefficients[i];
-    if (!c.determined) continue;  // held by its excitation: not fitted
-    // DENSE_SVD with null_space_rank -1 is a pseudo-inverse: a coefficient the data do not
-    // constrain (its Jacobian column vanishes) comes back with variance 0, which is not "exact"
-    // but "unknown".
-    const double v = covAt(refs[i], refs[i]);
-    if (v > 0.0) {
-      c.sigma = std::sqrt(v * s2);
-    } else {
-      c.determined = false;
-      c.why_not_determined = "the modelled power does not change with it at the fitted values; its value " + num(c.value) +
-                             " " + c.unit + " is arbitrary";
-      out.notes.push_back(c.effect + "." + c.name + " is not determined by the data (" + c.why_not_determined + ")");
+  Eigen::MatrixXd j(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(free.size()));
+  for (size_t col = 0; col < free.size(); ++col) {
+    const Ref r = refs[free[col]];
+    const size_t m = b.values[r.block].size();
+    for (size_t i = 0; i < n; ++i) j(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(col)) = jac[r.block][i * m + r.idx];
+  }
+  if (huber_w > 0.0) {
+    for (size_t i = 0; i < n; ++i) {
+      const double a = std::abs(residuals[i]);
+      if (a > huber_w) j.row(static_cast<Eigen::Index>(i)) *= std::sqrt(huber_w / a);
     }
   }
-  for (size_t i = 0; i < refs.size(); ++i) {
-    for (size_t j = i + 1; j < refs.size(); ++j) {
-      if (!out.coefficients[i].determined || !out.coefficients[j].determined) continue;
-      const double vi = covAt(refs[i], refs[i]), vj = covAt(refs[j], refs[j]);
-      if (!(vi > 0 && vj > 0)) continue;
-      const double r = covAt(refs[i], refs[j]) / std::sqrt(vi * vj);
+  return j;
+}
+
+// Formal uncertainty of the free coefficients: covariance of the linearised problem times the
+// residual variance; a free coefficient the data do not constrain, alone or only in a combination
+// with others, is marked not determined, and strongly correlated pairs are noted.
+void addUncertainty(FitResult& out, const Blocks& b, const Points& pts, double huber_w, double final_cost) {
+  std::vector<size_t> free;
+  for (size_t i = 0; i < out.coefficients.size(); ++i)
+    if (out.coefficients[i].determined) free.push_back(i);  // the others are held by their excitation
+  if (free.empty()) return;
+  const size_t n = pts.state.size(), p = free.size();
+  // Correlated residuals carry n / tau independent samples' worth of information (issue 18).
+  const double s2 = n > p ? 2.0 * final_cost / static_cast<double>(n - p) * out.autocorrelation_time : 0.0;
+  const auto cov = detail::coefficientCovariance(freeJacobian(out, b, pts, free, huber_w), s2);
+  auto label = [&](size_t i) { return out.coefficients[i].effect + "." + out.coefficients[i].name; };
+  for (size_t k = 0; k < p; ++k) {
+    auto& c = out.coefficients[free[k]];
+    if (cov.determined[k]) {
+      c.sigma = std::sqrt(cov.covariance(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)));
+      continue;
+    }
+    c.determined = false;
+    if (cov.tied_to[k].empty()) {
+      c.why_not_determined = "the modelled power does not change with it at the fitted values; its value " + num(c.value) +
+                             " " + c.unit + " is arbitrary";
+    } else {
+      std::string others;
+      for (int o : cov.tied_to[k]) {
+        const std::string name = label(free[static_cast<size_t>(o)]);
+        if (others.find(name) == std::string::npos) others += (others.empty() ? "" : ", ") + name;
+      }
+      c.why_not_determined = "the data fix only its combination with " + others + "; its value " + num(c.value) + " " +
+                             c.unit + " is one of many that fit as well";
+    }
+    out.notes.push_back(label(free[k]) + " is not determined by the data (" + c.why_not_determined + ")");
+  }
+  for (size_t a = 0; a < p; ++a) {
+    for (size_t bb = a + 1; bb < p; ++bb) {
+      if (!cov.determined[a] || !cov.determined[bb]) continue;
+      const auto ia = static_cast<Eigen::Index>(a), ib = static_cast<Eigen::Index>(bb);
+      const double va = cov.covariance(ia, ia), vb = cov.covariance(ib, ib);
+      if (!(va > 0 && vb > 0)) continue;
+      const double r = cov.covariance(ia, ib) / std::sqrt(va * vb);
       if (std::abs(r) > 0.95) {
-        out.notes.push_back(out.coefficients[i].effect + "." + out.coefficients[i].name + " and " +
-                            out.coefficients[j].effect + "." + out.coefficients[j].name + " are correlated (r = " +
-                            num(r, 3) + "): the data constrain mainly a combination of them");
+        out.notes.push_back(label(free[a]) + " and " + label(free[bb]) + " are correlated (r = " + num(r, 3) +
+                            "): the data constrain mainly a combination of them");
       }
     }
   }
@@ -378,7 +395,7 @@ FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data,
   out.samples = static_cast<int>(res.size());
   out.autocorrelation_time = detail::autocorrelationTime(res);
   listCoefficients(out, held);
-  if (b.any_free) addUncertainty(out, b, problem, final_cost, res.size());
+  if (b.any_free) addUncertainty(out, b, pts, s.huber_w, final_cost);
   for (const auto& c : out.coefficients) {
     if (c.at_bound) out.notes.push_back(c.effect + "." + c.name + " stopped at a bound (" + num(c.value) + " " + c.unit + ")");
   }
