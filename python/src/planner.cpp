@@ -8,6 +8,7 @@
 #include "wattswath/mission/autopilot.hpp"
 #include "wattswath/planner/coverage.hpp"
 #include "wattswath/planner/flight_score.hpp"
+#include "wattswath/planner/margin.hpp"
 #include "wattswath/planner/mission_from_plan.hpp"
 
 namespace wattswath::python {
@@ -95,13 +96,19 @@ pl::SurveyProblem problemOf(const geo::SurveyArea& area, double spacing, double 
 // The plan's mission as `wattswath plan` writes it: flown by the vehicle's autopilot model as
 // `predict` flies it (the vehicle's autopilot object, else ArduCopter 4.5 defaults), in each way it
 // can be written (arcs as chords or waypoints; ArduCopter: speed commands a waypoint early), the
-// cheapest kept (planner/flight_score.hpp).
+// cheapest kept (planner/flight_score.hpp). `problem` is the area as read (no margin); the mission
+// gets plan's inclusion fence and its check of the legs between waypoints against the no-fly margin
+// (apps/cmd_plan.cpp, flightScoring).
 pl::FlightScore flownMission(const pl::PlanResult& r, const pl::SurveyProblem& problem, const geo::LocalFrame& frame,
-                             double home_alt_m, const energy::Vehicle& v, const energy::EnergyModel& model, int threads) {
+                             double home_alt_m, const energy::Vehicle& v, const energy::EnergyModel& model,
+                             double no_fly_margin, int threads) {
   pl::FlightScoring scoring;
   scoring.problem = &problem;
   scoring.frame = &frame;
   scoring.home_altitude_amsl_m = home_alt_m;
+  scoring.mission.rotor_count = v.rotor_count;
+  scoring.mission.fence_margin_m = no_fly_margin > 0.0 ? no_fly_margin : pl::kDefaultNoFlyMargin;
+  scoring.mission.no_fly_margin_m = no_fly_margin;
   scoring.vehicle = &v;
   scoring.model = &model;
   pl::setAutopilot(scoring, mission::parseAutopilot(v.autopilot_json, v.name));
@@ -121,8 +128,12 @@ py::dict flightDict(const pl::FlightScore& f) {
 }
 
 py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energy::EnergyModel& model, double spacing,
-              double altitude, double footprint, bool spirals, bool per_cell, int threads) {
+              double altitude, double footprint, bool spirals, bool per_cell, double no_fly_margin, int threads) {
   const pl::SurveyProblem problem = problemOf(area, spacing, altitude, footprint);
+  // As `wattswath plan --no-fly-margin`: the search covers the area with its no-fly zones grown by
+  // the margin (ValueError for a negative margin, or home within it).
+  std::vector<std::string> margin_notes;
+  const pl::SurveyProblem flown_problem = pl::withNoFlyMargin(problem, no_fly_margin, &margin_notes);
   pl::PlannerSettings s;
   s.spirals = spirals;
   s.per_cell = per_cell;
@@ -134,7 +145,7 @@ py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energ
   const energy::EnergyModel scoring = model;
   {
     py::gil_scoped_release release;
-    r = pl::planCoverage(problem, vehicle, scoring, s);
+    r = pl::planCoverage(flown_problem, vehicle, scoring, s);
   }
   py::dict d = candidateDict(r.plan);
   d["lower_bound_j"] = r.lower_bound_j;
@@ -146,10 +157,11 @@ py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energ
   d["best_spiral"] = r.best_spiral ? py::object(candidateDict(*r.best_spiral)) : py::object(py::none());
   d["sweep_scan_deg"] = arrayOf(r.sweep_scan.size(), [&](std::size_t i) { return r.sweep_scan[i].sweep_angle_deg; });
   d["sweep_scan_j"] = arrayOf(r.sweep_scan.size(), [&](std::size_t i) { return r.sweep_scan[i].energy_j; });
-  d["notes"] = r.notes;
+  margin_notes.insert(margin_notes.end(), r.notes.begin(), r.notes.end());
+  d["notes"] = margin_notes;
   if (area.frame) {
     const pl::FlightScore chosen = flownMission(r, problem, *area.frame, area.home_alt_m.value_or(area.frame->origin().alt_m),
-                                                vehicle, scoring, threads);
+                                                vehicle, scoring, no_fly_margin, threads);
     d["qgc_plan"] = mission::toQgcPlan(chosen.mission.mission);
     d["mission_notes"] = chosen.mission.notes;
     d["flight"] = flightDict(chosen);
@@ -165,14 +177,20 @@ py::dict plan(const geo::SurveyArea& area, const energy::Vehicle& v, const energ
 void bindPlanner(py::module_& m) {
   m.def("plan", &plan, py::arg("area"), py::arg("vehicle"), py::arg("model"), py::arg("spacing") = 15.0,
         py::arg("altitude") = 10.0, py::arg("footprint") = 0.0, py::arg("spirals") = true, py::arg("per_cell") = true,
-        py::arg("threads") = 2,
+        py::arg("no_fly_margin") = pl::kDefaultNoFlyMargin, py::arg("threads") = 2,
         "Plans the minimum-energy coverage of a SurveyArea (single region) with lines `spacing` [m] apart at "
-        "`altitude` [m] (footprint [m], default the spacing): dict energy_j, time_s, length_m, pattern, "
-        "sweep_angle_deg, coverage_pct, path (M x 2 polyline [m]), legs (per-leg arrays), the baselines "
-        "shortest_path, ground_station_default, best_spiral, lower_bound_j, qgc_plan (.plan text, None "
-        "without a geodetic frame) and flight: the mission written as `wattswath plan` writes it, flown by the "
-        "vehicle's autopilot model with `model` (label, energy_j, time_s, distance_m, arc_waypoints, "
-        "speeds_a_waypoint_early; the cheapest way of writing it), None without a geodetic frame.");
+        "`altitude` [m] (footprint [m], default the spacing), every flown point keeping `no_fly_margin` [m] "
+        "(default 2, as `wattswath plan --no-fly-margin`; 0: none) from the area's holes and no-fly zones: dict "
+        "energy_j, time_s, length_m, pattern, sweep_angle_deg, coverage_pct, path (M x 2 polyline [m]), legs "
+        "(per-leg arrays), the baselines shortest_path, ground_station_default, best_spiral, lower_bound_j, notes, "
+        "qgc_plan (.plan text, None without a geodetic frame) and flight: the search's plan flown by the vehicle's "
+        "autopilot model with `model` in each way it can be written (label, energy_j, time_s, distance_m, "
+        "arc_waypoints, speeds_a_waypoint_early; the cheapest way of writing it), None without a geodetic frame. "
+        "With the same options (spacing, altitude, no_fly_margin; `model` = marins_model(vehicle) of a vehicle "
+        "without a calibration), qgc_plan is the mission.plan `wattswath plan` writes and flight the flight it "
+        "prints, whenever plan writes the search's own choice (--json flight.written starts with 'plan'): plan also "
+        "flies the per-cell, best-spiral and shortest-path candidates and writes whichever flies cheapest. "
+        "ValueError for a negative margin, or home within it of a zone.");
 }
 
 }  // namespace wattswath::python

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 import wattswath as ws
 
-from conftest import IRIS, IRIS_AREA
+from conftest import IRIS, IRIS_AREA, cli_json
 
 
 @pytest.fixture(scope="module")
@@ -14,9 +14,30 @@ def plan():
     return ws.plan(ws.read_area(IRIS_AREA), vehicle, ws.marins_model(vehicle), spacing=15.0, altitude=10.0)
 
 
-def test_plan_as_example_3(plan):
-    # Example 3 (examples/03_plan_and_write.cpp, the same call): boustrophedon at 60 deg, 4 cells,
-    # 1818 m, 369 s, 84290 J, coverage 99.1 %; baselines 92293 J, 118512 J.
+def test_plan_writes_the_mission_wattswath_plan_writes(plan, tmp_path):
+    # The defaults are the command line's: a 2 m no-fly margin around the area's hole (the search
+    # covers the area with the hole grown by it). `wattswath plan` with the same spacing and
+    # altitude: boustrophedon at 66 deg, 80414 J; the same mission.plan, byte for byte, flown in
+    # 83185 J, 365 s.
+    ref = cli_json("plan", IRIS_AREA, "--vehicle", IRIS, "--spacing", 15, "--altitude", 10, "--no-report",
+                   "--out", tmp_path)
+    assert ref["flight"]["written"].startswith("plan")  # the search's choice, not another finalist
+    assert plan["pattern"] == ref["pattern"] == "boustrophedon"
+    assert plan["sweep_angle_deg"] == pytest.approx(ref["sweep_angle_deg"], abs=1e-9)
+    assert plan["sweep_angle_deg"] == pytest.approx(66, abs=0.5)
+    assert plan["energy_j"] == pytest.approx(ref["energy_j"], rel=1e-9)
+    assert plan["energy_j"] == pytest.approx(80414, abs=1)
+    assert plan["qgc_plan"] == (tmp_path / "mission.plan").read_text()
+    assert plan["flight"]["energy_j"] == pytest.approx(ref["flight"]["energy_j"], rel=1e-9)
+    assert plan["flight"]["time_s"] == pytest.approx(ref["flight"]["time_s"], rel=1e-9)
+
+
+def test_plan_without_margin_as_example_3():
+    # Example 3 (examples/03_plan_and_write.cpp) plans the area as read (no margin): boustrophedon
+    # at 60 deg, 4 cells, 1818 m, 369 s, 84290 J, coverage 99.1 %; baselines 92293 J, 118512 J.
+    vehicle = ws.load_vehicle(IRIS)
+    plan = ws.plan(ws.read_area(IRIS_AREA), vehicle, ws.marins_model(vehicle), spacing=15.0, altitude=10.0,
+                   no_fly_margin=0.0)
     assert plan["pattern"] == "boustrophedon" and plan["sweep_angle_deg"] == pytest.approx(60, abs=0.5)
     assert plan["energy_j"] == pytest.approx(84290, abs=1)
     assert plan["time_s"] == pytest.approx(369, abs=1)
@@ -64,3 +85,9 @@ def test_bad_spacing_is_refused():
     vehicle = ws.load_vehicle(IRIS)
     with pytest.raises(ValueError, match="spacing"):
         ws.plan(ws.read_area(IRIS_AREA), vehicle, ws.marins_model(vehicle), spacing=-1.0)
+
+
+def test_negative_margin_is_refused():
+    vehicle = ws.load_vehicle(IRIS)
+    with pytest.raises(ValueError, match="margin"):
+        ws.plan(ws.read_area(IRIS_AREA), vehicle, ws.marins_model(vehicle), no_fly_margin=-1.0)
