@@ -24,8 +24,8 @@ optional arguments. The outputs below are what they printed (regenerate this pag
 `scripts/examples_doc.py`).
 
 Using the library from your own CMake project: install it, then find the package and link the
-namespaced target of what you use (`wattswath::geometry`, `::energy`, `::logs`, `::mission`,
-`::calibration`, `::planner`; each brings the ones it builds on):
+namespaced target of what you use (`wattswath::io`, `::geometry`, `::energy`, `::logs`,
+`::mission`, `::calibration`, `::planner`; each brings the ones it builds on):
 
 ```sh
 cmake --install build --prefix $HOME/wattswath
@@ -37,7 +37,8 @@ target_link_libraries(my_program PRIVATE wattswath::planner)
 ```
 
 The libraries are static, so the package also finds what they link privately (CGAL,
-GeographicLib, nlohmann_json, Ceres, OMPL: the Debian packages `scripts/setup.sh` installs).
+GeographicLib, GDAL, nlohmann_json, Ceres, NLopt, muparser, OMPL: the Debian packages
+`scripts/setup.sh` installs).
 `examples/consumer/` is such a project; the test `install_consumer` installs the build into a
 folder and builds example 1 against it. The headers document every call (units in brackets);
 `docs/architecture.md` says which library holds what.
