@@ -615,9 +615,17 @@ void runPlan(const PlanOpts& o) {
     if (r.battery && !r.battery->warning.empty())
       r.notes.erase(std::remove(r.notes.begin(), r.notes.end(), r.battery->warning), r.notes.end());
     r.battery = pl::predictBatteryUse(ms::powerProfile(flight.prediction), *vehicle.battery, bs);
-    if (!r.battery->fits) r.notes.push_back(r.battery->warning);
+    // With --sorties the one flight is what is split (each sortie written fits, or the split fails).
+    if (!r.battery->fits) {
+      std::string why = r.battery->warning;
+      if (const auto cut = why.find("; split the area"); cut != std::string::npos) why.erase(cut);
+      r.notes.push_back(o.sorties.sorties.empty() ? r.battery->warning
+                                                  : "mission.plan, the whole survey in one flight, does not fit the battery (" +
+                                                        why + "): fly the sorties written beside it, "
+                                                        "each of which lands with the reserve");
+    }
   }
-  if (r.battery && !r.battery->fits) progress("WARNING: " + r.battery->warning);
+  if (r.battery && !r.battery->fits && o.sorties.sorties.empty()) progress("WARNING: " + r.battery->warning);
   checkFlown(pr, r.plan.flown.path, o.no_fly_margin);
   const auto& pm = flight.mission;
   std::vector<std::string> notes = s.notes;
@@ -627,6 +635,8 @@ void runPlan(const PlanOpts& o) {
   if (flight.calibration_note) notes.push_back(*flight.calibration_note);
   const fs::path dir(o.out);
   const std::string plan_text = writePlanFiles(o, s, r, pm);
+  const std::size_t written_items = ms::parseQgcPlan(plan_text, "mission.plan").items.size();
+  if (std::string n = ms::missionSizeNote(written_items, flight.flown_by, "mission.plan"); !n.empty()) notes.push_back(n);
   std::optional<SortieOutcome> split;
   if (!o.sorties.sorties.empty()) {
     progress("plan: splitting into sorties for the battery (" + o.sorties.sorties + ", reserve " + fixedText(o.sorties.reserve_pct, 0) + " %)");
@@ -656,8 +666,14 @@ void runPlan(const PlanOpts& o) {
   printFlight(flight);
   if (!sorties.is_null()) printSorties(sorties);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
+  std::string sortie_files;
+  if (!sorties.is_null() && !sorties["sorties"].empty()) {
+    const auto& list = sorties["sorties"];
+    sortie_files = ", " + std::to_string(list.size()) + " sorties (" + list.front()["file"].get<std::string>() +
+                   (list.size() > 1 ? " to " + list.back()["file"].get<std::string>() : "") + ", each with its .waypoints)";
+  }
   std::cout << "wrote " << (dir / "mission.plan").string() << ", mission.waypoints, path.geojson, legs.csv"
-            << (o.gpkg ? ", plan.gpkg" : "") << (o.no_report ? std::string() : ", " + reportPath(o)) << "\n";
+            << (o.gpkg ? ", plan.gpkg" : "") << sortie_files << (o.no_report ? std::string() : ", " + reportPath(o)) << "\n";
 }
 
 }  // namespace

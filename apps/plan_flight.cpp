@@ -87,6 +87,7 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   f.chosen = planner::cheapestFlight(scores);
   for (const auto& g : baselines) f.rows.push_back(rowOf(g, true));
   f.chosen_by_search = r.plan.pattern;
+  f.flown_by = setup.autopilot;
   f.autopilot = setup.autopilot.firmware + " " + setup.autopilot.version + " (" + mission::toString(setup.autopilot.family) +
                 " model" + (setup.autopilot.from_file ? "" : ", firmware defaults") + (setup.calibrated ? ", calibrated" : "") + ")";
   const auto& best = scores[f.chosen];

@@ -37,6 +37,7 @@ struct PlanFlight {
   double max_chord_offset_m = 0.0;     ///< [m] largest arc-to-chord distance of the chosen candidate's arcs
   mission::MissionPrediction prediction;  ///< its flight
   std::string autopilot;               ///< "ArduCopter 4.5 (arducopter-scurve model, ...)"
+  mission::AutopilotConfig flown_by;   ///< the autopilot configuration that flew it
   /// A note when the chosen mission asks for flying the vehicle's calibration never saw
   /// (calibration::outsideCalibration, as `predict` says it), else nothing.
   std::optional<std::string> calibration_note;

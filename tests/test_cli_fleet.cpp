@@ -102,6 +102,23 @@ TEST(CliFleet, TwoVehiclesFinishSoonerKeepTheSeparationAndEachSortieFitsItsBatte
   EXPECT_LT(leastDistance(together), 15.0) << "two vehicles taking off together from one home must be found too close";
 }
 
+// With sorties written, the one-flight mission's battery verdict is said of that flight, with no
+// WARNING to split what is split, and the sortie files are in the "wrote" line (it printed
+// "WARNING: ... split the area or use a larger battery" and listed mission.plan alone).
+TEST(CliFleet, TheTextSaysTheSortiesFitAndListsTheirFiles) {
+  const auto out = outDir("text");
+  const auto r = run(cliBinary() + " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " +
+                     sourcePath("tests/data/iris-small-battery.json") + " --spacing 15 --sorties auto --no-report --out " + out +
+                     " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("WARNING"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("split the area or use a larger battery"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("note: mission.plan, the whole survey in one flight, does not fit the battery"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("legs.csv, 6 sorties (sortie_01.plan to sortie_06.plan, each with its .waypoints)"), std::string::npos)
+      << r.output;
+}
+
 TEST(CliFleet, BadFleetOptionsAreRefused) {
   const std::string base = cliBinary() + " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " +
                            sourcePath("tests/data/iris-small-battery.json") + " --spacing 15 --out " + outDir("bad");

@@ -120,8 +120,10 @@ void checkSpeed(const MissionItem& it) {
   const double type = it.param[0], v = it.param[1];
   if (!(type == 0.0 || type == 1.0 || type == 2.0 || type == 3.0))
     badField(it, "param1 (speed type)", type, "0 (airspeed), 1 (ground speed), 2 (climb) or 3 (descent)");
-  if (v == -1.0) return;  // no change
-  if (!(std::isfinite(v) && v > 0.0)) badField(it, "param2 (speed)", v, "a speed > 0 m/s, or -1 for no change");
+  if (v == -1.0 || v == -2.0) return;  // MAVLink: no change, or back to the default
+  if (!(std::isfinite(v) && v > 0.0)) {
+    badField(it, "param2 (speed)", v, "a speed > 0 m/s, -1 for no change or -2 for the default speed");
+  }
 }
 
 void checkJump(const MissionItem& it) {

@@ -113,8 +113,9 @@ std::vector<Item> items(const PlannedMission& m) {
 
 json jsonNumber(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+// NaN as Mission Planner writes it (a yaw of NaN is "unchanged"; 0 would turn a PX4 vehicle north).
 std::string num(double v, int precision) {
-  if (std::isnan(v)) return "0";
+  if (std::isnan(v)) return "NaN";
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", precision, v);
   return buf;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -139,6 +140,23 @@ energy::EnergyModel inWind(const energy::EnergyModel& model, const energy::Vehic
   return out;
 }
 
+// PX4's MissionBase::on_active moves past a reached item only when its autocontinue is set; at the
+// first item without it the vehicle holds until the pilot moves it on. The mission up to that item
+// (it included) when one is not the last, with `note` saying so; nullopt when every item continues.
+std::optional<Mission> px4StopsAt(const Mission& m, std::string& note) {
+  const auto stop = std::find_if(m.items.begin(), m.items.end(), [](const MissionItem& it) { return !it.autocontinue; });
+  if (stop == m.items.end()) return std::nullopt;
+  const auto after = static_cast<std::size_t>(std::distance(stop, m.items.end())) - 1;
+  note = stop->where + ": autoContinue is false: PX4 stops at this item and waits for the pilot (MissionBase::on_active "
+         "moves on only when it is set), so the prediction ends there, in the air" +
+         (after > 0 ? "; the " + std::to_string(after) + " item(s) after it are not flown" : std::string()) +
+         " (QGC .plan \"autoContinue\", the 12th .waypoints column)";
+  if (after == 0) return std::nullopt;
+  Mission cut = m;
+  cut.items.erase(cut.items.begin() + std::distance(m.items.begin(), stop) + 1, cut.items.end());
+  return cut;
+}
+
 // A note when the `.plan` says it was written for another firmware (firmwareType) or for a vehicle
 // that is not a multicopter (vehicleType) than the one predicted: QGroundControl writes a mission
 // for the firmware and vehicle it was connected to or set for, and the prediction flies it as the
@@ -234,8 +252,18 @@ void px4TakeoffRules(const Mission& m, std::vector<std::string>& notes) {
 
 }  // namespace
 
-MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
+std::string missionSizeNote(std::size_t items, const AutopilotConfig& autopilot, const std::string& source) {
+  if (autopilot.family != AutopilotFamily::PX4 || items <= kPx4MaxMissionItems) return "";
+  return source + ": " + std::to_string(items) + " items: PX4 on flight-controller hardware keeps at most " +
+         std::to_string(kPx4MaxMissionItems) + " (navigation.h NUM_MISSIONS_SUPPORTED on NuttX, 2000 before 1.13) and "
+         "refuses a longer upload; split the mission (plan --sorties) or fly it in parts";
+}
+
+MissionPrediction predictMission(const Mission& given, const energy::Vehicle& v, const energy::EnergyModel& model,
                                  const AutopilotConfig& autopilot, const PredictSettings& s) {
+  std::string stop_note;
+  const std::optional<Mission> cut = autopilot.family == AutopilotFamily::PX4 ? px4StopsAt(given, stop_note) : std::nullopt;
+  const Mission& m = cut ? *cut : given;
   if (!(s.reserve_fraction >= 0.0 && s.reserve_fraction <= 0.9)) {
     throw std::invalid_argument("reserve fraction " + std::to_string(s.reserve_fraction) + ", expected 0..0.9");
   }
@@ -260,6 +288,16 @@ MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, con
   MissionPrediction p;
   p.warnings = m.warnings;
   writtenForNotes(m, autopilot, p.warnings);
+  if (!stop_note.empty()) p.warnings.push_back(stop_note);
+  if (std::string n = missionSizeNote(given.items.size(), autopilot, m.source); !n.empty()) p.warnings.push_back(std::move(n));
+  if (autopilot.family != AutopilotFamily::PX4) {
+    for (const MissionItem& it : m.items) {
+      if (it.autocontinue) continue;
+      p.warnings.push_back(it.where + ": autoContinue is false; ArduPilot does not keep it (AP_Mission stores no such "
+                           "flag) and flies on past this item, as predicted");
+      break;
+    }
+  }
   if (autopilot.family == AutopilotFamily::PX4) {
     if (const std::string r = px4Rejects(m); !r.empty()) p.warnings.push_back(r);
     px4TakeoffRules(m, p.warnings);

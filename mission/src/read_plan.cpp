@@ -1,6 +1,7 @@
 // QGroundControl `.plan` reader, by QGC's own loading rules: PlanMasterController::loadFromFile,
 // MissionController::_loadJsonMissionFileV2, MissionItem::load (SimpleItem), SurveyComplexItem /
 // CorridorScanComplexItem / TransectStyleComplexItem::_load and JsonHelper's key validation.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -120,6 +121,24 @@ void calcAboveTerrain(const json& it, PlanItems& out) {
   out.above_terrain.emplace_back(out.items.size() - 1, above);
 }
 
+/// With plannedHomePosition's altitude null: refuses an item given above sea level (frame 0 or 5,
+/// not one whose altitude is placed above terrain here), which would need it; otherwise takes 0 m
+/// (every altitude is above home) and says so.
+void homeAltitudeUnknown(const PlanItems& p, const std::string& where, Mission& m) {
+  if (!std::isnan(m.home.alt_m)) return;
+  for (std::size_t k = 0; k < p.items.size(); ++k) {
+    const MissionItem& it = p.items[k];
+    const bool placed = std::any_of(p.above_terrain.begin(), p.above_terrain.end(), [&](const auto& a) { return a.first == k; });
+    if ((it.frame == 0 || it.frame == 5) && isPositional(it.command) && !placed) {
+      fail(it.where, "frame " + std::to_string(it.frame) + " (altitude above sea level) needs the home altitude, and "
+                     "plannedHomePosition[2] is null; give the home's altitude AMSL there");
+    }
+  }
+  m.home.alt_m = 0.0;
+  m.warnings.push_back(where + ".plannedHomePosition: altitude null (QGroundControl loads it as unknown); every item's "
+                       "altitude is above home, so it is not needed");
+}
+
 /// Places the items calcAboveTerrain left without an altitude at their height above home's
 /// altitude (no terrain data: flat ground at home's height assumed), and says so once.
 void placeTerrainItems(PlanItems& p, Mission& m) {
@@ -204,8 +223,13 @@ void readHome(const json& mj, const std::string& where, Mission& m) {
   if (!h.is_array() || h.size() != 3)
     fail(where, "field 'plannedHomePosition' = " + shown(h) + ", expected [latitude, longitude, altitude AMSL]");
   m.home = {realOf(h[0], where, "plannedHomePosition[0]", false), realOf(h[1], where, "plannedHomePosition[1]", false),
-            realOf(h[2], where, "plannedHomePosition[2]", false)};
+            realOf(h[2], where, "plannedHomePosition[2]", true)};
+  // QGroundControl loads a null altitude as unknown (JsonHelper::loadGeoCoordinate); it is needed
+  // only by items given above sea level, which homeAltitudeUnknown() checks once they are read.
+  const bool alt_unknown = std::isnan(m.home.alt_m);
+  if (alt_unknown) m.home.alt_m = 0.0;
   detail::checkHomePoint(m.home, where + ".plannedHomePosition");
+  if (alt_unknown) m.home.alt_m = std::numeric_limits<double>::quiet_NaN();
   m.home_known = !(m.home.lat_deg == 0.0 && m.home.lon_deg == 0.0);
   if (m.home_known) return;
   m.home = {};  // no home: taken from the first position (checkMission), as in a .waypoints file
@@ -213,8 +237,11 @@ void readHome(const json& mj, const std::string& where, Mission& m) {
 }
 
 void readMissionHeader(const json& mj, const std::string& where, Mission& m) {
-  if (mj.contains("version") && integerOf(mj.at("version"), where, "version", 0, 1000) != 2)
-    fail(where, "field 'version' = " + shown(mj.at("version")) + ", expected 2");
+  // QGroundControl does not check the mission's version (MissionController::_loadJsonMissionFileV2).
+  if (mj.contains("version") && integerOf(mj.at("version"), where, "version", 0, 1000) != 2) {
+    m.warnings.push_back(where + ": field 'version' = " + shown(mj.at("version")) + ", where QGroundControl writes 2 and "
+                         "reads any; read as version 2");
+  }
   m.firmware_type = static_cast<int>(integerOf(required(mj, "firmwareType", where, "a MAV_AUTOPILOT number"), where, "firmwareType", 0, 255));
   if (mj.contains("vehicleType")) m.vehicle_type = static_cast<int>(integerOf(mj.at("vehicleType"), where, "vehicleType", 0, 255));
   m.plan_cruise_speed_mps = speedOf(mj, "cruiseSpeed", where);
@@ -267,6 +294,7 @@ Mission parseQgcPlan(const std::string& text, const std::string& source, const R
   for (std::size_t i = 0; i < items.size(); ++i) readItem(items[i], where + ".items[" + std::to_string(i) + "]", p);
   if (p.items.empty()) fail(where, "no mission items, expected at least one");
   resolveJumps(p);
+  homeAltitudeUnknown(p, where, m);
   placeTerrainItems(p, m);
   m.items = std::move(p.items);
   checkMission(m, o);

@@ -139,7 +139,8 @@ void addRow(Mission& m, const Row& r, int row, bool& home_row, const std::string
     home_row = r.index == 0;  // Mission Planner: a first row numbered other than 0 means "no home row"
     if (home_row) return setHome(m, r, where);
     m.warnings.push_back(where + ": the first row is numbered " + std::to_string(r.index) +
-                         ", not 0: no home row; every row is an item");
+                         ", not 0: no home row; every row is an item, as Mission Planner reads it (QGroundControl takes the first row "
+                         "as home whatever its number, and would drop this item)");
   }
   const int seq = home_row ? row : row + 1;
   if (r.index != seq)
@@ -162,6 +163,7 @@ Mission parseQgcWpl(const std::string& text, const std::string& source, const Re
   std::string line;
   int number = 0, row = 0;
   bool home_row = false;
+  std::string first_comma;  // the first line read with decimal commas
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -173,6 +175,12 @@ Mission parseQgcWpl(const std::string& text, const std::string& source, const Re
     if (t.empty() || t[0] == '#') continue;
     const std::string where = source + ":" + std::to_string(number);
     addRow(m, parseRow(t, where), row++, home_row, where);
+    if (first_comma.empty() && t.find(',') != std::string::npos) first_comma = where;
+  }
+  if (!first_comma.empty()) {
+    m.warnings.push_back(first_comma + ": decimal commas read as decimal points (an older Mission Planner in a comma "
+                         "locale); QGroundControl reads such a number as 0 and a current Mission Planner splits it into two "
+                         "columns, so save the file with decimal points before uploading it");
   }
   if (number == 0) fail(source, "empty file, expected the header \"" + std::string(kHeader) + "\"");
   if (m.items.empty()) fail(source, "no mission items after the home row, expected at least one");

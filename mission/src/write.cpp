@@ -112,8 +112,10 @@ std::string toQgcWpl(const Mission& m) {
     << numberText(home ? m.home.lon_deg : 0.0) << "\t" << numberText(home ? m.home.alt_m : 0.0) << "\t1\n";
   for (const auto& it : renumbered(m)) {
     o << it.seq << "\t0\t" << it.frame << "\t" << it.command;
+    // NaN ("unchanged", e.g. a yaw) as Mission Planner writes it (.NET's NaN symbol, which QGroundControl's
+    // QString::toDouble also reads); 0 would be a yaw of north for PX4.
     for (double p : {it.param[0], it.param[1], it.param[2], it.param[3], it.lat_deg, it.lon_deg, it.alt_m})
-      o << "\t" << numberText(p);
+      o << "\t" << (std::isnan(p) ? std::string("NaN") : numberText(p));
     o << "\t" << (it.autocontinue ? 1 : 0) << "\n";
   }
   return o.str();

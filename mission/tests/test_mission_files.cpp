@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -97,6 +98,13 @@ TEST(MissionFiles, DecimalCommasInTabSeparatedLinesReadAsPoints) {
   for (char& c : dots) c = c == ',' ? '.' : c;
   const Mission d = parseQgcWpl(dots, "dots.waypoints");
   EXPECT_EQ(m, d);
+  // Neither QGroundControl nor a current Mission Planner reads the commas so: the reading is said.
+  const auto said = [](const Mission& x) {
+    return std::any_of(x.warnings.begin(), x.warnings.end(),
+                       [](const std::string& w) { return w.find("decimal commas read as decimal points") != std::string::npos; });
+  };
+  EXPECT_TRUE(said(m));
+  EXPECT_FALSE(said(d));
   EXPECT_DOUBLE_EQ(m.home.alt_m, 7.15);
   EXPECT_DOUBLE_EQ(m.items[1].param[1], 5.18);
   EXPECT_DOUBLE_EQ(m.items[4].alt_m, 12.5);
@@ -318,4 +326,52 @@ TEST(MissionFiles, Utf16NulBytesAndCrOnlyLineEndsAreNamedOrRead) {
   EXPECT_NE(errorOf([&] { parseQgcWpl(nul, "nul.waypoints"); }).find("nul.waypoints:3: a NUL byte at column 10"),
             std::string::npos) << errorOf([&] { parseQgcWpl(nul, "nul.waypoints"); });
   EXPECT_NE(errorOf([&] { parseQgcPlan(std::string("{\"a\":\0}", 7), "nul.plan"); }).find("NUL byte"), std::string::npos);
+}
+
+// What QGroundControl loads and ArduPilot or PX4 fly is read, not refused: a null home altitude
+// (JsonHelper::loadGeoCoordinate takes it as unknown) when no item needs it, a mission version other
+// than 2 (QGC does not check it), DO_CHANGE_SPEED -2 (MAVLink: back to the default speed).
+TEST(MissionFiles, WhatQgcLoadsIsReadWithANote) {
+  auto plan = [](const std::string& home_alt, int version, int frame, double alt, double speed) {
+    return std::string(R"({"fileType":"Plan","version":1,"groundStation":"QGroundControl","mission":{"version":)") +
+           std::to_string(version) + R"(,"firmwareType":12,"vehicleType":2,"plannedHomePosition":[43.716,10.4613,)" +
+           home_alt + R"(],"items":[
+      {"type":"SimpleItem","command":22,"frame":3,"autoContinue":true,"params":[0,0,0,null,43.716,10.4613,30],"doJumpId":1},
+      {"type":"SimpleItem","command":178,"frame":2,"autoContinue":true,"params":[1,)" + std::to_string(speed) +
+           R"(,-1,0,0,0,0],"doJumpId":2},
+      {"type":"SimpleItem","command":16,"frame":)" + std::to_string(frame) + R"(,"autoContinue":true,"params":[0,0,0,null,43.717,10.4613,)" +
+           std::to_string(alt) + R"(],"doJumpId":3},
+      {"type":"SimpleItem","command":20,"frame":2,"autoContinue":true,"params":[0,0,0,0,0,0,0],"doJumpId":4}]}})";
+  };
+  auto notes = [](const Mission& m) {
+    std::string all;
+    for (const auto& w : m.warnings) all += w + "\n";
+    return all;
+  };
+  const Mission unknown = parseQgcPlan(plan("null", 2, 3, 30, 5), "h.plan");
+  EXPECT_DOUBLE_EQ(unknown.home.alt_m, 0.0);
+  EXPECT_NE(notes(unknown).find("h.plan: mission.plannedHomePosition: altitude null (QGroundControl loads it as unknown)"),
+            std::string::npos) << notes(unknown);
+  EXPECT_NE(errorOf([&] { parseQgcPlan(plan("null", 2, 0, 630, 5), "amsl.plan"); })
+                .find("amsl.plan: mission.items[2]: frame 0 (altitude above sea level) needs the home altitude, and "
+                      "plannedHomePosition[2] is null"),
+            std::string::npos);
+  const Mission v3 = parseQgcPlan(plan("600", 3, 3, 30, 5), "v.plan");
+  EXPECT_NE(notes(v3).find("v.plan: mission: field 'version' = 3, where QGroundControl writes 2 and reads any"), std::string::npos)
+      << notes(v3);
+  EXPECT_EQ(notes(parseQgcPlan(plan("600", 2, 3, 30, 5), "ok.plan")), "");
+  EXPECT_NO_THROW(parseQgcPlan(plan("600", 2, 3, 30, -2), "default.plan"));
+  EXPECT_NE(errorOf([&] { parseQgcPlan(plan("600", 2, 3, 30, 0), "zero.plan"); }).find("param2 (speed) = 0"), std::string::npos);
+  EXPECT_NE(errorOf([&] { parseQgcPlan(plan("600", 2, 3, 30, -3), "minus3.plan"); }).find("param2 (speed) = -3"), std::string::npos);
+}
+
+// A yaw of NaN ("unchanged") is written to .waypoints as Mission Planner writes it, NaN, and read
+// back the same; it was written 0, a commanded heading of north at every PX4 waypoint.
+TEST(MissionFiles, AnUnchangedYawIsWrittenAsNaNAndReadBack) {
+  const std::string text = "QGC WPL 110\n" + kHome + "1\t0\t3\t22\t0\t0\t0\tNaN\t43.7160040\t10.4613040\t10\t1\n";
+  const Mission m = parseQgcWpl(text, "yaw.waypoints");
+  ASSERT_TRUE(std::isnan(m.items[0].param[3]));
+  const std::string written = toQgcWpl(m);
+  EXPECT_NE(written.find("\t22\t0\t0\t0\tNaN\t"), std::string::npos) << written;
+  EXPECT_EQ(parseQgcWpl(written, "again.waypoints"), m);
 }

@@ -258,3 +258,39 @@ TEST(PredictNotes, TheApproachOfALandWithAPositionIsMissionFlightAndTheLandingIs
     EXPECT_LT(landing.distance_m, 30.0) << toString(ap.family);
   }
 }
+
+// PX4's MissionBase::on_active moves past a reached item only when its autocontinue is set: the
+// prediction ends at the first item without it, in the air, and says so (it flew the whole mission,
+// 2:42 where the vehicle stops after 0:30). ArduPilot does not keep the flag: noted, flown on.
+TEST(PredictNotes, Px4StopsAtAnItemWithoutAutoContinueAndArduPilotFliesOn) {
+  Mission m = localMission({{100, 0, 10}, {200, 0, 10}, {300, 0, 10}});
+  m.items[2].autocontinue = false;  // the second waypoint
+  m.items[2].where = "stop.plan: mission.items[2]";
+  const MissionPrediction all = irisPrediction(localMission({{100, 0, 10}, {200, 0, 10}, {300, 0, 10}}), px4());
+  const MissionPrediction stop = irisPrediction(m, px4());
+  EXPECT_LT(stop.total.time_s, 0.7 * all.total.time_s);
+  const FlightSample& end = stop.flight.samples.back();
+  EXPECT_NEAR(end.position.x(), 200.0, 11.0);  // within NAV_ACC_RAD of the second waypoint
+  EXPECT_NEAR(end.position.z(), 10.0, 1.0);
+  const std::string notes = joined(stop.warnings);
+  EXPECT_NE(notes.find("stop.plan: mission.items[2]: autoContinue is false: PX4 stops at this item and waits for the pilot"),
+            std::string::npos) << notes;
+  EXPECT_NE(notes.find("the 2 item(s) after it are not flown"), std::string::npos) << notes;
+  const MissionPrediction ardu = irisPrediction(m, AutopilotConfig{});
+  const MissionPrediction ardu_all = irisPrediction(localMission({{100, 0, 10}, {200, 0, 10}, {300, 0, 10}}), AutopilotConfig{});
+  EXPECT_NEAR(ardu.total.time_s, ardu_all.total.time_s, 1e-9);
+  EXPECT_NE(joined(ardu.warnings).find("autoContinue is false; ArduPilot does not keep it"), std::string::npos);
+}
+
+// PX4 keeps at most 500 mission items on NuttX hardware (navigation.h NUM_MISSIONS_SUPPORTED) and
+// refuses a longer upload: a longer mission is flown and said not to fit a PX4 vehicle.
+TEST(PredictNotes, AMissionLongerThanPx4KeepsIsSaid) {
+  std::vector<Eigen::Vector3d> wps;
+  for (int k = 0; k < 499; ++k) wps.emplace_back(10.0 * (k % 20), 10.0 * (k / 20), 10.0);
+  const Mission m = localMission(wps);  // take-off, 499 waypoints, RTL: 501 items
+  ASSERT_EQ(m.items.size(), 501u);
+  EXPECT_NE(notesOf(m, px4()).find("test: 501 items: PX4 on flight-controller hardware keeps at most 500"), std::string::npos);
+  EXPECT_EQ(notesOf(m, AutopilotConfig{}).find("items: PX4"), std::string::npos);
+  wps.pop_back();
+  EXPECT_EQ(notesOf(localMission(wps), px4()).find("items: PX4"), std::string::npos);
+}

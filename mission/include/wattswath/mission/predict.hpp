@@ -86,6 +86,14 @@ struct MissionPrediction {
   std::vector<std::string> warnings;                ///< from sequencing and the model
 };
 
+/// PX4 keeps at most this many mission items on flight-controller hardware (navigation.h
+/// NUM_MISSIONS_SUPPORTED on NuttX, 1.13 and later; 2000 before) and refuses a longer upload.
+inline constexpr std::size_t kPx4MaxMissionItems = 500;
+
+/// A note when a mission of `items` items (home not counted) is longer than `autopilot` keeps,
+/// naming `source`; empty when it fits (ArduPilot's limit depends on the board, so only PX4's is checked).
+std::string missionSizeNote(std::size_t items, const AutopilotConfig& autopilot, const std::string& source);
+
 /// Predicts `m` flown by `autopilot` on vehicle `v` with energy model `model`. Throws what
 /// sequenceMission and flyMission throw, and std::invalid_argument for settings out of range.
 MissionPrediction predictMission(const Mission& m, const energy::Vehicle& v, const energy::EnergyModel& model,
