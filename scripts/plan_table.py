@@ -64,8 +64,8 @@ def flown_row(label, j):
     e = fl["energy_j"]
     def pct(b):
         return "-" if b is None else "%.1f" % (100.0 * (b - e) / b)
-    t = fl["time_s"]
-    return "| %s | %s | %.1f | %d:%02d | %s | %s |" % (label, fl["written"], e / 1000, int(t) // 60, int(round(t)) % 60,
+    t = int(round(fl["time_s"]))  # whole seconds first: 239.7 s is 4:00, not 3:00
+    return "| %s | %s | %.1f | %d:%02d | %s | %s |" % (label, fl["written"], e / 1000, t // 60, t % 60,
                                                    pct(best("shortest path")), pct(best("ground-station default")))
 
 
@@ -142,6 +142,13 @@ and the line count one below full coverage. Against the table before (same model
 lines only: rectangle02 62.4 -> 65.3 kJ (the only row dearer), polygon 96.9 -> 88.7. Wall times
 are of an otherwise idle machine (2 cores); they halved when the cell-order search began estimating
 its moves in O(1) (docs/performance.md), with every plan the same to the joule.
+
+Since the camera-coverage fallback (2026-11-27: the camera is off along turns, so when the cheapest
+plan's photos cover less than 99 %% of the area, `plan` plans again with straight sweeps only and
+writes those when their photos cover more), a row may be such a second plan: its run searched no
+spirals, so it has no best-spiral baseline ("-", JSON `best_spiral` null) and the straight-lines
+table below shows no saving from spirals for it. The E-Spiral polygon is one: its spiral (84.2 kJ,
+99.6 kJ as flown on 2026-11-27) photographed 90.5 %% of the area, the straight sweeps 97.7 %%.
 
 | area | plan | energy [kJ] | coverage [%%] | time [s] | length [m] | saving vs shortest path [%%] | vs ground-station default [%%] | vs best spiral [%%] | plan / bound | wall [s] |
 |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
