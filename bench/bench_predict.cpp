@@ -157,13 +157,21 @@ void BM_Stage_Sequence(benchmark::State& state) {
 }
 
 // Stage 2: the steps flown by the family's behaviour model (dt 0.01 s, samples every 0.1 s).
+// Flight settings with the vehicle's airframe response (its lean lag), as predictMission flies it.
+mission::FlightSettings vehicleFlight() {
+  mission::FlightSettings fs;
+  fs.airframe = mission::airframeOfVehicle(vehicle(), "iris.json");
+  return fs;
+}
+
 void BM_Stage_Fly(benchmark::State& state) {
   const int family = static_cast<int>(state.range(0));
   const mission::AutopilotConfig ap = autopilot(family);
   const auto steps = mission::sequenceMission(theSurvey());
+  const mission::FlightSettings fs = vehicleFlight();
   std::size_t samples = 0;
   for (auto _ : state) {
-    const mission::FlownMission f = mission::flyMission(steps, ap);
+    const mission::FlownMission f = mission::flyMission(steps, ap, fs);
     samples = f.samples.size();
     benchmark::DoNotOptimize(f.samples.data());
   }
@@ -174,7 +182,7 @@ void BM_Stage_Fly(benchmark::State& state) {
 // Stage 3: the flown trajectory as energy pieces.
 void BM_Stage_ToPieces(benchmark::State& state) {
   const int family = static_cast<int>(state.range(0));
-  const mission::FlownMission f = mission::flyMission(mission::sequenceMission(theSurvey()), autopilot(family));
+  const mission::FlownMission f = mission::flyMission(mission::sequenceMission(theSurvey()), autopilot(family), vehicleFlight());
   for (auto _ : state) {
     const mission::FlightPieces p = mission::toPieces(f);
     benchmark::DoNotOptimize(p.pieces.data());
@@ -186,7 +194,7 @@ void BM_Stage_ToPieces(benchmark::State& state) {
 // piece on its own, so that it can be added to its phase and its mission item).
 void BM_Stage_Energy(benchmark::State& state) {
   const int family = static_cast<int>(state.range(0));
-  const mission::FlightPieces fp = mission::toPieces(mission::flyMission(mission::sequenceMission(theSurvey()), autopilot(family)));
+  const mission::FlightPieces fp = mission::toPieces(mission::flyMission(mission::sequenceMission(theSurvey()), autopilot(family), vehicleFlight()));
   for (auto _ : state) {
     energy::Breakdown b = model().emptyBreakdown();
     double total = 0.0;
