@@ -9,6 +9,7 @@
 #include "cli.hpp"
 #include "log_inputs.hpp"
 #include "replay_mission.hpp"
+#include "wattswath/report/svg.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
 #include "wattswath/energy/candidate_effects.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
@@ -27,6 +28,7 @@ struct CalibrateOptions {
   int evaluations = 150;
   bool json = false, force = false, lenient = false, keep_energy = false;
   logs::LogReadOptions read;
+  MeasurementReport measurement;  // the power and position checks of each log (--trust-power)
 };
 
 // Leg by leg: measured and predicted time [s] and energy [J] (null where a passage was not matched).
@@ -47,6 +49,7 @@ nlohmann::json comparisonJson(const cal::FlightComparison& c) {
           {"energy_error_pct", c.energy_error_pct},
           {"leg_time_mape_pct", num(c.leg_time_mape_pct)},
           {"legs_matched", c.legs_matched},
+          {"legs_total", c.measured.leg_s.size()},
           {"measured", {{"time_s", c.measured.total_s}, {"energy_j", c.measured.energy_j}, {"takeoff_s", num(c.measured.takeoff_s)},
                         {"mission_s", num(c.measured.mission_s)}, {"return_s", num(c.measured.return_s)}}},
           {"predicted", {{"time_s", c.predicted.total_s}, {"energy_j", c.predicted.energy_j}, {"takeoff_s", num(c.predicted.takeoff_s)},
@@ -62,7 +65,9 @@ void printComparisons(const char* title, const std::vector<cal::FlightComparison
     std::cout << "  " << c.name << ": time " << c.predicted.total_s << " s vs " << c.measured.total_s << " s measured ("
               << std::showpos << c.time_error_pct << std::noshowpos << " %), energy " << c.predicted.energy_j / 3600.0 << " Wh vs "
               << c.measured.energy_j / 3600.0 << " Wh (" << std::showpos << c.energy_error_pct << std::noshowpos
-              << " %), leg time MAPE " << c.leg_time_mape_pct << " % over " << c.legs_matched << " legs\n    "
+              << " %), leg time MAPE "
+              << (std::isfinite(c.leg_time_mape_pct) ? report::formatNumber(c.leg_time_mape_pct, 1) + " %" : std::string("-"))
+              << " over " << c.legs_matched << " of " << c.measured.leg_s.size() << " legs\n    "
               << launchSentence(c.launch.x(), c.launch.y()) << "\n";
   }
 }
@@ -80,9 +85,10 @@ void registerCalibrateCommand(CLI::App& app) {
   cmd->add_option("--out", o->out, "Calibrated vehicle file to write")->required();
   cmd->add_option("--effects", o->effects, "Effects of the energy model to fit")->capture_default_str();
   cmd->add_option("--evaluations", o->evaluations, "Simulated flights per parameter fit")->check(CLI::Range(10, 5000))->capture_default_str();
-  cmd->add_flag("--keep-energy", o->keep_energy, "Calibrate the flight behaviour only; keep the energy coefficients");
+  cmd->add_flag("--keep-energy", o->keep_energy, "Calibrate the flight behaviour only; keep the energy coefficients (the vehicle file's calibration when it has one, else the --effects from its physics)");
   cmd->add_flag("--lenient-mission", o->lenient, "Skip unsupported mission commands that do not move the vehicle (not navigation commands) with a warning");
   addLogReadOptions(cmd, o->read);
+  addTrustPowerFlag(cmd, o->measurement.trust_power);
   addForceFlag(cmd, o->force);
   addJsonFlag(cmd, o->json);
   cmd->callback([o] {
@@ -95,7 +101,17 @@ void registerCalibrateCommand(CLI::App& app) {
     inputs.push_back(o->vehicle);
     checkWritable(o->out, o->force, inputs);
     en::Vehicle v = en::loadVehicle(o->vehicle);
-    const en::EnergyModel model = en::buildModel(v, en::splitEffectList(o->effects));
+    en::EnergyModel model = en::buildModel(v, en::splitEffectList(o->effects));
+    std::vector<std::string> model_notes;
+    if (o->keep_energy) {
+      if (const auto kept = cal::calibratedModel(v)) {  // keep what the file holds, not the physics
+        model = kept->model;
+        std::string names;
+        for (const auto& n : kept->model.effectNames()) names += (names.empty() ? "" : ",") + n;
+        model_notes.push_back("--keep-energy: the energy model of " + o->vehicle + "'s calibration is kept (" + names +
+                              " with their calibrated coefficients; --effects is not used)");
+      }
+    }
     const ms::AutopilotConfig ap = ms::parseAutopilot(v.autopilot_json, o->vehicle);
     std::vector<cal::MissionFlight> flights;
     ms::ReadOptions ro;
@@ -105,10 +121,20 @@ void registerCalibrateCommand(CLI::App& app) {
     for (std::size_t i = 0; i < o->logs.size(); ++i) {
       progress("calibrate: reading " + o->logs[i] + " and " + o->missions[i]);
       MissionLog ml = readMissionLog(o->logs[i], o->read);
+      checkLog(ml.log, o->logs[i], v, o->measurement);  // as replay, fit and diagnose check theirs
       if (!ml.note.empty()) window_notes.push_back(ml.note);
       ml.window["log"] = o->logs[i];
       windows.push_back(ml.window);
-      flights.push_back({o->logs[i], ms::readMission(o->missions[i], ro), std::move(ml.log)});
+      ms::Mission m;
+      try {
+        m = ms::readMission(o->missions[i], ro);
+      } catch (const ms::MissionError& e) {  // the mission readers name their own --lenient
+        std::string what = e.what();
+        if (const auto at = what.find("use --lenient"); at != std::string::npos) what.replace(at, 13, "use --lenient-mission");
+        throw std::runtime_error(what);
+      }
+      for (const auto& w : m.warnings) window_notes.push_back(w);  // what --lenient-mission skipped, and other readings
+      flights.push_back({o->logs[i], std::move(m), std::move(ml.log)});
     }
     cal::CalibrationSettings cs;
     cs.max_evaluations = o->evaluations;
@@ -130,8 +156,12 @@ void registerCalibrateCommand(CLI::App& app) {
                                                                    {"samples", r.tracking.samples}}
                                                   : nlohmann::json(nullptr);
       j["log_windows"] = windows;  // the part of each log compared with its mission's prediction
+      j["reading_notes"] = window_notes;  // which part of each log, and what reading each mission noted
+      j["measurement"] = o->measurement.toJson();
       j["fitted"] = r.fitted;
-      j["notes"] = r.notes;
+      std::vector<std::string> notes = model_notes;
+      notes.insert(notes.end(), r.notes.begin(), r.notes.end());
+      j["notes"] = notes;
       j["kept_at_start"] = r.kept_at_start;  // behaviour parameters the flights do not call to change
       j["flights_agree"] = r.flights_agree;
       j["per_flight"] = nlohmann::json::array();
@@ -146,10 +176,12 @@ void registerCalibrateCommand(CLI::App& app) {
       return;
     }
     for (const auto& n : window_notes) std::cout << "note: " << n << "\n";
+    o->measurement.print();
     printComparisons("before (firmware defaults / given parameters, vehicle physics):", r.before);
     printComparisons("after calibration:", r.after);
     std::cout << "fitted:\n";
     for (const auto& f : r.fitted) std::cout << "  " << f << "\n";
+    for (const auto& n : model_notes) std::cout << "note: " << n << "\n";
     for (const auto& n : r.notes) std::cout << "note: " << n << "\n";
   });
 }

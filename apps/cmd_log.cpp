@@ -43,7 +43,7 @@ struct Range {
 
 bool airborne(const logs::FlightLog& log, double t) {
   return std::any_of(log.airborne.begin(), log.airborne.end(),
-                     [t](const logs::TimeWindow& w) { return t >= w.begin && t <= w.end; });
+                     [t](const logs::TimeWindow& w) { return w.contains(t); });
 }
 
 nlohmann::json rangeJson(Range r) {

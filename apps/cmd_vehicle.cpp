@@ -59,12 +59,26 @@ std::string readText(const std::string& path) {
 
 // BASE's JSON text (validated as a vehicle first, so every error names the file and field) with
 // its `autopilot` object replaced; the other fields keep their order and text.
-std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson& autopilot, const OrderedJson& airframe) {
+// A calibration in BASE (extensions.calibration) was fitted with BASE's autopilot parameters, so it
+// is left out (`notes` says so); a BASE airframe is kept unless the log determines one.
+std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson& autopilot, const OrderedJson& airframe,
+                                 std::vector<std::string>& notes) {
   energy::loadVehicle(base_path);
   OrderedJson j = OrderedJson::parse(readText(base_path));
   j["autopilot"] = autopilot;
+  if (j.contains("extensions") && j["extensions"].is_object() && j["extensions"].contains("calibration")) {
+    j["extensions"].erase("calibration");
+    notes.push_back(base_path + "'s calibration (extensions.calibration) was fitted with its own autopilot parameters, so "
+                    "it is left out of the file written; calibrate again with logs of this vehicle's missions");
+  }
   if (!airframe.is_null()) j["extensions"]["airframe"] = airframe;
   return j.dump(2) + "\n";
+}
+
+// True when BASE's file has an extensions.airframe object (predict flies with it).
+bool baseHasAirframe(const std::string& base_path) {
+  const OrderedJson j = OrderedJson::parse(readText(base_path));
+  return j.contains("extensions") && j["extensions"].is_object() && j["extensions"].contains("airframe");
 }
 
 // The airframe identified from the log (DataFlash only): the extension object with what the log
@@ -122,8 +136,6 @@ void warnAbout(const logs::AutopilotParameters& p) {
   if (family != "ArduCopter" && family != "PX4")
     progress("warning: " + p.source + ": firmware " + family + " (" + (p.firmware_text.empty() ? "no version text" : p.firmware_text) +
              "); the mission flight models know ArduCopter and PX4 only");
-  if (p.firmware.version.empty())
-    progress("warning: " + p.source + ": the log does not say the firmware version; set autopilot.version by hand");
   for (const auto& w : p.warnings) progress("warning: " + w);
   if (!p.changed_after_takeoff.empty()) {
     std::string names;
@@ -139,10 +151,19 @@ void runParams(const ParamsOptions& o) {
   const auto kept = o.all ? p.parameters : logs::flightBehaviourParameters(p);
   const auto airframe = identifyAirframe(o);
   const auto& drag = airframe.drag;
-  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept), airframeObject(airframe, o.log));
+  std::vector<std::string> notes;
+  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept), airframeObject(airframe, o.log), notes);
   energy::parseVehicle(text, o.out);  // what is written reads back
   writeTextFileAtomic(o.out, text);
   warnAbout(p);
+  if (p.firmware.version.empty()) {
+    notes.push_back(p.source + ": the log does not say the firmware version, so the file gives none and predict flies it as " +
+                    std::string(p.firmware.family == "PX4" ? "PX4 1.14" : "ArduCopter 4.5 (S-curve model)") +
+                    ", saying so; set autopilot.version by hand");
+  }
+  const bool base_airframe = baseHasAirframe(o.vehicle);
+  const std::string drag_fallback = base_airframe ? " (predict uses " + o.vehicle + "'s extensions.airframe, kept in the file)"
+                                                  : " (predict uses the vehicle's drag area)";
   if (o.json) {
     printJson({{"log", o.log},
                {"out", o.out},
@@ -155,21 +176,24 @@ void runParams(const ParamsOptions& o) {
                {"selection", p.selection},
                {"changed_after_takeoff", p.changed_after_takeoff},
                {"kept", parameterObject(kept)},
-               {"airframe", airframeJson(airframe)}});
+               {"airframe", airframeJson(airframe)},
+               {"notes", notes}});
   } else {
     progress("wrote " + o.out + ": " + p.firmware.family + (p.firmware.version.empty() ? "" : " " + p.firmware.version) +
              ", " + std::to_string(kept.size()) + " of the log's " + std::to_string(p.parameters.size()) +
              " parameters (" + (o.all ? "all" : "flight behaviour") + ")");
     progress(drag.determined ? "airframe drag (extensions.airframe): " + std::to_string(drag.drag_linear_per_s) + " 1/s x v + " +
                                    std::to_string(drag.drag_quadratic_per_m) + " 1/m x v^2, R^2 " + std::to_string(drag.r2)
-                             : "airframe drag not determined by this log: " + drag.reason + " (predict uses the vehicle's drag area)");
+                             : "airframe drag not determined by this log: " + drag.reason + drag_fallback);
     const auto& r = airframe.response;
     progress(r.determined ? "airframe response (extensions.airframe.response_s): " + std::to_string(r.response_s) +
                                 " s lag of the acceleration behind the position controller's, R^2 " + std::to_string(r.r2)
                           : "airframe response not determined by this log: " + r.reason +
                                 (p.firmware.family == "PX4"
                                      ? std::string(" (predict's PX4 model follows its jerk-limited setpoints without a lag)")
-                                     : std::string(" (predict takes the attitude time constant, ArduCopter ATC_INPUT_TC)")));
+                                     : base_airframe ? drag_fallback
+                                                     : std::string(" (predict takes the attitude time constant, ArduCopter ATC_INPUT_TC)")));
+    for (const auto& n : notes) progress("note: " + n);
   }
 }
 

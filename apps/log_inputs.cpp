@@ -25,6 +25,29 @@ CLI::Option* addTrustPowerFlag(CLI::App* cmd, bool& trust) {
                        "the output says so");
 }
 
+void checkLog(logs::FlightLog& log, const std::string& p, const energy::Vehicle& vehicle, MeasurementReport& report) {
+  const auto c = calibration::checkMeasurement(log, vehicle);
+  if (!c.position_problem.empty()) throw std::runtime_error(p + ": " + c.position_problem);
+  if (!c.power_problem.empty() && !report.trust_power) {
+    throw std::runtime_error(p + ": " + c.power_problem +
+                             ". Refused: a model compared with this power says nothing; use --trust-power to use it anyway");
+  }
+  for (const auto& n : c.notes) report.lines.push_back(p + ": " + n);
+  if (!c.power_problem.empty()) {
+    report.lines.push_back(p + ": measured power used only because of --trust-power: " + c.power_problem);
+  }
+  auto num = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  report.logs.push_back({{"log", p},
+                         {"power", c.power_problem.empty() ? "plausible" : "implausible, used because of --trust-power"},
+                         {"power_problem", c.power_problem},
+                         {"airborne_samples", c.airborne_samples},
+                         {"median_power_w", num(c.median_power_w)},
+                         {"median_current_a", num(c.median_current_a)},
+                         {"hover_power_w", num(c.hover_power_w)},
+                         {"position_cut_at_s", c.cut ? json(c.cut_at_s) : json(nullptr)},
+                         {"notes", c.notes}});
+}
+
 std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::string>& paths,
                                                       const logs::LogReadOptions& read,
                                                       const energy::Vehicle& vehicle, MeasurementReport& report) {
@@ -32,26 +55,7 @@ std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::str
   for (const auto& p : paths) {
     progress("reading " + p);
     auto log = logs::readFlightLog(p, read);
-    const auto c = calibration::checkMeasurement(log, vehicle);
-    if (!c.position_problem.empty()) throw std::runtime_error(p + ": " + c.position_problem);
-    if (!c.power_problem.empty() && !report.trust_power) {
-      throw std::runtime_error(p + ": " + c.power_problem +
-                               ". Refused: a model compared with this power says nothing; use --trust-power to use it anyway");
-    }
-    for (const auto& n : c.notes) report.lines.push_back(p + ": " + n);
-    if (!c.power_problem.empty()) {
-      report.lines.push_back(p + ": measured power used only because of --trust-power: " + c.power_problem);
-    }
-    auto num = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
-    report.logs.push_back({{"log", p},
-                           {"power", c.power_problem.empty() ? "plausible" : "implausible, used because of --trust-power"},
-                           {"power_problem", c.power_problem},
-                           {"airborne_samples", c.airborne_samples},
-                           {"median_power_w", num(c.median_power_w)},
-                           {"median_current_a", num(c.median_current_a)},
-                           {"hover_power_w", num(c.hover_power_w)},
-                           {"position_cut_at_s", c.cut ? json(c.cut_at_s) : json(nullptr)},
-                           {"notes", c.notes}});
+    checkLog(log, p, vehicle, report);
     out.push_back(calibration::prepareLog(log));
   }
   return out;

@@ -31,6 +31,11 @@ struct MeasurementReport {
 /// Adds `--trust-power` (use a measured power the checks find implausible, stated in the output) to `cmd`.
 CLI::Option* addTrustPowerFlag(CLI::App* cmd, bool& trust);
 
+/// Checks `log` (read from `path`) against `vehicle` as readCheckedLogs does: cuts a diverging
+/// position estimate, throws std::runtime_error "PATH: ..." for an unusable position or (unless
+/// `report.trust_power`) an implausible power, and records every finding in `report`.
+void checkLog(logs::FlightLog& log, const std::string& path, const energy::Vehicle& vehicle, MeasurementReport& report);
+
 /// Reads each of `paths` (logs::readFlightLog), checks it against `vehicle` and prepares it for
 /// replay. Throws std::runtime_error "FILE: ..." when the position estimate is unusable, or when the
 /// measured power is implausible and `report.trust_power` is false (naming the current and what

@@ -6,6 +6,7 @@
 
 #include "predict_spread.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -101,6 +102,8 @@ json flightJson(const calibration::FlightComparison& c, const std::string& log, 
           {"energy_error_pct", c.energy_error_pct},
           {"leg_time_mape_pct", numOrNull(c.leg_time_mape_pct)},
           {"legs_matched", c.legs_matched},
+          // Why the log may not be of this mission (few legs found, alignment at its limit); null when it fits.
+          {"match_problem", c.match_problem.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.match_problem)},
           // Where the kinematics differ: time spent slow (stops, sharp corners) and how fast the legs peak.
           {"slow_time_s", {{"measured", numOrNull(c.measured.slow_s)}, {"predicted", numOrNull(c.predicted.slow_s)}}},
           {"leg_peak_speed_ratio", numOrNull(c.leg_peak_ratio)},
@@ -138,12 +141,16 @@ MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup
         flightJson(c, log_paths[i], mission_paths[i], model_text, mission::toString(ap.family), replay_j));
     out.json.back()["log_window"] = ml.window;  // the part of the log compared with the prediction
     if (!ml.note.empty()) out.notes.push_back(ml.note);
+    if (!c.match_problem.empty()) out.notes.push_back(log_paths[i] + " against " + mission_paths[i] + ": " + c.match_problem);
     out.json.back()["calibration_chosen"] =
         choice ? nlohmann::json{{"parameter", setup.disputed_parameter}, {"value", choice->value}, {"flights", choice->flights}}
                : nlohmann::json(nullptr);
     // The predicted trajectory for the report's speed figure (compareFlight keeps only its times).
     const auto pred =
         mission::predictMission(calibration::missionLaunchedAt(f.mission, c.launch), v, model, ap, setup.settings);
+    // What predict would say of this mission (started in the air, ends in the air, ...), once each.
+    for (const auto& w : pred.warnings)
+      if (std::find(out.notes.begin(), out.notes.end(), w) == out.notes.end()) out.notes.push_back(w);
     out.report.flights.push_back(reportFlight(f, mission_paths[i], c, pred, replay_j));
     out.report.flights.back().kinematics_note = kinematicsSentence(out.json.back());
   }
@@ -170,7 +177,7 @@ std::string kinematicsSentence(const json& m) {
   std::ostringstream o;
   o << std::fixed << std::setprecision(0);
   if (slow["measured"].is_null() || slow["predicted"].is_null()) {
-    o << "Time below 1 m/s and peak speeds: not compared (no waypoint passage matched).";
+    o << "Time below 1 m/s and peak speeds: not compared (fewer than two waypoint passages matched).";
     return o.str();
   }
   o << "Between the first and last waypoint the vehicle spent " << slow["measured"].get<double>() << " s below 1 m/s, the prediction "

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -253,6 +254,91 @@ TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
               m["predicted_energy_j"].get<double>() - m["measured_energy_j"].get<double>(), 1e-6);
   std::remove(out.c_str());
 }
+// calibrate checks each log's power as replay, fit and diagnose do: a current stuck at one value is
+// refused (it fitted 213.7 W of hover to it and wrote the file without a word).
+TEST(CliPredict, CalibrateRefusesAPowerNoFlyingVehicleDraws) {
+  const std::string f = "2017-11-20_1610_energy14";
+  std::ifstream in(sharedData("iris-flights/" + f + ".csv"));
+  std::string header, line, text;
+  while (std::getline(in, header) && !header.empty() && header[0] == '#') text += header + "\n";  // comment lines
+  text += header + "\n";
+  std::vector<std::string> cols;
+  if (!header.empty() && header.back() == '\r') header.pop_back();
+  {
+    std::stringstream h(header);
+    for (std::string c; std::getline(h, c, ',');) cols.push_back(c);
+  }
+  const auto at = std::find(cols.begin(), cols.end(), "current_a") - cols.begin();
+  ASSERT_LT(static_cast<std::size_t>(at), cols.size());
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream l(line);
+    std::vector<std::string> v;
+    for (std::string c; std::getline(l, c, ',');) v.push_back(c);
+    v[static_cast<std::size_t>(at)] = "20";
+    std::string row;
+    for (std::size_t k = 0; k < v.size(); ++k) row += (k ? "," : "") + v[k];
+    text += row + "\n";
+  }
+  const std::string log = tempPath("constant_current.csv"), out = tempPath("constant_calibrated.json");
+  std::ofstream(log) << text;
+  std::remove(out.c_str());
+  const auto r = run(cli("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
+                         " --mission " + sharedData("iris-flights/mission__" + f + ".waypoints") + " --out " + out +
+                         " --evaluations 10 2>&1"));
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("constant"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--trust-power"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  std::remove(log.c_str());
+}
+
+// A log of another mission matches a few waypoints by chance: calibrate refuses to fit to it and
+// replay --mission says so (it matched 0 of 4 legs, printed "leg time MAPE nan %" and wrote a file).
+TEST(CliPredict, ALogOfAnotherMissionIsSaidNotToBeOfIt) {
+  const std::string log = sharedData("iris-flights/2017-10-18_1436_energy14.csv");
+  const std::string other = sharedData("sitl/square_10mps.waypoints");
+  const std::string out = tempPath("mismatch.json");
+  std::remove(out.c_str());
+  const auto r = run(cli("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
+                         " --mission " + other + " --out " + out + " --evaluations 10 2>&1"));
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("legs were found flown in the log"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("refusing to calibrate on it"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const json rp = runJson("replay --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
+                          " --mission " + other + " --json");
+  const auto& m = rp["mission_prediction"][0];
+  ASSERT_TRUE(m["match_problem"].is_string()) << m.dump();
+  EXPECT_NE(m["match_problem"].get<std::string>().find("is this the log of this mission"), std::string::npos);
+  // Its own mission fits.
+  const json own = runJson("replay --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
+                           " --mission " + sharedData("iris-flights/mission__2017-10-18_1436_energy14.waypoints") + " --json");
+  EXPECT_TRUE(own["mission_prediction"][0]["match_problem"].is_null()) << own["mission_prediction"][0]["match_problem"];
+}
+
+// --keep-energy keeps a calibrated vehicle file's energy model (it rebuilt the physics: hover
+// 235.6 W became 215.1 W).
+TEST(CliPredict, KeepEnergyKeepsTheFilesCalibratedEnergyModel) {
+  const std::string f = "2017-11-20_1610_energy14";
+  const std::string log = sharedData("iris-flights/" + f + ".csv");
+  const std::string mission = sharedData("iris-flights/mission__" + f + ".waypoints");
+  const std::string first = tempPath("keep_first.json"), second = tempPath("keep_second.json");
+  std::remove(first.c_str());
+  std::remove(second.c_str());
+  runJson("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log + " --mission " +
+          mission + " --out " + first + " --evaluations 20 --json");
+  const json c = runJson("calibrate --vehicle " + first + " --log " + log + " --mission " + mission + " --out " + second +
+                         " --evaluations 20 --keep-energy --json");
+  const json a = json::parse(std::ifstream(first))["extensions"]["calibration"];
+  const json b = json::parse(std::ifstream(second))["extensions"]["calibration"];
+  EXPECT_EQ(a["coefficients"], b["coefficients"]) << a["coefficients"] << "\n" << b["coefficients"];
+  EXPECT_NE(c["notes"].dump().find("--keep-energy: the energy model of"), std::string::npos) << c["notes"];
+  std::remove(first.c_str());
+  std::remove(second.c_str());
+}
+
 #endif
 
 TEST(CliPredict, ACalibrationWhoseFlightsDisagreeGivesTheSpreadAndWidensTheMargin) {

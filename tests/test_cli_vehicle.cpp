@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -131,4 +132,39 @@ TEST_F(CliVehicle, Px4LogAndArduCopter35WithoutVersion) {
   const auto b = nlohmann::json::parse(readAll(out("ac35.json"))).at("autopilot");
   EXPECT_EQ(b.at("firmware"), "ArduCopter");
   EXPECT_FALSE(b.contains("version"));
+}
+
+// A file written from a log without a firmware version is flown by predict as ArduCopter 4.5, and
+// predict now says so (it said nothing); vehicle params says it too, in text and JSON.
+TEST_F(CliVehicle, AFileWithoutAVersionIsSaidToBeFlownAsTheDefault) {
+  const auto w = params(sharedData("autopilot-logs/arducopter-3.5_quad_rtl.bin"), iris(), out("nover.json"), "--json");
+  ASSERT_EQ(w.status, 0) << w.output;
+  const auto p = run(cliBinary() + " predict " + sharedData("sitl/square_5mps.waypoints") + " --vehicle " + out("nover.json") +
+                     " --json 2>/dev/null");
+  ASSERT_EQ(p.status, 0) << p.output;
+  EXPECT_NE(p.output.find("gives no version: flown as ArduCopter 4.5"), std::string::npos) << p.output;
+  const auto given = run(cliBinary() + " predict " + sharedData("sitl/square_5mps.waypoints") + " --vehicle " +
+                         sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --json 2>/dev/null");
+  EXPECT_EQ(given.output.find("gives no version"), std::string::npos);
+}
+
+// A calibration in BASE was fitted with BASE's parameters: it is left out of the file written, with
+// a note (it was kept beside the log's parameters, and predict flew the old per-flight values); a
+// BASE airframe is kept and said to be used when the log does not determine one.
+TEST_F(CliVehicle, BasesCalibrationIsLeftOutAndItsAirframeIsSaidToBeKept) {
+  auto base = nlohmann::json::parse(readAll(iris()));
+  base["extensions"]["calibration"] = {{"effects", {"hover"}}, {"coefficients", {{"hover", {{"hover_power", 200.0}}}}}};
+  base["extensions"]["airframe"] = {{"drag_linear_per_s", 0.2}, {"drag_quadratic_per_m", 0.03}};
+  const std::string base_path = out("base.json");
+  std::ofstream(base_path) << base.dump(2);
+  const auto r = params(sharedData("autopilot-logs/arducopter-3.3_quad_log171.bin"), base_path, out("written.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto written = nlohmann::json::parse(readAll(out("written.json")));
+  EXPECT_FALSE(written["extensions"].contains("calibration"));
+  EXPECT_NE(r.output.find("calibration (extensions.calibration) was fitted with its own autopilot parameters"), std::string::npos)
+      << r.output;
+  if (!r.output.empty() && r.output.find("airframe drag not determined") != std::string::npos) {
+    EXPECT_TRUE(written["extensions"].contains("airframe"));
+    EXPECT_NE(r.output.find("extensions.airframe, kept in the file"), std::string::npos) << r.output;
+  }
 }

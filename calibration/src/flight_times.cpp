@@ -125,7 +125,7 @@ FlightTimes flightTimes(const std::vector<double>& t, const std::vector<Eigen::V
     }
     ft.leg_peak_mps.push_back(peak);
   }
-  ft.slow_s = std::isfinite(first) ? 0.0 : kNaN;
+  ft.slow_s = std::isfinite(first) && last > first ? 0.0 : kNaN;  // not measured over one passage
   for (std::size_t i = 1; i < t.size() && std::isfinite(first); ++i) {
     const double tm = t[i] - t.front();
     if (tm > first && tm <= last && std::isfinite(speed[i - 1]) && speed[i - 1] < 1.0) ft.slow_s += t[i] - t[i - 1];

@@ -83,7 +83,7 @@ std::vector<size_t> airborneSamples(const logs::FlightLog& log, const Measuremen
   std::vector<size_t> idx;
   for (size_t i = 0; i < S.size(); ++i) {
     for (const auto& w : log.airborne) {
-      if (S[i].t >= w.begin && S[i].t <= w.end) {
+      if (w.contains(S[i].t)) {
         idx.push_back(i);
         break;
       }

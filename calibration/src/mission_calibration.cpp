@@ -1,4 +1,5 @@
 #include "wattswath/calibration/mission_calibration.hpp"
+#include "wattswath/mission/files.hpp"
 
 #include <filesystem>
 #include <iomanip>
@@ -67,9 +68,31 @@ struct Prepared {
   Eigen::Vector2d offset;
   Eigen::Vector2d launch = Eigen::Vector2d::Zero();  // [m] take-off point, east/north of the mission's home
   FlightTimes measured;
+  std::string match_problem;                            // FlightComparison::match_problem
   std::vector<double> t;                                // [s] the log's times from its first sample
   std::vector<Eigen::Vector3d> track, velocity;         // [m], [m/s] in the mission's frame from the take-off point
 };
+
+// Why `f`'s log may not be of its mission: fewer than half of the mission's legs found with both
+// ends in the log (a log of another mission matches a few by chance), or the track laid onto the
+// waypoints at the alignment's search limit (kAlignSearchM; logs with a geodetic origin are placed
+// by it, not searched); empty when neither.
+std::string matchProblem(const MissionFlight& f, const Prepared& p) {
+  const std::size_t legs = p.measured.leg_s.size();
+  const auto matched = static_cast<std::size_t>(
+      std::count_if(p.measured.leg_s.begin(), p.measured.leg_s.end(), [](double x) { return std::isfinite(x); }));
+  if (legs >= 2 && 2 * matched < legs) {
+    return "only " + std::to_string(matched) + " of the mission's " + std::to_string(legs) +
+           " legs were found flown in the log (both ends passed within the acceptance distance): is this the log of "
+           "this mission? Its times and energies would compare two different flights";
+  }
+  if (!f.log.has_geodetic_origin && p.offset.cwiseAbs().maxCoeff() >= kAlignSearchM - 0.5) {
+    return "the log's track fits the mission's waypoints only at the " + detail::num(kAlignSearchM, 3) +
+           " m limit of the alignment search (offset " + detail::num(p.offset.x(), 3) + ", " + detail::num(p.offset.y(), 3) +
+           " m): is this the log of this mission, flown where the file says?";
+  }
+  return "";
+}
 
 Prepared prepare(const MissionFlight& f) {
   Prepared p;
@@ -89,6 +112,7 @@ Prepared prepare(const MissionFlight& f) {
   if (!(p.measured.energy_j > 0.0)) {
     throw std::invalid_argument(f.name + ": the log has no usable power (voltage x current): it cannot be compared");
   }
+  p.match_problem = matchProblem(f, p);
   return p;
 }
 
@@ -130,6 +154,7 @@ FlightComparison compare(const Prepared& p, const FlightTimes& pred) {
     if (std::isfinite(p.measured.leg_peak_mps[k]) && std::isfinite(pred.leg_peak_mps[k]) && pred.leg_peak_mps[k] >= 1.0)
       ratios.push_back(p.measured.leg_peak_mps[k] / pred.leg_peak_mps[k]);
   c.leg_peak_ratio = detail::median(ratios);  // NaN without a leg
+  c.match_problem = p.match_problem;
   return c;
 }
 
@@ -198,14 +223,16 @@ void checkAgreement(const std::vector<Prepared>& prepared, const FreeParameter& 
     r.per_flight.push_back(fa);
   }
   const double joint = acc.lo + x[0] * (acc.hi - acc.lo);
-  r.fitted.push_back(acc.name + " of each flight alone: " + each.str() + " " + acc.unit + " (together " +
-                     num(joint) + ")");
+  const bool kept = std::find(r.kept_at_start.begin(), r.kept_at_start.end(), acc.name) != r.kept_at_start.end();
+  const std::string together = kept ? "together: kept at its starting value " + num(joint) + ", which the flights together fit as well"
+                                    : "together " + num(joint);
+  r.fitted.push_back(acc.name + " of each flight alone: " + each.str() + " " + acc.unit + " (" + together + ")");
   r.flights_agree = determined < 2 || hi <= 1.25 * lo;
   if (!r.flights_agree) {
     r.notes.push_back("the flights do not agree on " + acc.name + ": each alone wants " + wanted.str() + " " + acc.unit +
-                      ", together " + num(joint) + ". One set of parameters does not describe them all: the "
-                      "setting may have changed between flights, or the model lacks a behaviour they differ in; the logs "
-                      "cannot tell which, and a prediction of another flight may be off by this spread");
+                      " (" + together + "). One set of parameters does not describe them all: the model lacks a "
+                      "behaviour they differ in, or the setting changed between flights; the logs cannot tell which, and "
+                      "a prediction of another flight may be off by this spread");
   }
 }
 
@@ -381,19 +408,27 @@ std::vector<double> keepUnneededChanges(const BehaviourProblem& bp, std::vector<
 // said not to be determined by the flights.
 void reportBehaviour(const std::vector<FreeParameter>& free, const mission::AutopilotConfig& before, CalibrationResult& r) {
   for (const auto& fp : free) {
-    std::ostringstream os;
-    os << fp.name << ": " << before.get(fp.name) << " -> " << r.autopilot.get(fp.name) << " " << fp.unit;
+    std::string line = fp.name + ": " + num(before.get(fp.name), 4) + " -> " + num(r.autopilot.get(fp.name), 4) + " " + fp.unit;
     const double at = (r.autopilot.get(fp.name) - fp.lo) / (fp.hi - fp.lo);
     if (std::find(r.kept_at_start.begin(), r.kept_at_start.end(), fp.name) != r.kept_at_start.end()) {
-      os << " (kept: the flights fit as well with it)";
+      line += " (kept: the flights fit as well with it)";
     } else if (at < 0.01 || at > 0.99) {
-      os << " (at the bound of its range: not determined by these flights)";
-      r.notes.push_back(fp.name + " ended at the bound of its range [" + std::to_string(fp.lo) + ", " + std::to_string(fp.hi) +
-                        "]: the flights do not determine it");
+      line += " (at the bound of its range: not determined by these flights)";
+      r.notes.push_back(fp.name + " ended at the bound of its range [" + num(fp.lo, 4) + ", " + num(fp.hi, 4) + "] " + fp.unit +
+                        ": the flights do not determine it");
     }
-    r.fitted.push_back(os.str());
+    r.fitted.push_back(line);
   }
-  r.fitted.push_back("take-off delay: " + std::to_string(r.takeoff_delay_s) + " s from the take-off command to lift-off");
+  // The delay is searched in [0, BehaviourProblem::kMaxDelay]; at either end it is not a measurement.
+  const double d = r.takeoff_delay_s, max_delay = BehaviourProblem::kMaxDelay;
+  std::string line = "take-off delay: " + num(d, 3) + " s from the first sample compared (the take-off command, or lift-off "
+                     "when the log does not show it) to lift-off";
+  if (d < 0.01 * max_delay || d > 0.99 * max_delay) {
+    line += " (at the bound of its range: not determined by these flights)";
+    r.notes.push_back("the take-off delay ended at the bound of its range [0, " + num(max_delay, 3) + "] s (" + num(d, 3) +
+                      " s): the flights do not determine it");
+  }
+  r.fitted.push_back(line);
 }
 
 // The energy model's coefficients fitted to the logged power on the logged kinematics, into `r`.
@@ -406,17 +441,26 @@ void fitEnergy(const std::vector<MissionFlight>& flights, const energy::EnergyMo
   const FitResult fit = fitModel(model, sets, settings);
   r.model = fit.model;
   for (const auto& c : fit.coefficients) {
-    std::ostringstream os;
-    os << c.effect << "." << c.name << ": " << c.value << " " << c.unit;
-    if (c.at_bound) os << " (at its bound)";
-    r.fitted.push_back(os.str());
-    if (c.at_bound) {
+    std::string line = c.effect + "." + c.name + ": " + num(c.value, 4) + " " + c.unit;
+    if (!c.determined) {
+      line += " (not determined: " + (c.why_not_determined.empty() ? std::string("kept") : c.why_not_determined) + ")";
+    } else if (c.at_bound) {
+      line += " (at its bound)";
+    } else if (std::isfinite(c.sigma)) {
+      line += " +- " + num(c.sigma, 2);
+    }
+    r.fitted.push_back(line);
+    if (c.at_bound && c.determined) {
       r.notes.push_back(c.effect + "." + c.name + " stopped at its bound (" + num(c.value) + " " + c.unit +
                         "): these logs fit best beyond what the effect allows, so its value is not a measurement of the "
                         "vehicle; the vehicle file stores the bound (refit with more varied flights, or leave the effect "
                         "out with --effects)");
     }
-    if (!c.determined) r.notes.push_back(c.effect + "." + c.name + " is not constrained by these logs: its value is arbitrary");
+  }
+  // The fit's own findings: what the data do not determine and why, correlated pairs.
+  for (const auto& n : fit.notes) {
+    if (n.find("stopped at a bound") != std::string::npos) continue;  // said above, with what it means
+    if (std::find(r.notes.begin(), r.notes.end(), n) == r.notes.end()) r.notes.push_back(n);
   }
 }
 
@@ -426,8 +470,14 @@ std::vector<FlightComparison> predictAll(const std::vector<Prepared>& prepared, 
                                          const mission::PredictSettings& settings) {
   std::vector<FlightComparison> out;
   for (const auto& p : prepared) {
-    const auto pred = mission::predictMission(p.mission, v, model, ap, settings);
-    out.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
+    try {
+      const auto pred = mission::predictMission(p.mission, v, model, ap, settings);
+      out.push_back(compare(p, predictedTimes(pred.flight, pred.piece_energy_j, p.waypoints)));
+    } catch (const mission::MissionError&) {
+      throw;  // names its item
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(p.flight->name + ": its mission flown with " + ap.firmware + " " + ap.version + ": " + e.what());
+    }
   }
   return out;
 }
@@ -447,7 +497,12 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
                                 ", expected 0..0.5");
   }
   std::vector<Prepared> prepared;
-  for (const auto& f : flights) prepared.push_back(prepare(f));
+  for (const auto& f : flights) {
+    prepared.push_back(prepare(f));
+    if (!prepared.back().match_problem.empty()) {
+      throw std::invalid_argument(f.name + ": " + prepared.back().match_problem + "; refusing to calibrate on it");
+    }
+  }
   CalibrationResult r;
   r.autopilot = autopilot;
   r.model = model;

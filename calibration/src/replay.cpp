@@ -139,7 +139,7 @@ void classifySamples(const std::vector<LogSample>& S, const std::vector<double>&
     // Outside every airborne window the log's reader found (landed flags, current), the vehicle is on
     // the ground whatever its altitude estimate says (an EKF's z drifts on the ground).
     const bool in_air_window =
-        air.empty() || std::any_of(air.begin(), air.end(), [&](const logs::TimeWindow& w) { return S[i].t >= w.begin && S[i].t <= w.end; });
+        air.empty() || std::any_of(air.begin(), air.end(), [&](const logs::TimeWindow& w) { return w.contains(S[i].t); });
     m.airborne = in_air_window &&
                  !(S[i].position.z() - zmin < set.ground_height && S[i].velocity.head<2>().norm() < set.stop_speed &&
                    std::abs(S[i].velocity.z()) < set.vertical_speed && P.measured[i] < set.ground_power_fraction * pmed);

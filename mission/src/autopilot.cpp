@@ -121,6 +121,7 @@ AutopilotConfig parseAutopilot(const std::string& json_text, const std::string& 
     return j[key].get<std::string>();
   };
   c.firmware = text("firmware", c.firmware);
+  c.version_assumed = !j.contains("version");
   c.version = text("version", c.firmware == "PX4" ? "1.14" : c.version);
   c.family = familyOf(c.firmware, c.version);
   c.from_file = true;

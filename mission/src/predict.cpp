@@ -288,6 +288,11 @@ MissionPrediction predictMission(const Mission& given, const energy::Vehicle& v,
   MissionPrediction p;
   p.warnings = m.warnings;
   writtenForNotes(m, autopilot, p.warnings);
+  if (autopilot.version_assumed) {
+    p.warnings.push_back("the vehicle file's autopilot object gives no version: flown as " + autopilot.firmware + " " +
+                         autopilot.version + " (the " + toString(autopilot.family) + " model); set autopilot.version, "
+                         "since ArduCopter before 4.1 flies the leash model and its parameters differ");
+  }
   if (!stop_note.empty()) p.warnings.push_back(stop_note);
   if (std::string n = missionSizeNote(given.items.size(), autopilot, m.source); !n.empty()) p.warnings.push_back(std::move(n));
   if (autopilot.family != AutopilotFamily::PX4) {

@@ -70,12 +70,18 @@ struct FlightComparison {
   /// [-] median over the matched legs of the measured peak speed over the predicted one
   /// (FlightTimes::leg_peak_mps; NaN without a leg whose predicted peak is 1 m/s or more)
   double leg_peak_ratio = 0.0;
+  /// Why the log may not be of this mission (few of its waypoint passages found in the log, or
+  /// the track laid onto the waypoints only at the alignment's search limit); empty when it fits.
+  std::string match_problem;
 };
+
+/// [m] How far alignTrack searches for the logged track's offset from the mission's waypoints.
+inline constexpr double kAlignSearchM = 30.0;
 
 /// The translation [m] that best lays the logged track onto the mission's waypoints (least mean
 /// distance of each waypoint to the track, coarse grid then refinement within +-`search_m`).
 Eigen::Vector2d alignTrack(const std::vector<Eigen::Vector3d>& track, const std::vector<Eigen::Vector3d>& waypoints,
-                           double search_m = 30.0);
+                           double search_m = kAlignSearchM);
 
 /// `f`'s mission flown from where its log took off: the home moved to the log's first sample (placed
 /// through the log's geodetic origin when it has one, an autopilot's EKF origin; else the track laid

@@ -31,6 +31,8 @@ struct LogSample {
 struct TimeWindow {
   double begin = 0.0;  ///< [s] start time (log clock)
   double end = 0.0;    ///< [s] end time (log clock), >= begin
+  /// True when time `t` [s] (log clock) is in the window, its ends included.
+  bool contains(double t) const { return t >= begin && t <= end; }
 };
 
 /// Something the autopilot logged at a time: a mode change, an event, a mission item, a message.

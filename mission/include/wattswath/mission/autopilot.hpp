@@ -28,6 +28,7 @@ struct AutopilotConfig {
   std::string version = "4.5";                                 ///< firmware version, e.g. "3.3.3"
   std::map<std::string, double> parameters;                    ///< as given (autopilot units)
   bool from_file = false;  ///< true when the vehicle file had an `autopilot` object
+  bool version_assumed = false;  ///< true when that object gave no version (`version` is then the default)
 
   /// Parameter `name` as given, else the family's documented default; throws
   /// std::out_of_range naming the parameter when neither exists.
