@@ -289,6 +289,60 @@ TEST(ReportSvg, MapLabelsAreMovedRoundTheirMarkerNotDrawnOverEachOther) {
   EXPECT_NE(svg.find("<title>15 ("), std::string::npos);        // its tooltip stays
 }
 
+namespace {
+
+/// The x and y attributes of the <text> whose content is `label` in `svg` (NaN when not drawn).
+std::pair<double, double> textAt(const std::string& svg, const std::string& label) {
+  const std::size_t end = svg.find(">" + label + "</text>");
+  if (end == std::string::npos) return {std::nan(""), std::nan("")};
+  const std::string tag = svg.substr(svg.rfind("<text", end), end - svg.rfind("<text", end));
+  const auto attr = [&](const std::string& name) {
+    const std::size_t a = tag.find(" " + name + "=\"") + name.size() + 3;
+    return std::stod(tag.substr(a, tag.find('"', a) - a));
+  };
+  return {attr("x"), attr("y")};
+}
+
+}  // namespace
+
+// The plan map's home label ("home, start, take-off (1), return and landing (70)") was placed
+// right of a home at the map's edge, starting at x=-220 / running past the viewBox: a label now goes
+// to the next place round its marker when the first is not inside the plot area. Waypoint numbers
+// "50" and "49" side by side ran together as "5049": the width assumed per bold digit (0.62 em) was
+// less than DejaVu Sans Bold's 0.696 em; labels on one line now keep apart by their drawn width.
+TEST(ReportSvg, MapLabelsStayInsideThePlotAndApartAsDrawn) {
+  const std::string home = "home, start, take-off (1), return and landing (70)";
+  for (const double hx : {0.0, 100.0}) {  // home at the left edge, then at the right edge
+    wr::MapView m;
+    m.path = {{{{0, 0}, {100, 0}}, 0.0, "mission"}};
+    m.path[0].colour = "#0072B2";
+    wr::MapMarker last{{hx, 0.5}, "69", wr::MapMarker::Shape::Circle, "#222222"};  // the last waypoint, at home
+    last.size = 3.0;
+    m.markers.push_back(last);
+    m.markers.push_back({{hx, 0}, home, wr::MapMarker::Shape::Square, "#000000"});
+    const std::string svg = wr::renderSvg(m);
+    const auto [x, y] = textAt(svg, home);
+    ASSERT_TRUE(std::isfinite(x)) << "home label left out";
+    EXPECT_GE(x, 0.0) << "home at " << hx;
+    EXPECT_LE(x + 0.696 * 12 * static_cast<double>(home.size()), m.width) << "home at " << hx;
+  }
+  for (double d = 1.0; d <= 3.0; d += 0.05) {  // [m] apart: on the screen about 8 to 25 px
+    wr::MapView m;
+    m.path = {{{{0, 0}, {100, 0}}, 0.0, "mission"}};
+    m.path[0].colour = "#0072B2";
+    for (const auto& [label, x] : {std::pair<std::string, double>{"50", 50.0}, {"49", 50.0 + d}}) {
+      wr::MapMarker wp{{x, 0}, label, wr::MapMarker::Shape::Circle, "#222222"};
+      wp.size = 3.0;
+      m.markers.push_back(wp);
+    }
+    const std::string svg = wr::renderSvg(m);
+    const auto a = textAt(svg, "50"), b = textAt(svg, "49");
+    if (!std::isfinite(a.first) || !std::isfinite(b.first) || a.second != b.second) continue;  // on different lines
+    const double drawn = 0.696 * 11 * 2;  // [px] two bold 11 px digits in DejaVu Sans Bold
+    EXPECT_GE(std::abs(b.first - a.first), drawn + 1.0) << "labels run together at " << d << " m apart";
+  }
+}
+
 TEST(ReportSvg, EventTicksSitOutsideThePlotAndLabelsDoNotOverlap) {
   wr::LineChart c = sampleLine();
   c.events = {{1.0, "12", "waypoint 12", "#222222", false}, {1.01, "13", "waypoint 13", "#222222", false},
