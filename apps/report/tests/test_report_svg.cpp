@@ -122,7 +122,7 @@ TEST(ReportSvg, LineChartIsWellFormedWithUnitsLegendAndPhases) {
   EXPECT_NE(svg.find("power &lt;measured&gt; &amp; &quot;modelled&quot;"), std::string::npos);
   EXPECT_NE(svg.find(">measured</text>"), std::string::npos);
   EXPECT_NE(svg.find(">cruise</text>"), std::string::npos);  // phase swatch in the legend
-  EXPECT_EQ(countOf(svg, "fill-opacity=\"0.16\""), 3);           // three shaded phases
+  EXPECT_EQ(countOf(svg, "fill-opacity=\"0.26\""), 6);           // three shaded phases and their swatches
   EXPECT_EQ(svg.find("<script"), std::string::npos);
   EXPECT_EQ(svg.find("id="), std::string::npos);  // no ids that could collide in one page
   // Every drawn coordinate lies inside the figure.
@@ -202,6 +202,51 @@ TEST(ReportSvg, BarChartsGroupedAndStacked) {
   EXPECT_NE(svg.find(">54.0</text>"), std::string::npos);  // cruise stack total
   b.values.pop_back();
   EXPECT_THROW(wr::renderSvg(b), std::invalid_argument);
+}
+
+// Legend swatches were drawn at fill-opacity 0.6 whatever they stood for: paler than the opaque
+// bars, far darker than the phase bands (0.16). A swatch now has the opacity of what it names.
+TEST(ReportSvg, LegendSwatchesLookLikeTheBarsAndBandsTheyName) {
+  wr::BarChart b;
+  b.categories = {"a", "b"};
+  b.series = {"hover", "kinetic"};
+  b.values = {{1, 2}, {3, 4}};
+  b.y = {"energy", "kJ"};
+  std::string svg = wr::renderSvg(b);
+  EXPECT_EQ(svg.find("fill-opacity=\"0.6\""), std::string::npos);
+  std::set<std::string> opacities;
+  for (std::size_t p = svg.find("fill-opacity=\""); p != std::string::npos; p = svg.find("fill-opacity=\"", p + 1))
+    opacities.insert(svg.substr(p + 14, svg.find('"', p + 14) - p - 14));
+  EXPECT_EQ(opacities, std::set<std::string>{"1"});  // legend swatches as opaque as the bars (drawn without opacity)
+  svg = wr::renderSvg(sampleLine());  // three phase bands
+  std::vector<double> bands;  // translucent fills: the bands and their swatches (points are opaque)
+  for (const double o : attrValues(svg, "fill-opacity"))
+    if (o < 1.0) bands.push_back(o);
+  ASSERT_EQ(bands.size(), 6u);  // 3 bands and 3 swatches
+  for (const double o : bands) EXPECT_DOUBLE_EQ(o, bands.front());
+  EXPECT_GE(bands.front(), 0.25);  // take-off and landing colours told apart at band opacity
+}
+
+// The chosen candidate's ring sat on the plot's bottom frame: the y axis started at its value (the
+// lowest energy). A chart with markers leaves room round the data.
+TEST(ReportSvg, MarkersAtTheDataEdgeAreNotOnTheFrame) {
+  wr::LineChart c;
+  c.x = {"sweep angle", "deg"};
+  c.y = {"energy", "kJ"};
+  c.series = {wr::Series("candidates", {0, 45, 90, 135}, {120, 131, 140, 129})};
+  c.markers = {{0, 120, "chosen", "#000000"}};
+  const std::string svg = wr::renderSvg(c);
+  const std::size_t frame = svg.rfind("fill=\"none\" stroke=\"#888888\"");
+  const std::string rect = svg.substr(svg.rfind("<rect", frame), frame - svg.rfind("<rect", frame));
+  const auto ys = attrValues(rect, "y"), hs = attrValues(rect, "height");
+  ASSERT_EQ(ys.size(), 1u);
+  const double bottom = ys[0] + hs[0];
+  const std::size_t ring = svg.find("r=\"6\"");
+  ASSERT_NE(ring, std::string::npos);
+  const std::string circle = svg.substr(svg.rfind("<circle", ring), ring - svg.rfind("<circle", ring));
+  const auto cy = attrValues(circle, "cy");
+  ASSERT_EQ(cy.size(), 1u);
+  EXPECT_LE(cy[0] + 6.0, bottom - 2.0) << "the ring touches the bottom frame";
 }
 
 TEST(ReportSvg, MapWithHolesPathMarkersAndBars) {
