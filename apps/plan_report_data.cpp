@@ -99,10 +99,12 @@ void addCandidates(report::PlanReportData& d, const pl::PlanResult& r) {
                            r.best_spiral->flown.time});
 }
 
-/// The battery's state of charge and voltage along the written mission's predicted flight.
+/// The battery's usable charge left and voltage along the written mission's predicted flight.
 report::BatteryTrace batteryTrace(const mission::BatteryPrediction& b) {
   report::BatteryTrace bt;
   bt.model = "Hwang et al. 2018; mission.plan as flown";  // the charge counted as the autopilot counts it
+  bt.reserve_pct = 100.0 * b.reserve_fraction;
+  if (b.depleted) bt.cutoff_s = b.depleted_at_s;
   bt.t = b.t_s;
   for (const double u : b.usable_left) bt.soc.push_back(100.0 * u);
   bt.voltage = b.voltage_v;

@@ -44,6 +44,65 @@ TEST(Reports, PlanReportHasMapBreakdownCandidatesAndBattery) {
   EXPECT_NE(html.find("ground-station default"), std::string::npos);
 }
 
+namespace {
+/// The SVG of the figure named `name` in `r` ("" when there is none).
+std::string figureSvg(const wr::HtmlReport& r, const std::string& name) {
+  for (const auto& f : r.figures())
+    if (f.name == name) return f.svg;
+  return "";
+}
+
+/// [px] The left edge of a line chart's plot frame (the unfilled grey rect drawn last).
+double plotLeft(const std::string& svg) {
+  const std::size_t frame = svg.rfind("fill=\"none\" stroke=\"#888888\"");
+  const std::size_t rect = svg.rfind("<rect x=\"", frame);
+  if (frame == std::string::npos || rect == std::string::npos) return -1.0;
+  return std::stod(svg.substr(rect + 9));
+}
+}  // namespace
+
+// The plan report's battery figure read "state of charge [%]" while it plotted the usable charge
+// left, with no reserve line; predict's report draws the same trace as "usable charge left [%]"
+// with the reserve. Both are now drawn by one function.
+TEST(Reports, PlanBatteryFigureIsPredictsUsableChargeWithTheReserve) {
+  const auto r = wr::planReport(samplePlan());
+  const std::string svg = figureSvg(r, "plan-battery-soc");
+  ASSERT_FALSE(svg.empty());
+  EXPECT_NE(svg.find("usable charge left [%]"), std::string::npos);
+  EXPECT_NE(svg.find("reserve 25 %"), std::string::npos);
+  EXPECT_EQ(svg.find("state of charge"), std::string::npos);
+  EXPECT_NE(svg.find("time since the take-off command [min]"), std::string::npos);  // as predict's time axis
+  EXPECT_EQ(r.html().find("State of charge over the mission"), std::string::npos);
+  EXPECT_NE(r.html().find("counted as the autopilot counts it"), std::string::npos);
+}
+
+// A battery that runs out: the usable charge dropped to 0 unlabelled while speed and altitude showed
+// a normal flight. Every time plot now marks the cut-off, and the caption says it.
+TEST(Reports, MissionReportMarksTheBatteryCutOffOnEveryTimePlot) {
+  auto d = sampleMission();
+  d.battery->cutoff_s = 161.0;
+  const auto r = wr::missionReport(d);
+  for (const char* name : {"mission-speed", "mission-altitude", "mission-battery"}) {
+    const std::string svg = figureSvg(r, name);
+    EXPECT_NE(svg.find(">battery cut-off 2:41</text>"), std::string::npos) << name;
+    EXPECT_EQ(xmlProblem(svg), "") << name;
+  }
+  EXPECT_NE(r.html().find("reaches its cut-off 2:41 min:s into the flight"), std::string::npos);
+  EXPECT_EQ(figureSvg(wr::missionReport(sampleMission()), "mission-speed").find("battery cut-off"), std::string::npos);
+}
+
+// Predict's stacked time plots (speed, altitude, battery) started their plots at different x (their
+// tick labels differ in width: "10", "40", "100"), so one moment was not above the same moment.
+TEST(Reports, MissionTimePlotsStartAtOneLeftEdge) {
+  const auto r = wr::missionReport(sampleMission());
+  const double speed = plotLeft(figureSvg(r, "mission-speed"));
+  EXPECT_GT(speed, 0.0);
+  EXPECT_DOUBLE_EQ(plotLeft(figureSvg(r, "mission-altitude")), speed);
+  EXPECT_DOUBLE_EQ(plotLeft(figureSvg(r, "mission-battery")), speed);
+  const auto p = wr::planReport(samplePlan());
+  EXPECT_DOUBLE_EQ(plotLeft(figureSvg(p, "plan-battery-voltage")), plotLeft(figureSvg(p, "plan-battery-soc")));
+}
+
 TEST(Reports, PlanReportWithoutOptionalPartsSaysSo) {
   wr::PlanReportData d;
   d.areas = samplePlan().areas;

@@ -4,6 +4,7 @@
 /// HTML pages. Commands fill the structs from library results; nothing here computes physics
 /// (binned residual statistics and unit scaling are display only).
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -68,9 +69,11 @@ struct PlanBaseline {
 /// Battery state over the mission (e.g. Hwang et al.'s Peukert battery with linear voltage drop).
 struct BatteryTrace {
   std::vector<double> t;        ///< [s] time since take-off
-  std::vector<double> soc;      ///< [%] state of charge
+  std::vector<double> soc;      ///< [%] usable charge left as the autopilot counts it (100 full, 0 at the cut-off)
   std::vector<double> voltage;  ///< [V] terminal voltage (may be empty)
   std::string model;            ///< which battery model, e.g. "Hwang et al. Eq. 19-21"
+  double reserve_pct = std::numeric_limits<double>::quiet_NaN();  ///< [%] usable charge to keep on landing (NaN: none drawn)
+  std::optional<double> cutoff_s;  ///< [s] when the battery reaches its cut-off in flight (none: it does not)
 };
 
 /// One sortie (one battery's flight) of a plan split for the battery, as drawn and tabled.
