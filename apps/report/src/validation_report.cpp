@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
+#include "chart_common.hpp"
 #include "report_common.hpp"
 #include "wattswath/report/charts.hpp"
 #include "wattswath/report/reports.hpp"
@@ -157,6 +159,12 @@ void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::ve
   const std::size_t n = d.t.size();
   if (n == 0) return;
   r.heading("Power over time");
+  // One power range for every log's figure, so that the figures compare at a glance (each had its own).
+  Range shared;
+  for (const auto* v : {&d.measured_power, &d.modelled_power})
+    for (const double p : *v) shared.add(p, false);
+  std::optional<Ticks> common;
+  if (starts.size() > 1 && !shared.empty() && shared.hi > shared.lo) common = niceTicks(shared.lo, shared.hi);
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const std::size_t a = starts[k], b = k + 1 < starts.size() ? starts[k + 1] : n;
     if (a == b) continue;
@@ -169,6 +177,10 @@ void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::ve
     c.title = "Measured and modelled electrical power" + (name.empty() ? std::string() : ": " + name);
     c.x = {"log time (the log's own clock)", "s"};
     c.y = {"power", "W"};
+    if (common) {
+      c.y.min = common->lo;
+      c.y.max = common->hi;
+    }
     if (!d.measured_power.empty()) c.series.push_back(Series("measured", t, slice(d.measured_power)));
     if (!d.modelled_power.empty()) c.series.push_back(Series("modelled", t, slice(d.modelled_power)));
     for (std::size_t i = 0; i < c.series.size(); ++i) c.series[i].width = 1.3;
@@ -180,7 +192,8 @@ void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::ve
                      [](const auto& a, const auto& b) { return phaseRank(a.label) < phaseRank(b.label); });
     r.figure({k == 0 ? std::string("validation-power") : "validation-power-" + std::to_string(k + 1), renderSvg(c),
               "Measured and modelled power" + (name.empty() ? std::string() : " of " + name) +
-                  "; the background shows the phase of flight."});
+                  "; the background shows the phase of flight." +
+                  (common ? std::string(" Every log's power figure has the same power axis.") : std::string())});
   }
 }
 

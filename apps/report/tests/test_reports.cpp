@@ -150,6 +150,34 @@ TEST(Reports, ValidationReportDrawsPowerOverTimeForEveryLog) {
   EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
 }
 
+namespace {
+/// The y tick labels of a chart (right-aligned texts in its ticks group).
+std::vector<std::string> yTickLabels(const std::string& svg) {
+  std::vector<std::string> out;
+  const std::size_t g = svg.find("class=\"ticks\""), end = svg.find("</g>", g);
+  for (std::size_t p = svg.find("text-anchor=\"end\"", g); p < end; p = svg.find("text-anchor=\"end\"", p + 1)) {
+    const std::size_t a = svg.find('>', p) + 1;
+    out.push_back(svg.substr(a, svg.find('<', a) - a));
+  }
+  return out;
+}
+}  // namespace
+
+// Replaying several logs drew each log's power over its own range, so the figures could not be
+// compared at a glance; they share one power axis now.
+TEST(Reports, PowerFiguresOfSeveralLogsShareOnePowerAxis) {
+  auto d = sampleValidation();
+  const std::size_t half = d.t.size() / 2;
+  d.log_names = {"first.csv", "second.csv"};
+  d.log_start = {0, half};
+  for (std::size_t i = half; i < d.t.size(); ++i) d.measured_power[i] *= 1.6, d.modelled_power[i] *= 1.6;
+  const auto r = wr::validationReport(d);
+  const auto first = yTickLabels(figureSvg(r, "validation-power")), second = yTickLabels(figureSvg(r, "validation-power-2"));
+  EXPECT_GE(first.size(), 3u);
+  EXPECT_EQ(first, second);
+  EXPECT_NE(r.html().find("same power axis"), std::string::npos);
+}
+
 TEST(Reports, PhaseLegendInFlightOrderWhateverComesFirst) {
   // The legend used to list phases in the order they first occur, so two flights' plots listed
   // them differently; now it is ground, climb, hover, accelerate, cruise, brake, turn, descent.
