@@ -266,19 +266,34 @@ void addLegEnergies(HtmlReport& r, const ValidationReportData& d) {
   r.table(t);
 }
 
-// The error as effects are added, one bar per step.
+// The error staircase: one bar per step, coloured by the logs it is computed on when the steps
+// name them (fit: as given and fitted, on the training logs and on the test log).
 void addStaircase(HtmlReport& r, const ValidationReportData& d) {
   r.heading("Error staircase");
   BarChart b;
-  b.title = "Error as effects are added";
+  b.title = d.staircase_title;
   for (const auto& s : d.staircase) b.categories.push_back(s.label);
-  b.series = {d.error_label};
-  b.values = {{}};
-  for (const auto& s : d.staircase) b.values[0].push_back(s.error);
+  std::vector<std::string> groups;
+  for (const auto& s : d.staircase)
+    if (!s.group.empty() && std::find(groups.begin(), groups.end(), s.group) == groups.end()) groups.push_back(s.group);
+  if (groups.empty()) {
+    b.series = {d.error_label};
+    b.values = {{}};
+    for (const auto& s : d.staircase) b.values[0].push_back(s.error);
+    b.colours = {seriesColour(0)};
+  } else {  // one series per group, each bar in its group's series only: one full-width bar per step
+    b.stacked = true;
+    b.series = groups;
+    b.values.assign(groups.size(), std::vector<double>(d.staircase.size(), std::numeric_limits<double>::quiet_NaN()));
+    for (std::size_t k = 0; k < d.staircase.size(); ++k) {
+      const auto g = std::find(groups.begin(), groups.end(), d.staircase[k].group) - groups.begin();
+      if (static_cast<std::size_t>(g) < groups.size()) b.values[static_cast<std::size_t>(g)][k] = d.staircase[k].error;
+    }
+    for (std::size_t g = 0; g < groups.size(); ++g) b.colours.push_back(seriesColour(g));
+  }
   b.y = {d.error_label, d.error_unit};
-  b.colours = {seriesColour(0)};
   b.height = 320;
-  r.figure({"validation-staircase", renderSvg(b), "Each bar is the model after one more step; lower is better."});
+  r.figure({"validation-staircase", renderSvg(b), d.staircase_caption});
 }
 
 // The diagnosis: each candidate effect, its held-out improvement and whether it was kept.

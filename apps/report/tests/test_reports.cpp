@@ -178,6 +178,34 @@ TEST(Reports, PowerFiguresOfSeveralLogsShareOnePowerAxis) {
   EXPECT_NE(r.html().find("same power axis"), std::string::npos);
 }
 
+// fit's staircase was titled "Error as effects are added" with "each bar is the model after one more
+// step" under bars that are the model as given and fitted, on the training and on the test logs, all
+// in one colour. Its title and caption are fit's own now, and the bars are coloured by the logs.
+TEST(Reports, FitStaircaseSaysWhatItsBarsAreAndColoursTrainAndTest) {
+  auto d = sampleValidation();
+  d.staircase = {{"as given, train", 30.0, "training logs"}, {"fitted, train", 20.0, "training logs"},
+                 {"as given, test", 33.0, "test log"}, {"fitted, test", 24.0, "test log"}};
+  d.staircase_title = "Error before and after the fit, on the training and the test logs";
+  d.staircase_caption = "as given and fitted";
+  const auto r = wr::validationReport(d);
+  const std::string svg = figureSvg(r, "validation-staircase");
+  EXPECT_NE(svg.find("Error before and after the fit"), std::string::npos);
+  EXPECT_EQ(r.html().find("one more step"), std::string::npos);
+  EXPECT_NE(svg.find(">training logs</text>"), std::string::npos);  // the legend
+  EXPECT_NE(svg.find(">test log</text>"), std::string::npos);
+  const std::string train = "<title>training logs, fitted, train", test = "<title>test log, fitted, test";
+  ASSERT_NE(svg.find(train), std::string::npos);
+  ASSERT_NE(svg.find(test), std::string::npos);
+  const auto fillBefore = [&](const std::string& title) {
+    const std::size_t p = svg.rfind(" fill=\"", svg.find(title)) + 7;
+    return svg.substr(p, 7);
+  };
+  EXPECT_NE(fillBefore(train), fillBefore(test));
+  // diagnose's staircase keeps its own title, bars in one colour
+  EXPECT_NE(figureSvg(wr::validationReport(sampleValidation()), "validation-staircase").find("Error as effects are added"),
+            std::string::npos);
+}
+
 TEST(Reports, PhaseLegendInFlightOrderWhateverComesFirst) {
   // The legend used to list phases in the order they first occur, so two flights' plots listed
   // them differently; now it is ground, climb, hover, accelerate, cruise, brake, turn, descent.

@@ -157,6 +157,7 @@ struct LegEnergyPair {
 struct ErrorStep {
   std::string label;    ///< e.g. "vehicle physics", "+ parasitic_drag"
   double error = 0.0;   ///< [ValidationReportData::error_unit] held-out error after this step
+  std::string group{};  ///< the logs the error is computed on, e.g. "training logs" (coloured, with a legend; "" = one colour)
 };
 
 /// One row of the diagnosis table.
@@ -195,6 +196,8 @@ struct ValidationReportData {
   std::vector<ErrorStep> staircase;                  ///< error before/after each added effect
   std::string error_label = "held-out RMSE";         ///< what the staircase error is
   std::string error_unit = "W";                      ///< unit of the staircase error
+  std::string staircase_title = "Error as effects are added";  ///< the staircase figure's title
+  std::string staircase_caption = "Each bar is the model after one more step; lower is better.";  ///< and its caption
   std::vector<DiagnosisRow> diagnosis;               ///< candidate effects, best first
   std::string diagnosis_caption = "Candidate effects, best first";  ///< caption of the diagnosis table
   int residual_bins = 12;                            ///< [-] bins of the residual plots, 2..100
