@@ -270,7 +270,7 @@ void registerDiagnose(CLI::App& app) {
       const bool any = std::any_of(d.signatures.begin(), d.signatures.end(), [](const auto& g) { return g.significant; });
       for (const auto& g : d.signatures) {  // the significant signals, or the three leads
         if (d.verdict != "unexplained" || data.signal_curves.size() >= 3 || (any && !g.significant)) break;
-        report::SignalCurve sc{g.signal, g.unit, g.sentence, {}, {}};
+        report::SignalCurve sc{g.signal, g.unit, g.sentence, {}, {}, calibration::signalLabel(g.signal)};
         for (const auto& b : g.bins) {
           sc.x.push_back(0.5 * (b.lo + b.hi));
           sc.residual.push_back(b.residual_w);

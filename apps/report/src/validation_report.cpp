@@ -104,9 +104,10 @@ void addSignalCurves(HtmlReport& r, const ValidationReportData& d) {
   r.heading("What the residual keeps");
   if (!d.verdict.empty()) r.paragraph(d.verdict);
   for (const auto& g : d.signal_curves) {
+    const std::string what = g.label.empty() ? g.signal : g.label;
     LineChart c;
-    c.title = "Residual against " + g.signal;
-    c.x = {g.signal, g.unit};
+    c.title = "Residual against " + what + (what == g.signal ? "" : " (" + g.signal + ")");
+    c.x = {what, g.unit};
     c.y = {"measured - modelled", "W"};
     c.y_ref = 0.0;
     c.height = 300;
@@ -114,7 +115,7 @@ void addSignalCurves(HtmlReport& r, const ValidationReportData& d) {
     s.style = SeriesStyle::LineAndPoints;
     c.series.push_back(s);
     r.figure({"validation-signal-" + g.signal, renderSvg(c),
-              "Residual with the found effects fitted, binned by " + g.signal + ": it " + g.sentence + "."});
+              "Residual with the found effects fitted, binned by " + what + ": it " + g.sentence + "."});
   }
 }
 }  // namespace

@@ -206,6 +206,20 @@ TEST(Reports, FitStaircaseSaysWhatItsBarsAreAndColoursTrainAndTest) {
             std::string::npos);
 }
 
+// The residual signal "state_of_charge" is 1 - energy drawn / the log's energy, not the pack's
+// state of charge; its figure's axis and caption said only its key name.
+TEST(Reports, ResidualSignalIsLabelledWithWhatItIs) {
+  auto d = sampleValidation();
+  d.verdict = "Verdict: unexplained.";
+  d.signal_curves = {{"state_of_charge", "-", "follows the share of this log's energy still to be drawn", {0.1, 0.5, 0.9},
+                      {3.0, 0.0, -2.0}, "share of this log's energy still to be drawn"}};
+  const auto r = wr::validationReport(d);
+  const std::string svg = figureSvg(r, "validation-signal-state_of_charge");
+  EXPECT_NE(svg.find("energy still to be drawn [-]"), std::string::npos);  // the x axis
+  EXPECT_EQ(svg.find("state_of_charge [-]"), std::string::npos);
+  EXPECT_NE(r.html().find("binned by share of this log"), std::string::npos);
+}
+
 TEST(Reports, PhaseLegendInFlightOrderWhateverComesFirst) {
   // The legend used to list phases in the order they first occur, so two flights' plots listed
   // them differently; now it is ground, climb, hover, accelerate, cruise, brake, turn, descent.

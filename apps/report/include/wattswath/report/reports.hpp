@@ -176,6 +176,7 @@ struct SignalCurve {
   std::string sentence;          ///< what kinds of effect leave this signature
   std::vector<double> x;         ///< bin centres, in `unit`
   std::vector<double> residual;  ///< [W] mean measured - modelled power in each bin
+  std::string label;             ///< what the signal is, for the axis and caption ("" = `signal`)
 };
 
 /// Everything the validation report shows: one or more logs, their samples one after the other
