@@ -270,7 +270,7 @@ void registerDiagnose(CLI::App& app) {
       const bool any = std::any_of(d.signatures.begin(), d.signatures.end(), [](const auto& g) { return g.significant; });
       for (const auto& g : d.signatures) {  // the significant signals, or the three leads
         if (d.verdict != "unexplained" || data.signal_curves.size() >= 3 || (any && !g.significant)) break;
-        report::SignalCurve sc{g.signal, g.unit, g.sentence, {}, {}};
+        report::SignalCurve sc{g.signal, g.unit, g.sentence, {}, {}, calibration::signalLabel(g.signal)};
         for (const auto& b : g.bins) {
           sc.x.push_back(0.5 * (b.lo + b.hi));
           sc.residual.push_back(b.residual_w);
@@ -341,12 +341,21 @@ void registerFit(CLI::App& app) {
                                              {"model", o->effects + " (coefficients fitted)"},
                                              {"plots show", test.empty() ? "fitted model on the training logs"
                                                                          : "fitted model on the test logs"}});
-      data.staircase = {{"as given, train", r.train_before.rmse_w}, {"fitted, train", r.train_after.rmse_w}};
+      const std::string trainLogs = train.size() == 1 ? "training log" : "training logs";
+      const std::string testLogs = test.size() == 1 ? "test log" : "test logs";
+      data.staircase = {{"as given, train", r.train_before.rmse_w, trainLogs}, {"fitted, train", r.train_after.rmse_w, trainLogs}};
       if (!test.empty()) {
-        data.staircase.push_back({"as given, test", r.test_before.rmse_w});
-        data.staircase.push_back({"fitted, test", r.test_after.rmse_w});
+        data.staircase.push_back({"as given, test", r.test_before.rmse_w, testLogs});
+        data.staircase.push_back({"fitted, test", r.test_after.rmse_w, testLogs});
       }
       data.error_label = "sample RMSE";
+      data.staircase_title = "Error before and after the fit, on the " + trainLogs +
+                             (test.empty() ? std::string() : " and on the " + testLogs);
+      data.staircase_caption =
+          "Sample RMSE of the model as given (the vehicle file's coefficients) and fitted (coefficients fitted on the " +
+          trainLogs + "), computed on the " + trainLogs +
+          (test.empty() ? std::string() : " and on the " + testLogs + " the fit never saw (colours: legend)") +
+          "; lower is better.";
       data.diagnosis_caption = "Fitted effects (no held-out ranking: see diagnose)";
       for (const auto& e : model.effectNames()) {
         data.diagnosis.push_back({e, std::numeric_limits<double>::quiet_NaN(), fittedValuesText(r.fit.coefficients, e),

@@ -19,6 +19,7 @@
 #include "report_data.hpp"
 #include "wattswath/mission/files.hpp"
 #include "wattswath/report/reports.hpp"
+#include "wattswath/report/svg.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/geometry/geojson.hpp"
 #include "wattswath/geometry/survey_area.hpp"
@@ -484,12 +485,12 @@ void writePlanReport(const PlanOpts& o, const PlanSetup& s, const pl::PlanResult
                      const energy::EnergyModel& model, const PlanFlight& flight, const std::string& plan_text,
                      const std::optional<SortieOutcome>& split) {
   const auto& pm = flight.mission;
-  auto data = planReportData(r, s.problem, vehicle, model, o.area, flight.prediction.battery);
+  auto data = planReportData(r, s.problem, vehicle, model, o.area, flight.prediction);
   data.items = planMapItems(ms::parseQgcPlan(plan_text, "mission.plan"), *s.area.frame);
   const std::string gsd = s.photos && s.photos->gsd_m > 0.0 ? ", GSD " + fixedText(100.0 * s.photos->gsd_m, 2) + " cm/px" : "";
   data.facts.push_back({"flown by", flight.autopilot + ": " + fixedText(flight.prediction.total.energy_j / 1000.0, 1) + " kJ, " +
-                                        fixedText(flight.prediction.total.time_s / 60.0, 1) +
-                                        " min from take-off to landing (what predict gives for mission.plan)"});
+                                        report::formatMinSec(flight.prediction.total.time_s) +
+                                        " min:s from take-off to landing (what predict gives for mission.plan)"});
   data.facts.push_back({"photos", s.photos ? std::to_string(pm.photos) + " (a photo every " +
                                                  fixedText(s.photos->trigger_distance_m, 2) + " m" + gsd + ")"
                                            : std::string("no camera commands")});

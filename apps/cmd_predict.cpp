@@ -74,6 +74,8 @@ report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::Autop
                              " % usable left (the prediction's error margin, --energy-margin)"});
     }
   }
+  // A flight that does not fit says so first: the figures below show it as if the battery held out.
+  if (p.battery.known && !p.battery.fits) d.facts.insert(d.facts.begin(), {"battery verdict", p.battery.verdict});
   for (const auto& [label, text] : extra) d.facts.push_back({label, text});
   if (!p.flight.model.empty()) d.facts.push_back({"model", p.flight.model});
   for (const auto& w : p.warnings) d.facts.push_back({"note", w});

@@ -72,6 +72,8 @@ report::MissionReportData missionReportData(const ms::MissionPrediction& p, doub
     for (const double u : p.battery.usable_left) b.soc.push_back(100.0 * u);
     b.voltage = p.battery.voltage_v;
     b.model = "Hwang et al. Eq. 9-15";
+    b.reserve_pct = reserve_pct;
+    if (p.battery.depleted) b.cutoff_s = p.battery.depleted_at_s;
     d.battery = std::move(b);
     d.verdict = p.battery.verdict;
   } else {

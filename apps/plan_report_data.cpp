@@ -33,22 +33,27 @@ std::vector<geo::Point> legPolyline(const geo::PathLeg& leg) {
   return pts;
 }
 
-/// The facts a pilot reads first: time in min:s, energy in Wh, battery share and packs needed,
-/// area in ha, farthest distance from home.
-report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr) {
-  const auto& f = r.plan.flown;
-  report::Facts facts = {{"flight time", report::formatMinSec(f.time) + " min:s (" + fixedText(f.time, 0) + " s)"},
-                         {"energy (Wh)", fixedText(f.energy / 3600.0, 1) + " Wh (" + fixedText(f.energy, 0) + " J)"},
-                         {"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"}};
-  if (r.battery && r.battery->usable_energy_j > 0.0) {
-    const double share = 100.0 * r.battery->mission_energy_j / r.battery->usable_energy_j;
-    facts.push_back({"battery", fixedText(share, 0) + " % of one battery's usable energy as mission.plan flies (lands with " +
-                                    fixedText(r.battery->remaining_pct, 0) + " % of the usable charge, reserve " +
-                                    fixedText(r.battery->reserve_pct, 0) + " %); " +
-                                    std::to_string(static_cast<int>(std::ceil(share / 100.0 - 1e-9))) + " battery(ies) needed"});
+/// The facts a pilot reads first, of the flight as the autopilot model flies mission.plan from
+/// take-off to landing (what `predict` gives for it): time in min:s, energy in Wh, the battery on
+/// one basis (the usable charge, counted as the autopilot counts it, as predict's verdict says it),
+/// then the area in ha and the farthest distance from home.
+report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr, const mission::MissionPrediction& flight) {
+  const auto& t = flight.total;
+  report::Facts facts = {{"flight time", report::formatMinSec(t.time_s) + " min:s (" + fixedText(t.time_s, 0) +
+                                             " s), take-off to landing as mission.plan is flown"},
+                         {"energy (Wh)", fixedText(t.energy_j / 3600.0, 1) + " Wh (" + fixedText(t.energy_j, 0) +
+                                             " J), take-off to landing as mission.plan is flown"}};
+  if (flight.battery.known) {
+    std::string text = flight.battery.verdict;
+    if (r.battery && r.battery->usable_energy_j > 0.0 && !flight.battery.fits) {
+      const double packs = std::ceil(r.battery->mission_energy_j / r.battery->usable_energy_j - 1e-9);
+      if (packs > 1.0) text += " About " + fixedText(packs, 0) + " batteries' usable energy is needed: plan --sorties splits it.";
+    }
+    facts.push_back({flight.battery.ends_in_air ? "battery at the end (in the air)" : "battery at landing", text});
   }
+  facts.push_back({"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"});
   double farthest = 0.0;
-  for (const auto& leg : f.path.legs) farthest = std::max({farthest, (leg.start - pr.home).norm(), (leg.end - pr.home).norm()});
+  for (const auto& leg : r.plan.flown.path.legs) farthest = std::max({farthest, (leg.start - pr.home).norm(), (leg.end - pr.home).norm()});
   facts.push_back({"farthest from home", fixedText(farthest, 0) + " m"});
   return facts;
 }
@@ -99,10 +104,12 @@ void addCandidates(report::PlanReportData& d, const pl::PlanResult& r) {
                            r.best_spiral->flown.time});
 }
 
-/// The battery's state of charge and voltage along the written mission's predicted flight.
+/// The battery's usable charge left and voltage along the written mission's predicted flight.
 report::BatteryTrace batteryTrace(const mission::BatteryPrediction& b) {
   report::BatteryTrace bt;
   bt.model = "Hwang et al. 2018; mission.plan as flown";  // the charge counted as the autopilot counts it
+  bt.reserve_pct = 100.0 * b.reserve_fraction;
+  if (b.depleted) bt.cutoff_s = b.depleted_at_s;
   bt.t = b.t_s;
   for (const double u : b.usable_left) bt.soc.push_back(100.0 * u);
   bt.voltage = b.voltage_v;
@@ -116,7 +123,7 @@ report::BatteryTrace batteryTrace(const mission::BatteryPrediction& b) {
 /// written mission's flight when the vehicle has a battery.
 report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyProblem& pr, const energy::Vehicle& v,
                                       const energy::EnergyModel& model, const std::string& area_file,
-                                      const mission::BatteryPrediction& battery) {
+                                      const mission::MissionPrediction& flight) {
   report::PlanReportData d;
   d.title = "wattswath plan: " + fs::path(area_file).filename().string();
   const auto& f = r.plan.flown;
@@ -125,18 +132,21 @@ report::PlanReportData planReportData(const pl::PlanResult& r, const pl::SurveyP
              {"vehicle", v.name},
              {"plan", r.plan.pattern + " at " + num(r.plan.sweep_angle_deg, 0) + " deg, " + std::to_string(r.plan.cells) +
                           " cell(s), coverage " + num(r.plan.coverage_pct, 1) + " %"},
-             {"energy", num(f.energy, 0) + " J over " + num(f.time, 0) + " s and " + num(f.length, 0) + " m"},
+             {"planner's survey model", num(f.energy / 3600.0, 1) + " Wh (" + num(f.energy, 0) + " J) over " +
+                                            report::formatMinSec(f.time) + " min:s (" + num(f.time, 0) + " s) and " +
+                                            num(f.length, 0) + " m: the closed-form model the search scored the "
+                                            "candidates with, not the flight above"},
              {"lower bound", num(r.lower_bound_j, 0) + " J (plan / bound " +
-                                 num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ")"},
+                                 num(r.lower_bound_j > 0 ? f.energy / r.lower_bound_j : 0.0, 2) + ", in the survey model)"},
              {"spacing", num(pr.spacing, 2) + " m, altitude " + num(pr.altitude, 1) + " m"}};
-  const auto pilot = pilotFacts(r, pr);
+  const auto pilot = pilotFacts(r, pr, flight);
   d.facts.insert(d.facts.begin() + 1, pilot.begin(), pilot.end());
   d.areas = {pr.area};
   d.no_fly = pr.no_fly;
   d.home = pr.home;
   addLegsAndBreakdowns(d, f, v, model);
   addCandidates(d, r);
-  if (battery.known) d.battery = batteryTrace(battery);
+  if (flight.battery.known) d.battery = batteryTrace(flight.battery);
   return d;
 }
 

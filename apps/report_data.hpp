@@ -52,9 +52,10 @@ report::MissionReportData missionReportData(const mission::MissionPrediction& p,
 
 /// The plan report's data from the planner's result for `area_file`: the facts a pilot reads first,
 /// the map legs with the coverage and transit breakdowns, the plan and baselines as scored
-/// candidates, and `battery` (the written mission's predicted flight) when it is known.
+/// candidates, and the battery along `flight` (the written mission as the autopilot model flies it,
+/// whose take-off-to-landing time and energy lead the facts) when it is known.
 report::PlanReportData planReportData(const planner::PlanResult& r, const planner::SurveyProblem& pr, const energy::Vehicle& v,
                                       const energy::EnergyModel& model, const std::string& area_file,
-                                      const mission::BatteryPrediction& battery);
+                                      const mission::MissionPrediction& flight);
 
 }  // namespace wattswath::apps

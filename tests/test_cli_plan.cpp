@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -140,6 +141,24 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   EXPECT_NE(html.find("holes in the area (white, grey outline) are not flown over"), std::string::npos);
   EXPECT_NE(html.find("farthest from home"), std::string::npos);
   EXPECT_NE(html.find(", take-off (1), return and landing ("), std::string::npos);  // numbered as in mission.plan
+  // The report's first rows were the planner's closed-form survey figures (5:53, 80414 J) while the
+  // "flown by" and battery rows were of the flight take-off to landing (6:05, 83.2 kJ, what predict
+  // gives): it leads with that flight now, in min:s, and names the closed-form one as the survey model.
+  const double t = j.at("flight").at("time_s").get<double>(), e = j.at("flight").at("energy_j").get<double>();
+  const long secs = std::lround(t);
+  char minsec[16], wh[32];
+  std::snprintf(minsec, sizeof minsec, "%ld:%02ld", secs / 60, secs % 60);
+  std::snprintf(wh, sizeof wh, "%.1f Wh (%.0f J)", e / 3600.0, e);
+  EXPECT_NE(html.find("<dt>flight time</dt><dd>" + std::string(minsec) + " min:s"), std::string::npos) << minsec;
+  EXPECT_NE(html.find("<dt>energy (Wh)</dt><dd>" + std::string(wh)), std::string::npos) << wh;
+  EXPECT_LT(html.find("<dt>flight time</dt>"), html.find("<dt>planner&#39;s survey model</dt>"));
+  EXPECT_NE(html.find("<dt>planner&#39;s survey model</dt>"), std::string::npos);
+  EXPECT_NE(html.find(" kJ, " + std::string(minsec) + " min:s from take-off to landing"), std::string::npos);  // flown by
+  EXPECT_EQ(html.find(" min from take-off to landing"), std::string::npos);
+  // The battery row read "52 % of one battery's usable energy ... lands with 53 % of the usable
+  // charge": two bases adding to 105 %. It is predict's verdict now, on the usable charge alone.
+  EXPECT_NE(html.find("<dt>battery at landing</dt><dd>Fits: lands with "), std::string::npos);
+  EXPECT_EQ(html.find("usable energy as mission.plan flies"), std::string::npos);
 }
 
 // Without --home a plan takes off at the area's first vertex; a clockwise ring (as a Shapefile

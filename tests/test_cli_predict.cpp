@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +64,35 @@ TEST(CliPredict, SurveyPlanGivesTheJsonContractAndABatteryVerdict) {
   EXPECT_NEAR(std::stod(last.substr(last.rfind(',') + 1)), j["energy_j"].get<double>(), 1e-6 * j["energy_j"].get<double>());
   EXPECT_GT(max_power, 100.0);  // an IRIS+ draws a couple of hundred watts
   std::remove(csv.c_str());
+}
+
+// A battery that runs out: the report's usable charge dropped to 0 unlabelled while speed and
+// altitude showed a normal flight, and its header did not say it does not fit. The verdict leads the
+// header now and the speed, altitude and battery plots mark the cut-off.
+TEST(CliPredict, ReportOfABatteryThatRunsOutSaysSoFirstAndMarksTheCutOff) {
+  const std::string html = tempPath("small-battery.html"), dir = tempPath("small-battery-plan");
+  const RunResult plan = run(cli("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " +
+                                 sourcePath("data/vehicles/iris.json") + " --spacing 15 --no-report --force --out " + dir + " 2>&1"));
+  ASSERT_EQ(plan.status, 0) << plan.output;
+  const std::string base = "predict " + dir + "/mission.plan --vehicle " + sourcePath("tests/data/iris-small-battery.json");
+  const json j = runJson(base + " --json");
+  ASSERT_TRUE(j["battery"]["depleted"].get<bool>());
+  const RunResult r = run(cli(base + " --force --report " + html + " 2>&1"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream in(html);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string page = ss.str();
+  const std::size_t verdict = page.find("<dt>battery verdict</dt><dd>Does not fit: the battery reaches its cut-off");
+  EXPECT_LT(verdict, page.find("<dt>mission</dt>"));  // the first fact
+  const long secs = std::lround(j["battery"]["depleted_at_s"].get<double>());
+  char label[64];
+  std::snprintf(label, sizeof label, ">battery cut-off %ld:%02ld</text>", secs / 60, secs % 60);
+  int marks = 0;
+  for (std::size_t p = page.find(label); p != std::string::npos; p = page.find(label, p + 1)) ++marks;
+  EXPECT_EQ(marks, 3) << label;  // speed, altitude and battery
+  std::remove(html.c_str());
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CliPredict, AReserveWithinThePredictionsErrorIsTooCloseToCall) {

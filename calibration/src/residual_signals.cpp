@@ -252,13 +252,22 @@ std::vector<ResidualSignature> residualSignatures(const std::vector<PreparedLog>
   return merged;
 }
 
+std::string signalLabel(const std::string& signal) {
+  if (signal == "state_of_charge") return "share of this log's energy still to be drawn";
+  std::string label = signal;
+  std::replace(label.begin(), label.end(), '_', ' ');
+  return label;
+}
+
 std::string signatureSentence(const std::string& signal, bool rises) {
   const std::string dir = rises ? "rises" : "falls";
   if (signal == "time")
     return std::string(rises ? "grows" : "shrinks") +
            " with time since take-off: motor or ESC heating, battery sag, or a slow change of the vehicle or sensor";
-  if (signal == "state_of_charge")
-    return "follows the battery's state of charge: internal resistance and sag as the battery empties";
+  if (signal == "state_of_charge")  // 1 - energy drawn / the log's energy: this log's progress, not the pack's charge
+    return "follows the share of this log's energy still to be drawn (1 at its start, 0 at its end; not the pack's "
+           "state of charge, which the log does not give): battery sag as the pack empties if the flight began on a "
+           "full pack, or anything else that changes steadily through the flight";
   if (signal == "current_squared")
     return dir + " with current squared: resistive loss in the battery, wiring or ESCs (I^2 R)";
   if (signal == "power_squared")

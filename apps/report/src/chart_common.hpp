@@ -15,6 +15,9 @@ constexpr double kCharWidth = 6.6;           ///< [px] rough width of one 12 px 
 constexpr double kLegendRow = 18.0;          ///< [px] height of one legend row
 inline const char* const kGrid = "#e3e3e3";  ///< grid line colour
 inline const char* const kInk = "#222222";   ///< text and axis colour
+/// Fill opacity of a line chart's shaded x ranges (flight phases) and of their legend swatches; at
+/// the 0.16 used before, take-off (#D55E00) and landing (#CC79A7) bands were hard to tell apart.
+constexpr double kBandOpacity = 0.26;
 
 /// Rough width [px] of `s` in a `font` px font.
 inline double textWidth(const std::string& s, double font = 12.0) {
@@ -30,6 +33,7 @@ struct LegendItem {
   std::string colour;                  ///< "#rrggbb"
   std::string dash;                    ///< SVG dash array ("" = solid)
   LegendKind kind = LegendKind::Line;  ///< symbol
+  double opacity = 1.0;                ///< a swatch's fill opacity: that of what it stands for (a bar 1, a band kBandOpacity)
 };
 
 /// The legend laid out in rows that fit `width` [px].

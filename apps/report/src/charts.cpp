@@ -36,7 +36,8 @@ void drawLegend(SvgWriter& svg, const std::vector<std::vector<LegendItem>>& rows
     for (const auto& it : row) {
       const double cy = y + kLegendRow / 2;
       if (it.kind == LegendKind::Swatch) {
-        svg.rect(x, cy - 6, 24, 12, {{"fill", it.colour}, {"fill-opacity", "0.6"}, {"stroke", it.colour}});
+        svg.rect(x, cy - 6, 24, 12, {{"fill", it.colour}, {"fill-opacity", svgNum(it.opacity)}, {"stroke", it.colour},
+                                     {"stroke-opacity", svgNum(std::min(1.0, 2.0 * it.opacity))}});
       } else if (it.kind == LegendKind::Points) {
         svg.leaf("circle", {{"cx", svgNum(x + 12)}, {"cy", svgNum(cy)}, {"r", "3"}, {"fill", it.colour}});
       } else {
@@ -220,7 +221,14 @@ std::pair<Range, Range> lineChartRanges(const LineChart& c) {
     xr.add(r.x1, c.x.log);
   }
   for (const auto& e : c.events) xr.add(e.x, c.x.log);
+  for (const auto& l : c.x_lines) xr.add(l.x, c.x.log);
   if (c.y_ref) yr.add(*c.y_ref, c.y.log);
+  if (!c.markers.empty() && !yr.empty() && !c.y.log && !c.diagonal) {
+    // A marker's ring (6 px) at the data's lowest or highest value sat on the frame (the chosen plan
+    // at the candidates' lowest energy): the range gets 6 % of room on each side.
+    const double pad = 0.06 * std::max(yr.hi - yr.lo, 1e-9 * std::max(1.0, std::abs(yr.hi)));
+    yr = {yr.lo - pad, yr.hi + pad};
+  }
   if (xr.empty()) xr = {c.x.log ? 1.0 : 0.0, c.x.log ? 10.0 : 1.0};
   if (yr.empty()) yr = {c.y.log ? 1.0 : 0.0, c.y.log ? 10.0 : 1.0};
   if (c.diagonal) {  // measured vs modelled: same range on both axes
@@ -243,7 +251,7 @@ std::vector<LegendItem> lineChartLegend(const LineChart& c) {
   for (const auto& r : c.shaded) {
     if (r.label.empty() || seen[r.label]) continue;
     seen[r.label] = true;
-    items.push_back({r.label, r.colour, "", LegendKind::Swatch});
+    items.push_back({r.label, r.colour.empty() ? "#999999" : r.colour, "", LegendKind::Swatch, kBandOpacity});
   }
   return items;
 }
@@ -289,7 +297,7 @@ PlotFrame lineChartFrame(const LineChart& c, const Ticks& yt, const std::vector<
     return std::any_of(c.events.begin(), c.events.end(), [&](const XEvent& e) { return e.bottom == bottomEdge; });
   };
   const double events_top = onEdge(false) ? 16.0 : 0.0, events_bottom = onEdge(true) ? 16.0 : 0.0;
-  PlotFrame f = layoutFrame(c.width, c.height, {leftMargin(yt), 18.0, (c.title.empty() ? 12.0 : 32.0) + events_top,
+  PlotFrame f = layoutFrame(c.width, c.height, {std::max(leftMargin(yt), c.left_margin.value_or(0.0)), 18.0, (c.title.empty() ? 12.0 : 32.0) + events_top,
                                                 46.0 + events_bottom},
                             items, "chart");
   f.events_bottom = events_bottom;
@@ -304,7 +312,7 @@ void drawShaded(SvgWriter& svg, const LineChart& c, const Scale& sx, const PlotF
     const double b = std::clamp(sx(std::max(r.x0, r.x1)), f.px0, f.px1);
     if (b <= a) continue;
     svg.open("rect", {{"x", svgNum(a)}, {"y", svgNum(f.py0)}, {"width", svgNum(b - a)}, {"height", svgNum(f.py1 - f.py0)},
-                      {"fill", r.colour.empty() ? "#999999" : r.colour}, {"fill-opacity", "0.16"}});
+                      {"fill", r.colour.empty() ? "#999999" : r.colour}, {"fill-opacity", svgNum(kBandOpacity)}});
     svg.title(r.label + ": " + formatNumber(r.x0, 2) + " to " + formatNumber(r.x1, 2) + " " + c.x.unit);
     svg.close();
   }
@@ -423,6 +431,26 @@ void drawMarkers(SvgWriter& svg, const LineChart& c, const Scale& sx, const Scal
   }
 }
 
+/// Labelled vertical lines across the plot (a battery cut-off), drawn over the data; the label sits
+/// at the line's top, inside the plot, on the side with room.
+void drawXLines(SvgWriter& svg, const LineChart& c, const Scale& sx, const PlotFrame& f) {
+  for (const auto& l : c.x_lines) {
+    if (!sx.valid(l.x)) continue;
+    const double X = sx(l.x);
+    if (X < f.px0 - 0.5 || X > f.px1 + 0.5) continue;
+    svg.open("g", {{"class", "x-line"}});
+    svg.title(l.label);
+    Attrs a = {{"stroke", l.colour}, {"stroke-width", "1.8"}};
+    if (!l.dash.empty()) a.push_back({"stroke-dasharray", l.dash});
+    svg.line(X, f.py0, X, f.py1, a);
+    const bool leftSide = X + 6 + textWidth(l.label, 11) > f.px1;
+    svg.text(X + (leftSide ? -5 : 5), f.py0 + 14, l.label,
+             {{"fill", l.colour}, {"font-size", "11"}, {"font-weight", "bold"}, {"text-anchor", leftSide ? "end" : "start"},
+              {"stroke", "#ffffff"}, {"stroke-width", "3"}, {"paint-order", "stroke"}});
+    svg.close();
+  }
+}
+
 }  // namespace
 
 std::string renderSvg(const LineChart& c) {
@@ -444,6 +472,7 @@ std::string renderSvg(const LineChart& c) {
     drawSeries(svg, s, s.colour.empty() ? seriesColour(i) : s.colour, sx, sy, f);
   }
   drawMarkers(svg, c, sx, sy, f);
+  drawXLines(svg, c, sx, f);
   drawEvents(svg, c.events, sx, f.px0, f.py0, f.px1, f.py1);
   svg.rect(f.px0, f.py0, f.px1 - f.px0, f.py1 - f.py0, {{"fill", "none"}, {"stroke", "#888888"}, {"stroke-width", "1"}});
   drawLegend(svg, f.rows, f.px0, c.height - 4);

@@ -37,29 +37,87 @@ struct LabelBox {
   bool overlaps(const LabelBox& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
 };
 
+/// [em] Width of one character of a bold label: DejaVu Sans Bold's digits advance 0.696 em, wider
+/// than the 0.62 em once assumed, which let "50" and "49" run together as "5049".
+constexpr double kBoldCharEm = 0.72;
+/// [px] Space kept between two labels (and between a label and the plot's edge).
+constexpr double kLabelGap = 2.0;
+
 /// Where the label of a marker of radius `r` at (x, y) goes: above right, below right, above left or
-/// below left of it, the first that overlaps no label in `placed` (added to it); none when all do
-/// (the marker's tooltip still names it).
+/// below left of it, the first that lies inside `bounds` (the plot area) and keeps kLabelGap from
+/// every label in `placed` (added to it). When no place is inside, the first of them that overlaps
+/// nothing is moved inside; none when all overlap (the marker's tooltip still names it).
 std::optional<LabelBox> placeLabel(double x, double y, double r, const std::string& label, double font_px,
-                                   std::vector<LabelBox>& placed) {
-  const double w = 0.62 * font_px * static_cast<double>(label.size()), h = font_px;
+                                   const LabelBox& bounds, std::vector<LabelBox>& placed) {
+  const double w = kBoldCharEm * font_px * static_cast<double>(label.size()), h = font_px;
   const double gap = r + 3;
   const LabelBox candidates[] = {{x + gap, y - r - 1 - h, x + gap + w, y - r - 1},
                                  {x + gap, y + r + 1, x + gap + w, y + r + 1 + h},
                                  {x - gap - w, y - r - 1 - h, x - gap, y - r - 1},
                                  {x - gap - w, y + r + 1, x - gap, y + r + 1 + h}};
+  const auto free = [&](const LabelBox& c) {
+    const LabelBox grown{c.x0 - kLabelGap, c.y0 - kLabelGap, c.x1 + kLabelGap, c.y1 + kLabelGap};
+    return std::none_of(placed.begin(), placed.end(), [&](const LabelBox& p) { return p.overlaps(grown); });
+  };
+  const auto inside = [&](const LabelBox& c) {
+    return c.x0 >= bounds.x0 && c.x1 <= bounds.x1 && c.y0 >= bounds.y0 && c.y1 <= bounds.y1;
+  };
   for (const auto& c : candidates) {
-    if (std::none_of(placed.begin(), placed.end(), [&](const LabelBox& p) { return p.overlaps(c); })) {
+    if (inside(c) && free(c)) {
       placed.push_back(c);
       return c;
+    }
+  }
+  for (const auto& c : candidates) {  // a label longer than the room on either side: moved inside
+    const double dx = std::clamp(c.x0, bounds.x0, std::max(bounds.x0, bounds.x1 - w)) - c.x0;
+    const double dy = std::clamp(c.y0, bounds.y0, std::max(bounds.y0, bounds.y1 - h)) - c.y0;
+    const LabelBox moved{c.x0 + dx, c.y0 + dy, c.x1 + dx, c.y1 + dy};
+    if (free(moved)) {
+      placed.push_back(moved);
+      return moved;
     }
   }
   return std::nullopt;
 }
 
+/// [m] The scale bar's length: 1, 2 or 5 times a power of ten, at most a fifth of the map's width.
+double scaleBarLength(const MapFrame& f) {
+  const double target = 0.2 * f.pw / f.scale;
+  const double mag = std::pow(10.0, std::floor(std::log10(target)));
+  double len = mag;
+  for (const double k : {1.0, 2.0, 5.0}) {
+    if (k * mag <= target) len = k * mag;
+  }
+  return len;
+}
+
+/// Where the north arrow and (without axes) the scale bar are drawn [px]: no label goes over them.
+std::vector<LabelBox> mapFurniture(const MapView& m, const MapFrame& f) {
+  const double nx = f.left + (m.axes ? 16.0 : 14.0), ny = f.top + (m.axes ? 6.0 : 4.0);
+  std::vector<LabelBox> out = {{nx - 8, ny, nx + 8, ny + 32}};
+  if (!m.axes) {
+    const double by = f.top + f.ph - 10, bw = scaleBarLength(f) * f.scale;
+    out.push_back({f.left + 8, by - 14, f.left + 8 + bw + 6 + 50, by + 2});
+  }
+  return out;
+}
+
 void drawMarkers(SvgWriter& svg, const MapView& m, const MapFrame& f) {
-  std::vector<LabelBox> placed;
-  for (const auto& k : m.markers) {
+  std::vector<LabelBox> placed = mapFurniture(m, f);
+  const LabelBox bounds{f.left, f.top, f.left + f.pw, f.top + f.ph};
+  // Labels are placed larger markers first (home and start before the waypoint dots), so that a
+  // waypoint number at home never takes the place the home label needs: the number is the one
+  // left out then (its tooltip stays).
+  std::vector<std::size_t> order(m.markers.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return m.markers[a].size > m.markers[b].size; });
+  std::vector<std::optional<LabelBox>> boxes(m.markers.size());
+  for (const std::size_t i : order) {
+    const auto& k = m.markers[i];
+    boxes[i] = placeLabel(f.X(k.position.x()), f.Y(k.position.y()), k.size, k.label, k.size < 5 ? 11 : 12, bounds, placed);
+  }
+  for (std::size_t i = 0; i < m.markers.size(); ++i) {
+    const auto& k = m.markers[i];
     const double x = f.X(k.position.x()), y = f.Y(k.position.y()), r = k.size;
     svg.open("g", {{"class", "marker"}});
     svg.title(k.label + " (" + formatNumber(k.position.x(), 1) + " m E, " + formatNumber(k.position.y(), 1) + " m N)");
@@ -78,8 +136,7 @@ void drawMarkers(SvgWriter& svg, const MapView& m, const MapFrame& f) {
       a.insert(a.end(), style.begin(), style.end());
       svg.leaf("circle", a);
     }
-    const double font_px = r < 5 ? 11 : 12;
-    if (const auto box = placeLabel(x, y, r, k.label, font_px, placed)) {
+    if (const auto& box = boxes[i]) {
       svg.text(box->x0, box->y1, k.label,
                {{"fill", k.colour},
                 {"font-weight", "bold"},
@@ -93,12 +150,7 @@ void drawMarkers(SvgWriter& svg, const MapView& m, const MapFrame& f) {
 }
 
 void drawScaleBar(SvgWriter& svg, const MapFrame& f, double y_base) {
-  const double target = 0.2 * f.pw / f.scale;
-  const double mag = std::pow(10.0, std::floor(std::log10(target)));
-  double len = mag;
-  for (const double k : {1.0, 2.0, 5.0}) {
-    if (k * mag <= target) len = k * mag;
-  }
+  const double len = scaleBarLength(f);
   const double bx = f.left + 8, by = y_base - 10, bw = len * f.scale;
   svg.open("g", {{"class", "scalebar"}});
   svg.rect(bx, by - 5, bw / 2, 5, {{"fill", kInk}});

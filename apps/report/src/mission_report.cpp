@@ -13,6 +13,56 @@
 
 namespace wattswath::report {
 
+namespace detail {
+
+std::string cutoffLabel(double seconds) { return "battery cut-off " + formatMinSec(seconds); }
+
+LineChart usableChargeChart(const BatteryTrace& b, const Axis& time) {
+  LineChart c;
+  c.title = "Battery: usable charge left" + (b.model.empty() ? std::string() : " (" + b.model + ")");
+  c.x = time;
+  c.y = {"usable charge left", "%"};
+  c.y.min = 0.0;
+  c.y.max = 100.0;
+  c.height = 320;
+  Series left("usable charge left", {}, {});
+  const std::size_t n = std::min(b.t.size(), b.soc.size());
+  const std::size_t stride = std::max<std::size_t>(1, n / 4000 + 1);  // display only: at most about 4000 points
+  for (std::size_t i = 0; i < n; i += stride) {
+    left.x.push_back(b.t[i] / 60.0);
+    left.y.push_back(b.soc[i]);
+  }
+  if (n > 0 && (n - 1) % stride != 0) {
+    left.x.push_back(b.t[n - 1] / 60.0);
+    left.y.push_back(b.soc[n - 1]);
+  }
+  left.colour = seriesColour(0);
+  left.width = 2.0;
+  c.series = {std::move(left)};
+  if (std::isfinite(b.reserve_pct) && !b.t.empty()) {
+    Series reserve("reserve " + formatNumber(b.reserve_pct, 0) + " %", {b.t.front() / 60.0, b.t.back() / 60.0},
+                   {b.reserve_pct, b.reserve_pct});
+    reserve.colour = seriesColour(1);
+    reserve.dash = "6 3";
+    reserve.width = 1.6;
+    c.series.push_back(std::move(reserve));
+  }
+  if (b.cutoff_s) c.x_lines.push_back({*b.cutoff_s / 60.0, cutoffLabel(*b.cutoff_s)});
+  return c;
+}
+
+std::string usableChargeCaption(const BatteryTrace& b) {
+  return "Usable charge left (100 % full, 0 % at the cut-off voltage) along the predicted flight" +
+         std::string(std::isfinite(b.reserve_pct) ? ", against the reserve to keep on landing," : "") +
+         " counted as the autopilot counts it (the charge drawn against the pack's capacity, as a ground station "
+         "shows it); a pack drawn hard reaches its cut-off sooner (Peukert), which the verdict checks as well." +
+         (b.cutoff_s ? " The battery reaches its cut-off " + formatMinSec(*b.cutoff_s) +
+                           " min:s into the flight (the red line): the flight after it is not possible."
+                     : std::string());
+}
+
+}  // namespace detail
+
 using namespace detail;
 
 namespace {
@@ -148,9 +198,20 @@ void missionMap(HtmlReport& r, const MissionReportData& d) {
                 verticalPhasesNote(d)});
 }
 
+/// The battery's cut-off as a line on the time plots [min] (none when it is not reached).
+std::vector<XLine> cutoffLines(const MissionReportData& d) {
+  if (!d.battery || !d.battery->cutoff_s) return {};
+  return {{*d.battery->cutoff_s / 60.0, cutoffLabel(*d.battery->cutoff_s)}};
+}
+
 void speedAndAltitude(HtmlReport& r, const MissionReportData& d) {
   const auto shading = phaseShading(d);
+  const std::string cutoff = d.battery && d.battery->cutoff_s
+                                 ? " The red line is where the battery reaches its cut-off: the flight after it is not possible."
+                                 : "";
   LineChart c;
+  c.left_margin = kStackedLeftMargin;  // the time plots stacked on the page start at the same x
+  c.x_lines = cutoffLines(d);
   c.title = "Speed along the path";
   c.x = timeAxis(d);
   c.y = {"speed", "m/s"};
@@ -168,17 +229,19 @@ void speedAndAltitude(HtmlReport& r, const MissionReportData& d) {
   r.figure(
       {"mission-speed", renderSvg(c),
        "Predicted speed along the path; the background shows the flight phase and the ticks along the top the time "
-       "each mission item is reached (its number)."});
+       "each mission item is reached (its number)." + cutoff});
   LineChart a;
   a.title = "Altitude";
   a.x = c.x;
   a.y = {"height above home", "m"};
   a.y.include_zero = true;
   a.height = 300;
+  a.left_margin = kStackedLeftMargin;
+  a.x_lines = cutoffLines(d);
   a.series = {thinned("predicted height", minutes(d.t), d.z)};
   a.series[0].colour = "#222222";
   a.shaded = shading;
-  r.figure({"mission-altitude", renderSvg(a), "Predicted height above the take-off point."});
+  r.figure({"mission-altitude", renderSvg(a), "Predicted height above the take-off point." + cutoff});
 }
 
 void batteryFigure(HtmlReport& r, const MissionReportData& d) {
@@ -186,30 +249,12 @@ void batteryFigure(HtmlReport& r, const MissionReportData& d) {
     r.paragraph("The vehicle file has no battery: the usable charge along the flight cannot be shown.");
     return;
   }
-  const auto& b = *d.battery;
-  LineChart c;
-  c.title = "Battery: usable charge left" + (b.model.empty() ? std::string() : " (" + b.model + ")");
-  c.x = timeAxis(d);
-  c.y = {"usable charge left", "%"};
-  c.y.min = 0.0;
-  c.y.max = 100.0;
-  c.height = 320;
-  c.series = {thinned("usable charge left", minutes(b.t), b.soc)};
-  c.series[0].colour = seriesColour(0);
-  c.series[0].width = 2.0;
-  Series reserve("reserve " + formatNumber(d.reserve_pct, 0) + " %", {b.t.front() / 60.0, b.t.back() / 60.0},
-                 {d.reserve_pct, d.reserve_pct});
-  reserve.colour = seriesColour(1);
-  reserve.dash = "6 3";
-  reserve.width = 1.6;
-  c.series.push_back(reserve);
+  BatteryTrace b = *d.battery;
+  if (!std::isfinite(b.reserve_pct)) b.reserve_pct = d.reserve_pct;
+  LineChart c = usableChargeChart(b, timeAxis(d));
   c.shaded = phaseShading(d);
-  r.figure(
-      {"mission-battery", renderSvg(c),
-       "Usable charge left (100 % full, 0 % at the cut-off voltage) along the predicted flight, against the reserve "
-       "to keep on landing, counted as the autopilot counts it (the charge drawn against the pack's capacity, "
-       "as a ground station shows it); a pack drawn hard reaches its cut-off sooner (Peukert), which the verdict "
-       "checks as well."});
+  c.left_margin = kStackedLeftMargin;
+  r.figure({"mission-battery", renderSvg(c), usableChargeCaption(b)});
 }
 
 std::vector<std::string> totalsRow(const MissionPhaseTotals& p, const std::string& name) {

@@ -242,29 +242,30 @@ void planCandidates(HtmlReport& r, const PlanReportData& d) {
 }
 
 void planBattery(HtmlReport& r, const PlanReportData& d) {
-  if (!d.battery) {
-    r.paragraph("No battery model was given: state of charge and voltage are not shown.");
+  if (!d.battery || d.battery->t.empty()) {
+    r.paragraph("No battery model was given: the usable charge and voltage are not shown.");
     return;
   }
   const auto& b = *d.battery;
-  LineChart c;
-  c.title = "Battery state of charge" + (b.model.empty() ? std::string() : " (" + b.model + ")");
-  c.x = {"time", "s"};
-  c.y = {"state of charge", "%"};
-  c.y.min = 0.0;
-  c.y.max = 100.0;
-  c.series = {Series("state of charge", b.t, b.soc)};
-  c.height = 300;
-  r.figure({"plan-battery-soc", renderSvg(c), "State of charge over the mission."});
+  Axis time{"time since the take-off command", "min"};
+  time.min = 0.0;
+  if (b.t.back() > 0.0) time.max = b.t.back() / 60.0;
+  LineChart c = usableChargeChart(b, time);  // as predict's report draws it
+  c.left_margin = kStackedLeftMargin;
+  r.figure({"plan-battery-soc", renderSvg(c), usableChargeCaption(b)});
   if (!b.voltage.empty()) {
     LineChart v;
     v.title = "Battery voltage";
-    v.x = {"time", "s"};
+    v.x = time;
     v.y = {"voltage", "V"};
-    v.series = {Series("terminal voltage", b.t, b.voltage)};
+    std::vector<double> minutes;
+    for (const double t : b.t) minutes.push_back(t / 60.0);
+    v.series = {Series("terminal voltage", minutes, b.voltage)};
     v.series[0].colour = seriesColour(1);
     v.height = 300;
-    r.figure({"plan-battery-voltage", renderSvg(v), "Terminal voltage over the mission."});
+    v.left_margin = kStackedLeftMargin;
+    if (b.cutoff_s) v.x_lines.push_back({*b.cutoff_s / 60.0, cutoffLabel(*b.cutoff_s)});
+    r.figure({"plan-battery-voltage", renderSvg(v), "Terminal voltage over the flight."});
   }
 }
 

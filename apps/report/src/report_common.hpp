@@ -16,6 +16,17 @@ constexpr double kDeg = 180.0 / kPi;  // [deg] per radian
 /// Energy [J] written in kJ with 3 decimals.
 inline std::string kJ(double joules) { return formatNumber(joules / 1000.0, 3); }
 
+/// The usable-charge figure of a predicted flight, drawn the same in the plan and mission reports:
+/// usable charge left [%] (as the autopilot counts it) against `time` [min], the reserve line when
+/// `b.reserve_pct` is known, and the cut-off marked when the battery reaches it in flight.
+LineChart usableChargeChart(const BatteryTrace& b, const Axis& time);
+
+/// The caption of usableChargeChart's figure.
+std::string usableChargeCaption(const BatteryTrace& b);
+
+/// "battery cut-off m:ss": the label of the line marking the cut-off on the time plots.
+std::string cutoffLabel(double seconds);
+
 /// Adds the facts table to `r` unless there are none.
 inline void addFacts(HtmlReport& r, const Facts& f) {
   if (!f.empty()) r.facts(f);

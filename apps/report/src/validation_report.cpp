@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
+#include "chart_common.hpp"
 #include "report_common.hpp"
 #include "wattswath/report/charts.hpp"
 #include "wattswath/report/reports.hpp"
@@ -102,9 +104,10 @@ void addSignalCurves(HtmlReport& r, const ValidationReportData& d) {
   r.heading("What the residual keeps");
   if (!d.verdict.empty()) r.paragraph(d.verdict);
   for (const auto& g : d.signal_curves) {
+    const std::string what = g.label.empty() ? g.signal : g.label;
     LineChart c;
-    c.title = "Residual against " + g.signal;
-    c.x = {g.signal, g.unit};
+    c.title = "Residual against " + what + (what == g.signal ? "" : " (" + g.signal + ")");
+    c.x = {what, g.unit};
     c.y = {"measured - modelled", "W"};
     c.y_ref = 0.0;
     c.height = 300;
@@ -112,7 +115,7 @@ void addSignalCurves(HtmlReport& r, const ValidationReportData& d) {
     s.style = SeriesStyle::LineAndPoints;
     c.series.push_back(s);
     r.figure({"validation-signal-" + g.signal, renderSvg(c),
-              "Residual with the found effects fitted, binned by " + g.signal + ": it " + g.sentence + "."});
+              "Residual with the found effects fitted, binned by " + what + ": it " + g.sentence + "."});
   }
 }
 }  // namespace
@@ -157,6 +160,12 @@ void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::ve
   const std::size_t n = d.t.size();
   if (n == 0) return;
   r.heading("Power over time");
+  // One power range for every log's figure, so that the figures compare at a glance (each had its own).
+  Range shared;
+  for (const auto* v : {&d.measured_power, &d.modelled_power})
+    for (const double p : *v) shared.add(p, false);
+  std::optional<Ticks> common;
+  if (starts.size() > 1 && !shared.empty() && shared.hi > shared.lo) common = niceTicks(shared.lo, shared.hi);
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const std::size_t a = starts[k], b = k + 1 < starts.size() ? starts[k + 1] : n;
     if (a == b) continue;
@@ -169,6 +178,10 @@ void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::ve
     c.title = "Measured and modelled electrical power" + (name.empty() ? std::string() : ": " + name);
     c.x = {"log time (the log's own clock)", "s"};
     c.y = {"power", "W"};
+    if (common) {
+      c.y.min = common->lo;
+      c.y.max = common->hi;
+    }
     if (!d.measured_power.empty()) c.series.push_back(Series("measured", t, slice(d.measured_power)));
     if (!d.modelled_power.empty()) c.series.push_back(Series("modelled", t, slice(d.modelled_power)));
     for (std::size_t i = 0; i < c.series.size(); ++i) c.series[i].width = 1.3;
@@ -180,7 +193,8 @@ void addPowerFigures(HtmlReport& r, const ValidationReportData& d, const std::ve
                      [](const auto& a, const auto& b) { return phaseRank(a.label) < phaseRank(b.label); });
     r.figure({k == 0 ? std::string("validation-power") : "validation-power-" + std::to_string(k + 1), renderSvg(c),
               "Measured and modelled power" + (name.empty() ? std::string() : " of " + name) +
-                  "; the background shows the phase of flight."});
+                  "; the background shows the phase of flight." +
+                  (common ? std::string(" Every log's power figure has the same power axis.") : std::string())});
   }
 }
 
@@ -253,19 +267,34 @@ void addLegEnergies(HtmlReport& r, const ValidationReportData& d) {
   r.table(t);
 }
 
-// The error as effects are added, one bar per step.
+// The error staircase: one bar per step, coloured by the logs it is computed on when the steps
+// name them (fit: as given and fitted, on the training logs and on the test log).
 void addStaircase(HtmlReport& r, const ValidationReportData& d) {
   r.heading("Error staircase");
   BarChart b;
-  b.title = "Error as effects are added";
+  b.title = d.staircase_title;
   for (const auto& s : d.staircase) b.categories.push_back(s.label);
-  b.series = {d.error_label};
-  b.values = {{}};
-  for (const auto& s : d.staircase) b.values[0].push_back(s.error);
+  std::vector<std::string> groups;
+  for (const auto& s : d.staircase)
+    if (!s.group.empty() && std::find(groups.begin(), groups.end(), s.group) == groups.end()) groups.push_back(s.group);
+  if (groups.empty()) {
+    b.series = {d.error_label};
+    b.values = {{}};
+    for (const auto& s : d.staircase) b.values[0].push_back(s.error);
+    b.colours = {seriesColour(0)};
+  } else {  // one series per group, each bar in its group's series only: one full-width bar per step
+    b.stacked = true;
+    b.series = groups;
+    b.values.assign(groups.size(), std::vector<double>(d.staircase.size(), std::numeric_limits<double>::quiet_NaN()));
+    for (std::size_t k = 0; k < d.staircase.size(); ++k) {
+      const auto g = std::find(groups.begin(), groups.end(), d.staircase[k].group) - groups.begin();
+      if (static_cast<std::size_t>(g) < groups.size()) b.values[static_cast<std::size_t>(g)][k] = d.staircase[k].error;
+    }
+    for (std::size_t g = 0; g < groups.size(); ++g) b.colours.push_back(seriesColour(g));
+  }
   b.y = {d.error_label, d.error_unit};
-  b.colours = {seriesColour(0)};
   b.height = 320;
-  r.figure({"validation-staircase", renderSvg(b), "Each bar is the model after one more step; lower is better."});
+  r.figure({"validation-staircase", renderSvg(b), d.staircase_caption});
 }
 
 // The diagnosis: each candidate effect, its held-out improvement and whether it was kept.

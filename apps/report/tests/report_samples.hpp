@@ -66,6 +66,7 @@ inline wr::PlanReportData samplePlan() {
     b.soc.push_back(100.0 - 0.11 * s);
     b.voltage.push_back(16.6 - 0.0025 * s - 0.3 * (s > 0));
   }
+  b.reserve_pct = 25.0;
   d.battery = b;
   return d;
 }

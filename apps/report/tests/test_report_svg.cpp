@@ -122,7 +122,7 @@ TEST(ReportSvg, LineChartIsWellFormedWithUnitsLegendAndPhases) {
   EXPECT_NE(svg.find("power &lt;measured&gt; &amp; &quot;modelled&quot;"), std::string::npos);
   EXPECT_NE(svg.find(">measured</text>"), std::string::npos);
   EXPECT_NE(svg.find(">cruise</text>"), std::string::npos);  // phase swatch in the legend
-  EXPECT_EQ(countOf(svg, "fill-opacity=\"0.16\""), 3);           // three shaded phases
+  EXPECT_EQ(countOf(svg, "fill-opacity=\"0.26\""), 6);           // three shaded phases and their swatches
   EXPECT_EQ(svg.find("<script"), std::string::npos);
   EXPECT_EQ(svg.find("id="), std::string::npos);  // no ids that could collide in one page
   // Every drawn coordinate lies inside the figure.
@@ -202,6 +202,51 @@ TEST(ReportSvg, BarChartsGroupedAndStacked) {
   EXPECT_NE(svg.find(">54.0</text>"), std::string::npos);  // cruise stack total
   b.values.pop_back();
   EXPECT_THROW(wr::renderSvg(b), std::invalid_argument);
+}
+
+// Legend swatches were drawn at fill-opacity 0.6 whatever they stood for: paler than the opaque
+// bars, far darker than the phase bands (0.16). A swatch now has the opacity of what it names.
+TEST(ReportSvg, LegendSwatchesLookLikeTheBarsAndBandsTheyName) {
+  wr::BarChart b;
+  b.categories = {"a", "b"};
+  b.series = {"hover", "kinetic"};
+  b.values = {{1, 2}, {3, 4}};
+  b.y = {"energy", "kJ"};
+  std::string svg = wr::renderSvg(b);
+  EXPECT_EQ(svg.find("fill-opacity=\"0.6\""), std::string::npos);
+  std::set<std::string> opacities;
+  for (std::size_t p = svg.find("fill-opacity=\""); p != std::string::npos; p = svg.find("fill-opacity=\"", p + 1))
+    opacities.insert(svg.substr(p + 14, svg.find('"', p + 14) - p - 14));
+  EXPECT_EQ(opacities, std::set<std::string>{"1"});  // legend swatches as opaque as the bars (drawn without opacity)
+  svg = wr::renderSvg(sampleLine());  // three phase bands
+  std::vector<double> bands;  // translucent fills: the bands and their swatches (points are opaque)
+  for (const double o : attrValues(svg, "fill-opacity"))
+    if (o < 1.0) bands.push_back(o);
+  ASSERT_EQ(bands.size(), 6u);  // 3 bands and 3 swatches
+  for (const double o : bands) EXPECT_DOUBLE_EQ(o, bands.front());
+  EXPECT_GE(bands.front(), 0.25);  // take-off and landing colours told apart at band opacity
+}
+
+// The chosen candidate's ring sat on the plot's bottom frame: the y axis started at its value (the
+// lowest energy). A chart with markers leaves room round the data.
+TEST(ReportSvg, MarkersAtTheDataEdgeAreNotOnTheFrame) {
+  wr::LineChart c;
+  c.x = {"sweep angle", "deg"};
+  c.y = {"energy", "kJ"};
+  c.series = {wr::Series("candidates", {0, 45, 90, 135}, {120, 131, 140, 129})};
+  c.markers = {{0, 120, "chosen", "#000000"}};
+  const std::string svg = wr::renderSvg(c);
+  const std::size_t frame = svg.rfind("fill=\"none\" stroke=\"#888888\"");
+  const std::string rect = svg.substr(svg.rfind("<rect", frame), frame - svg.rfind("<rect", frame));
+  const auto ys = attrValues(rect, "y"), hs = attrValues(rect, "height");
+  ASSERT_EQ(ys.size(), 1u);
+  const double bottom = ys[0] + hs[0];
+  const std::size_t ring = svg.find("r=\"6\"");
+  ASSERT_NE(ring, std::string::npos);
+  const std::string circle = svg.substr(svg.rfind("<circle", ring), ring - svg.rfind("<circle", ring));
+  const auto cy = attrValues(circle, "cy");
+  ASSERT_EQ(cy.size(), 1u);
+  EXPECT_LE(cy[0] + 6.0, bottom - 2.0) << "the ring touches the bottom frame";
 }
 
 TEST(ReportSvg, MapWithHolesPathMarkersAndBars) {
@@ -287,6 +332,60 @@ TEST(ReportSvg, MapLabelsAreMovedRoundTheirMarkerNotDrawnOverEachOther) {
   EXPECT_EQ(corners.size(), 4u);                                // four places round the dot
   EXPECT_EQ(svg.find(">15</text>"), std::string::npos);         // no fifth place: left out
   EXPECT_NE(svg.find("<title>15 ("), std::string::npos);        // its tooltip stays
+}
+
+namespace {
+
+/// The x and y attributes of the <text> whose content is `label` in `svg` (NaN when not drawn).
+std::pair<double, double> textAt(const std::string& svg, const std::string& label) {
+  const std::size_t end = svg.find(">" + label + "</text>");
+  if (end == std::string::npos) return {std::nan(""), std::nan("")};
+  const std::string tag = svg.substr(svg.rfind("<text", end), end - svg.rfind("<text", end));
+  const auto attr = [&](const std::string& name) {
+    const std::size_t a = tag.find(" " + name + "=\"") + name.size() + 3;
+    return std::stod(tag.substr(a, tag.find('"', a) - a));
+  };
+  return {attr("x"), attr("y")};
+}
+
+}  // namespace
+
+// The plan map's home label ("home, start, take-off (1), return and landing (70)") was placed
+// right of a home at the map's edge, starting at x=-220 / running past the viewBox: a label now goes
+// to the next place round its marker when the first is not inside the plot area. Waypoint numbers
+// "50" and "49" side by side ran together as "5049": the width assumed per bold digit (0.62 em) was
+// less than DejaVu Sans Bold's 0.696 em; labels on one line now keep apart by their drawn width.
+TEST(ReportSvg, MapLabelsStayInsideThePlotAndApartAsDrawn) {
+  const std::string home = "home, start, take-off (1), return and landing (70)";
+  for (const double hx : {0.0, 100.0}) {  // home at the left edge, then at the right edge
+    wr::MapView m;
+    m.path = {{{{0, 0}, {100, 0}}, 0.0, "mission"}};
+    m.path[0].colour = "#0072B2";
+    wr::MapMarker last{{hx, 0.5}, "69", wr::MapMarker::Shape::Circle, "#222222"};  // the last waypoint, at home
+    last.size = 3.0;
+    m.markers.push_back(last);
+    m.markers.push_back({{hx, 0}, home, wr::MapMarker::Shape::Square, "#000000"});
+    const std::string svg = wr::renderSvg(m);
+    const auto [x, y] = textAt(svg, home);
+    ASSERT_TRUE(std::isfinite(x)) << "home label left out";
+    EXPECT_GE(x, 0.0) << "home at " << hx;
+    EXPECT_LE(x + 0.696 * 12 * static_cast<double>(home.size()), m.width) << "home at " << hx;
+  }
+  for (double d = 1.0; d <= 3.0; d += 0.05) {  // [m] apart: on the screen about 8 to 25 px
+    wr::MapView m;
+    m.path = {{{{0, 0}, {100, 0}}, 0.0, "mission"}};
+    m.path[0].colour = "#0072B2";
+    for (const auto& [label, x] : {std::pair<std::string, double>{"50", 50.0}, {"49", 50.0 + d}}) {
+      wr::MapMarker wp{{x, 0}, label, wr::MapMarker::Shape::Circle, "#222222"};
+      wp.size = 3.0;
+      m.markers.push_back(wp);
+    }
+    const std::string svg = wr::renderSvg(m);
+    const auto a = textAt(svg, "50"), b = textAt(svg, "49");
+    if (!std::isfinite(a.first) || !std::isfinite(b.first) || a.second != b.second) continue;  // on different lines
+    const double drawn = 0.696 * 11 * 2;  // [px] two bold 11 px digits in DejaVu Sans Bold
+    EXPECT_GE(std::abs(b.first - a.first), drawn + 1.0) << "labels run together at " << d << " m apart";
+  }
 }
 
 TEST(ReportSvg, EventTicksSitOutsideThePlotAndLabelsDoNotOverlap) {

@@ -44,6 +44,65 @@ TEST(Reports, PlanReportHasMapBreakdownCandidatesAndBattery) {
   EXPECT_NE(html.find("ground-station default"), std::string::npos);
 }
 
+namespace {
+/// The SVG of the figure named `name` in `r` ("" when there is none).
+std::string figureSvg(const wr::HtmlReport& r, const std::string& name) {
+  for (const auto& f : r.figures())
+    if (f.name == name) return f.svg;
+  return "";
+}
+
+/// [px] The left edge of a line chart's plot frame (the unfilled grey rect drawn last).
+double plotLeft(const std::string& svg) {
+  const std::size_t frame = svg.rfind("fill=\"none\" stroke=\"#888888\"");
+  const std::size_t rect = svg.rfind("<rect x=\"", frame);
+  if (frame == std::string::npos || rect == std::string::npos) return -1.0;
+  return std::stod(svg.substr(rect + 9));
+}
+}  // namespace
+
+// The plan report's battery figure read "state of charge [%]" while it plotted the usable charge
+// left, with no reserve line; predict's report draws the same trace as "usable charge left [%]"
+// with the reserve. Both are now drawn by one function.
+TEST(Reports, PlanBatteryFigureIsPredictsUsableChargeWithTheReserve) {
+  const auto r = wr::planReport(samplePlan());
+  const std::string svg = figureSvg(r, "plan-battery-soc");
+  ASSERT_FALSE(svg.empty());
+  EXPECT_NE(svg.find("usable charge left [%]"), std::string::npos);
+  EXPECT_NE(svg.find("reserve 25 %"), std::string::npos);
+  EXPECT_EQ(svg.find("state of charge"), std::string::npos);
+  EXPECT_NE(svg.find("time since the take-off command [min]"), std::string::npos);  // as predict's time axis
+  EXPECT_EQ(r.html().find("State of charge over the mission"), std::string::npos);
+  EXPECT_NE(r.html().find("counted as the autopilot counts it"), std::string::npos);
+}
+
+// A battery that runs out: the usable charge dropped to 0 unlabelled while speed and altitude showed
+// a normal flight. Every time plot now marks the cut-off, and the caption says it.
+TEST(Reports, MissionReportMarksTheBatteryCutOffOnEveryTimePlot) {
+  auto d = sampleMission();
+  d.battery->cutoff_s = 161.0;
+  const auto r = wr::missionReport(d);
+  for (const char* name : {"mission-speed", "mission-altitude", "mission-battery"}) {
+    const std::string svg = figureSvg(r, name);
+    EXPECT_NE(svg.find(">battery cut-off 2:41</text>"), std::string::npos) << name;
+    EXPECT_EQ(xmlProblem(svg), "") << name;
+  }
+  EXPECT_NE(r.html().find("reaches its cut-off 2:41 min:s into the flight"), std::string::npos);
+  EXPECT_EQ(figureSvg(wr::missionReport(sampleMission()), "mission-speed").find("battery cut-off"), std::string::npos);
+}
+
+// Predict's stacked time plots (speed, altitude, battery) started their plots at different x (their
+// tick labels differ in width: "10", "40", "100"), so one moment was not above the same moment.
+TEST(Reports, MissionTimePlotsStartAtOneLeftEdge) {
+  const auto r = wr::missionReport(sampleMission());
+  const double speed = plotLeft(figureSvg(r, "mission-speed"));
+  EXPECT_GT(speed, 0.0);
+  EXPECT_DOUBLE_EQ(plotLeft(figureSvg(r, "mission-altitude")), speed);
+  EXPECT_DOUBLE_EQ(plotLeft(figureSvg(r, "mission-battery")), speed);
+  const auto p = wr::planReport(samplePlan());
+  EXPECT_DOUBLE_EQ(plotLeft(figureSvg(p, "plan-battery-voltage")), plotLeft(figureSvg(p, "plan-battery-soc")));
+}
+
 TEST(Reports, PlanReportWithoutOptionalPartsSaysSo) {
   wr::PlanReportData d;
   d.areas = samplePlan().areas;
@@ -89,6 +148,76 @@ TEST(Reports, ValidationReportDrawsPowerOverTimeForEveryLog) {
   bad = d;
   bad.log_names = {"only-one.csv"};
   EXPECT_THROW(wr::validationReport(bad), std::invalid_argument);
+}
+
+namespace {
+/// The y tick labels of a chart (right-aligned texts in its ticks group).
+std::vector<std::string> yTickLabels(const std::string& svg) {
+  std::vector<std::string> out;
+  const std::size_t g = svg.find("class=\"ticks\""), end = svg.find("</g>", g);
+  for (std::size_t p = svg.find("text-anchor=\"end\"", g); p < end; p = svg.find("text-anchor=\"end\"", p + 1)) {
+    const std::size_t a = svg.find('>', p) + 1;
+    out.push_back(svg.substr(a, svg.find('<', a) - a));
+  }
+  return out;
+}
+}  // namespace
+
+// Replaying several logs drew each log's power over its own range, so the figures could not be
+// compared at a glance; they share one power axis now.
+TEST(Reports, PowerFiguresOfSeveralLogsShareOnePowerAxis) {
+  auto d = sampleValidation();
+  const std::size_t half = d.t.size() / 2;
+  d.log_names = {"first.csv", "second.csv"};
+  d.log_start = {0, half};
+  for (std::size_t i = half; i < d.t.size(); ++i) d.measured_power[i] *= 1.6, d.modelled_power[i] *= 1.6;
+  const auto r = wr::validationReport(d);
+  const auto first = yTickLabels(figureSvg(r, "validation-power")), second = yTickLabels(figureSvg(r, "validation-power-2"));
+  EXPECT_GE(first.size(), 3u);
+  EXPECT_EQ(first, second);
+  EXPECT_NE(r.html().find("same power axis"), std::string::npos);
+}
+
+// fit's staircase was titled "Error as effects are added" with "each bar is the model after one more
+// step" under bars that are the model as given and fitted, on the training and on the test logs, all
+// in one colour. Its title and caption are fit's own now, and the bars are coloured by the logs.
+TEST(Reports, FitStaircaseSaysWhatItsBarsAreAndColoursTrainAndTest) {
+  auto d = sampleValidation();
+  d.staircase = {{"as given, train", 30.0, "training logs"}, {"fitted, train", 20.0, "training logs"},
+                 {"as given, test", 33.0, "test log"}, {"fitted, test", 24.0, "test log"}};
+  d.staircase_title = "Error before and after the fit, on the training and the test logs";
+  d.staircase_caption = "as given and fitted";
+  const auto r = wr::validationReport(d);
+  const std::string svg = figureSvg(r, "validation-staircase");
+  EXPECT_NE(svg.find("Error before and after the fit"), std::string::npos);
+  EXPECT_EQ(r.html().find("one more step"), std::string::npos);
+  EXPECT_NE(svg.find(">training logs</text>"), std::string::npos);  // the legend
+  EXPECT_NE(svg.find(">test log</text>"), std::string::npos);
+  const std::string train = "<title>training logs, fitted, train", test = "<title>test log, fitted, test";
+  ASSERT_NE(svg.find(train), std::string::npos);
+  ASSERT_NE(svg.find(test), std::string::npos);
+  const auto fillBefore = [&](const std::string& title) {
+    const std::size_t p = svg.rfind(" fill=\"", svg.find(title)) + 7;
+    return svg.substr(p, 7);
+  };
+  EXPECT_NE(fillBefore(train), fillBefore(test));
+  // diagnose's staircase keeps its own title, bars in one colour
+  EXPECT_NE(figureSvg(wr::validationReport(sampleValidation()), "validation-staircase").find("Error as effects are added"),
+            std::string::npos);
+}
+
+// The residual signal "state_of_charge" is 1 - energy drawn / the log's energy, not the pack's
+// state of charge; its figure's axis and caption said only its key name.
+TEST(Reports, ResidualSignalIsLabelledWithWhatItIs) {
+  auto d = sampleValidation();
+  d.verdict = "Verdict: unexplained.";
+  d.signal_curves = {{"state_of_charge", "-", "follows the share of this log's energy still to be drawn", {0.1, 0.5, 0.9},
+                      {3.0, 0.0, -2.0}, "share of this log's energy still to be drawn"}};
+  const auto r = wr::validationReport(d);
+  const std::string svg = figureSvg(r, "validation-signal-state_of_charge");
+  EXPECT_NE(svg.find("energy still to be drawn [-]"), std::string::npos);  // the x axis
+  EXPECT_EQ(svg.find("state_of_charge [-]"), std::string::npos);
+  EXPECT_NE(r.html().find("binned by share of this log"), std::string::npos);
 }
 
 TEST(Reports, PhaseLegendInFlightOrderWhateverComesFirst) {

@@ -66,6 +66,11 @@ std::vector<ResidualSignature> residualSignatures(const std::vector<PreparedLog>
 /// Names of every signal residualSignatures tests, in its order.
 const std::vector<std::string>& signalNames();
 
+/// What `signal` is, as an axis label: "share of this log's energy still to be drawn" for
+/// "state_of_charge" (1 - energy drawn / the log's energy, not the pack's state of charge), else its
+/// name with spaces ("climb rate").
+std::string signalLabel(const std::string& signal);
+
 /// What kinds of effect leave a residual that follows `signal`, e.g. "rises with current squared:
 /// resistive loss in the battery or wiring (I^2 R)"; `rises` says the sign of the relation.
 std::string signatureSentence(const std::string& signal, bool rises);

@@ -76,6 +76,15 @@ struct XEvent {
   bool bottom = false;             ///< at the bottom edge instead of the top
 };
 
+/// A moment marked across the whole plot: a vertical line with a label at its top (the battery's
+/// cut-off, for example).
+struct XLine {
+  double x = 0.0;                  ///< [x axis unit]
+  std::string label;               ///< text beside the line's top, e.g. "battery cut-off 2:41"
+  std::string colour = "#B00020";  ///< "#rrggbb"
+  std::string dash = "5 3";        ///< SVG dash array ("" = solid)
+};
+
 /// A line / scatter plot with a legend.
 struct LineChart {
   std::string title;               ///< drawn above the plot
@@ -85,11 +94,18 @@ struct LineChart {
   std::vector<XRange> shaded;      ///< shaded x-ranges, drawn under the data
   std::vector<Marker> markers;     ///< labelled points, drawn over the data
   std::vector<XEvent> events;      ///< ticks on the top or bottom edge, drawn over the data
+  std::vector<XLine> x_lines;      ///< labelled vertical lines across the plot, drawn over the data
   bool diagonal = false;           ///< draw the y = x reference line (measured vs modelled)
   std::optional<double> y_ref;     ///< [y axis unit] draw a horizontal reference line (e.g. 0)
   double width = 900.0;            ///< [px] figure width
   double height = 380.0;           ///< [px] figure height (legend rows are added below)
+  /// [px] left margin at least this wide: charts stacked over one time axis given the same
+  /// (kStackedLeftMargin) start their plots at the same x whatever their tick labels' widths.
+  std::optional<double> left_margin;
 };
+
+/// [px] The left margin of line charts stacked over one x axis (room for 5-character tick labels).
+inline constexpr double kStackedLeftMargin = 72.0;
 
 /// Renders a line chart to SVG.
 std::string renderSvg(const LineChart& chart);

@@ -4,6 +4,7 @@
 /// HTML pages. Commands fill the structs from library results; nothing here computes physics
 /// (binned residual statistics and unit scaling are display only).
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -68,9 +69,11 @@ struct PlanBaseline {
 /// Battery state over the mission (e.g. Hwang et al.'s Peukert battery with linear voltage drop).
 struct BatteryTrace {
   std::vector<double> t;        ///< [s] time since take-off
-  std::vector<double> soc;      ///< [%] state of charge
+  std::vector<double> soc;      ///< [%] usable charge left as the autopilot counts it (100 full, 0 at the cut-off)
   std::vector<double> voltage;  ///< [V] terminal voltage (may be empty)
   std::string model;            ///< which battery model, e.g. "Hwang et al. Eq. 19-21"
+  double reserve_pct = std::numeric_limits<double>::quiet_NaN();  ///< [%] usable charge to keep on landing (NaN: none drawn)
+  std::optional<double> cutoff_s;  ///< [s] when the battery reaches its cut-off in flight (none: it does not)
 };
 
 /// One sortie (one battery's flight) of a plan split for the battery, as drawn and tabled.
@@ -154,6 +157,7 @@ struct LegEnergyPair {
 struct ErrorStep {
   std::string label;    ///< e.g. "vehicle physics", "+ parasitic_drag"
   double error = 0.0;   ///< [ValidationReportData::error_unit] held-out error after this step
+  std::string group{};  ///< the logs the error is computed on, e.g. "training logs" (coloured, with a legend; "" = one colour)
 };
 
 /// One row of the diagnosis table.
@@ -172,6 +176,7 @@ struct SignalCurve {
   std::string sentence;          ///< what kinds of effect leave this signature
   std::vector<double> x;         ///< bin centres, in `unit`
   std::vector<double> residual;  ///< [W] mean measured - modelled power in each bin
+  std::string label;             ///< what the signal is, for the axis and caption ("" = `signal`)
 };
 
 /// Everything the validation report shows: one or more logs, their samples one after the other
@@ -192,6 +197,8 @@ struct ValidationReportData {
   std::vector<ErrorStep> staircase;                  ///< error before/after each added effect
   std::string error_label = "held-out RMSE";         ///< what the staircase error is
   std::string error_unit = "W";                      ///< unit of the staircase error
+  std::string staircase_title = "Error as effects are added";  ///< the staircase figure's title
+  std::string staircase_caption = "Each bar is the model after one more step; lower is better.";  ///< and its caption
   std::vector<DiagnosisRow> diagnosis;               ///< candidate effects, best first
   std::string diagnosis_caption = "Candidate effects, best first";  ///< caption of the diagnosis table
   int residual_bins = 12;                            ///< [-] bins of the residual plots, 2..100
