@@ -146,7 +146,7 @@ TEST(CliPlan, IrisAreaWithNoFlyZone) {
   // gives): it leads with that flight now, in min:s, and names the closed-form one as the survey model.
   const double t = j.at("flight").at("time_s").get<double>(), e = j.at("flight").at("energy_j").get<double>();
   const long secs = std::lround(t);
-  char minsec[16], wh[32];
+  char minsec[48], wh[64];
   std::snprintf(minsec, sizeof minsec, "%ld:%02ld", secs / 60, secs % 60);
   std::snprintf(wh, sizeof wh, "%.1f Wh (%.0f J)", e / 3600.0, e);
   EXPECT_NE(html.find("<dt>flight time</dt><dd>" + std::string(minsec) + " min:s"), std::string::npos) << minsec;
