@@ -60,11 +60,13 @@ std::string readText(const std::string& path) {
 // BASE's JSON text (validated as a vehicle first, so every error names the file and field) with
 // its `autopilot` object replaced; the other fields keep their order and text.
 // A calibration in BASE (extensions.calibration) was fitted with BASE's autopilot parameters, so it
-// is left out (`notes` says so); a BASE airframe is kept unless the log determines one.
+// is left out (`notes` says so); a BASE airframe is kept unless the log determines one, and
+// `base_airframe` says whether BASE had one.
 std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson& autopilot, const OrderedJson& airframe,
-                                 std::vector<std::string>& notes) {
+                                 std::vector<std::string>& notes, bool& base_airframe) {
   energy::loadVehicle(base_path);
   OrderedJson j = OrderedJson::parse(readText(base_path));
+  base_airframe = j.contains("extensions") && j["extensions"].is_object() && j["extensions"].contains("airframe");
   j["autopilot"] = autopilot;
   if (j.contains("extensions") && j["extensions"].is_object() && j["extensions"].contains("calibration")) {
     j["extensions"].erase("calibration");
@@ -73,12 +75,6 @@ std::string vehicleWithAutopilot(const std::string& base_path, const OrderedJson
   }
   if (!airframe.is_null()) j["extensions"]["airframe"] = airframe;
   return j.dump(2) + "\n";
-}
-
-// True when BASE's file has an extensions.airframe object (predict flies with it).
-bool baseHasAirframe(const std::string& base_path) {
-  const OrderedJson j = OrderedJson::parse(readText(base_path));
-  return j.contains("extensions") && j["extensions"].is_object() && j["extensions"].contains("airframe");
 }
 
 // The airframe identified from the log (DataFlash only): the extension object with what the log
@@ -152,7 +148,9 @@ void runParams(const ParamsOptions& o) {
   const auto airframe = identifyAirframe(o);
   const auto& drag = airframe.drag;
   std::vector<std::string> notes;
-  const std::string text = vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept), airframeObject(airframe, o.log), notes);
+  bool base_airframe = false;  // BASE has an extensions.airframe (predict flies with it)
+  const std::string text =
+      vehicleWithAutopilot(o.vehicle, autopilotObject(p, kept), airframeObject(airframe, o.log), notes, base_airframe);
   energy::parseVehicle(text, o.out);  // what is written reads back
   writeTextFileAtomic(o.out, text);
   warnAbout(p);
@@ -161,7 +159,6 @@ void runParams(const ParamsOptions& o) {
                     std::string(p.firmware.family == "PX4" ? "PX4 1.14" : "ArduCopter 4.5 (S-curve model)") +
                     ", saying so; set autopilot.version by hand");
   }
-  const bool base_airframe = baseHasAirframe(o.vehicle);
   const std::string drag_fallback = base_airframe ? " (predict uses " + o.vehicle + "'s extensions.airframe, kept in the file)"
                                                   : " (predict uses the vehicle's drag area)";
   if (o.json) {
