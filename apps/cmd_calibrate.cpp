@@ -116,6 +116,7 @@ void registerCalibrateCommand(CLI::App& app) {
     std::vector<cal::MissionFlight> flights;
     ms::ReadOptions ro;
     ro.lenient = o->lenient;
+    ro.lenient_option = "--lenient-mission";
     std::vector<std::string> window_notes;
     nlohmann::json windows = nlohmann::json::array();
     for (std::size_t i = 0; i < o->logs.size(); ++i) {
@@ -125,14 +126,7 @@ void registerCalibrateCommand(CLI::App& app) {
       if (!ml.note.empty()) window_notes.push_back(ml.note);
       ml.window["log"] = o->logs[i];
       windows.push_back(ml.window);
-      ms::Mission m;
-      try {
-        m = ms::readMission(o->missions[i], ro);
-      } catch (const ms::MissionError& e) {  // the mission readers name their own --lenient
-        std::string what = e.what();
-        if (const auto at = what.find("use --lenient"); at != std::string::npos) what.replace(at, 13, "use --lenient-mission");
-        throw std::runtime_error(what);
-      }
+      ms::Mission m = ms::readMission(o->missions[i], ro);
       for (const auto& w : m.warnings) window_notes.push_back(w);  // what --lenient-mission skipped, and other readings
       flights.push_back({o->logs[i], std::move(m), std::move(ml.log)});
     }

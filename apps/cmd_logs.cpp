@@ -48,9 +48,11 @@ void registerReplay(CLI::App& app) {
     logs::LogReadOptions read;
     calibration::PlanPredictionSettings plan_settings;
     MeasurementReport measurement;
+    mission::ReadOptions mission_read;
     bool json = false, force = false;
   };
   auto o = std::make_shared<Opts>();
+  o->mission_read.lenient_option = "--lenient-mission";
   auto* cmd = app.add_subcommand("replay", "Replay a model on measured kinematics: power per sample, energy per leg, "
                                            "phase and flight, residuals binned by speed, climb, acceleration, heading, time");
   addVehicleOption(cmd, o->vehicle);
@@ -69,6 +71,9 @@ void registerReplay(CLI::App& app) {
                   "predicted one leg by leg (time, speed along the path, energy), the error split into kinematics and "
                   "physics; the model is the vehicle file's calibration unless --effects is given")
       ->check(CLI::ExistingFile);
+  cmd->add_flag("--lenient-mission", o->mission_read.lenient,
+                "Skip unsupported --mission commands that do not move the vehicle (not navigation commands) with a "
+                "warning, as calibrate --lenient-mission reads them");
   cmd->add_option("--wind", o->wind,
                   "The day's steady wind SPEED,FROM (m/s, compass bearing it blows from), when known: the model's drag is "
                   "taken at air speed on the logged kinematics and in the --mission predictions, which fly in it");
@@ -140,7 +145,7 @@ void registerReplay(CLI::App& app) {
     if (!o->missions.empty()) {
       PredictionSetup setup = predictionSetup(v, o->vehicle, model, effects_opt->count() > 0, 25.0);
       if (wind) setup.settings.wind = wind->air();
-      missions = missionReplays(v, setup, o->logs, o->missions, reps, o->read);
+      missions = missionReplays(v, setup, o->logs, o->missions, reps, o->read, o->mission_read);
     }
     if (!o->report.empty() || !o->report_svg.empty()) {
       // With --mission the mission section comes first, then the model on the logged kinematics.
@@ -170,6 +175,7 @@ void registerReplay(CLI::App& app) {
                  {"residuals", residualsJson(calibration::residualTables(reps))},
                  {"plan_prediction", o->plan.empty() ? json(nullptr) : plans},
                  {"mission_prediction", o->missions.empty() ? json(nullptr) : missions.json},
+                 {"mission_notes", missions.notes},
                  {"measurement", o->measurement.toJson()},
                  {"wind", windJson(wind)}});
       return;

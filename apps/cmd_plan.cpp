@@ -123,7 +123,8 @@ nlohmann::json batteryJson(const std::optional<pl::BatteryUse>& b) {
   return {{"usable_energy_j", b->usable_energy_j}, {"mission_energy_j", b->mission_energy_j},
           {"margin_j", b->margin_j},             {"margin_pct", b->margin_pct},
           {"remaining_pct", b->remaining_pct},   {"reserve_pct", b->reserve_pct},
-          {"fits", b->fits},                     {"warning", b->warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(b->warning)}};
+          {"fits", b->fits},                     {"depleted", b->depleted},
+          {"warning", b->warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(b->warning)}};
 }
 
 std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFrame& frame) {
@@ -136,8 +137,10 @@ std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFr
     l.kind = leg.kind == geo::PrimitiveKind::Line ? "line" : leg.kind == geo::PrimitiveKind::Arc ? "arc" : "turn_in_place";
     l.role = geo::roleName(leg.role);
     l.length_m = leg.length();
+    // A turn in place does not move: the planner's floor speed on it (0.05 m/s) is not a speed flown.
+    const bool in_place = leg.kind == geo::PrimitiveKind::TurnInPlace;
     l.speed_start_mps = f.speeds.junction[i];
-    l.speed_cruise_mps = f.speeds.cruise[i];
+    l.speed_cruise_mps = in_place ? 0.0 : f.speeds.cruise[i];
     l.speed_end_mps = f.speeds.junction[i + 1];
     l.time_s = f.leg_time[i];
     l.energy_j = f.leg_energy[i];
@@ -228,10 +231,13 @@ void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin
   if (r.best_spiral)
     std::cout << "best spiral: " << r.best_spiral->flown.energy / 1000.0 << " kJ (plan saves "
               << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " % of this baseline's energy)\n";
+  // One basis, as predict's verdict: the charge drawn against the usable capacity (the energy margin
+  // at the flight's mean power is a different share; it stays in --json).
   if (r.battery)
-    std::cout << "battery: mission " << r.battery->mission_energy_j / 1000.0 << " kJ of "
-              << r.battery->usable_energy_j / 1000.0 << " kJ usable (margin " << r.battery->margin_pct << " %, "
-              << r.battery->remaining_pct << " % of the usable charge left on landing)\n";
+    std::cout << "battery: the flight draws " << fixedText(r.battery->mission_energy_j / 1000.0, 1) << " kJ and "
+              << (r.battery->depleted ? "reaches the cut-off before it lands"
+                                      : "lands with " + fixedText(r.battery->remaining_pct, 1) + " % of the usable charge")
+              << " (reserve " << fixedText(r.battery->reserve_pct, 0) << " %): " << (r.battery->fits ? "fits" : "does not fit") << "\n";
 }
 
 /// "A,B" as two positive numbers; throws std::invalid_argument naming `option` and `expected`.

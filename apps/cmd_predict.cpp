@@ -65,10 +65,9 @@ report::HtmlReport missionReport(const ms::MissionPrediction& p, const ms::Autop
                                          " Wh (" + report::formatNumber(p.total.energy_j, 0) + " J), " +
                                          report::formatNumber(p.total.distance_m, 0) + " m"}};
   if (p.battery.known) {
-    d.facts.push_back({p.battery.ends_in_air ? "battery at the end (in the air)" : "battery at landing",
-                       report::formatNumber(100.0 * p.battery.usable_left_end, 1) + " % usable left (reserve " +
-                                                 report::formatNumber(o.reserve_pct, 0) + " %)"});
-    if (p.battery.energy_margin > 0.0) {
+    d.facts.push_back(batteryEndFact(p.battery, report::formatNumber(100.0 * p.battery.usable_left_end, 1) +
+                                                    " % usable left (reserve " + report::formatNumber(o.reserve_pct, 0) + " %)"));
+    if (p.battery.energy_margin > 0.0 && !p.battery.depleted) {
       d.facts.push_back({"with " + report::formatNumber(100.0 * p.battery.energy_margin, 0) + " % more energy",
                          report::formatNumber(100.0 * p.battery.usable_left_end_with_margin, 1) +
                              " % usable left (the prediction's error margin, --energy-margin)"});

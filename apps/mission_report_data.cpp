@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "report_data.hpp"
+#include "wattswath/report/svg.hpp"
 
 namespace wattswath::apps {
 
@@ -35,6 +36,15 @@ std::vector<report::MissionMark> planMapItems(const ms::Mission& m, const geomet
     out.push_back(std::move(k));
   }
   return out;
+}
+
+std::pair<std::string, std::string> batteryEndFact(const ms::BatteryPrediction& b, const std::string& detail) {
+  if (b.depleted) {
+    return {"battery cut-off", "reached " + report::formatMinSec(b.depleted_at_s) +
+                                   " min:s after the take-off, in the air: the flight does not reach its landing "
+                                   "(the figures past it assume the battery held out)"};
+  }
+  return {b.ends_in_air ? "battery at the end (in the air)" : "battery at landing", detail};
 }
 
 report::MissionReportData missionReportData(const ms::MissionPrediction& p, double reserve_pct) {

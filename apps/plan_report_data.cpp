@@ -49,7 +49,8 @@ report::Facts pilotFacts(const pl::PlanResult& r, const pl::SurveyProblem& pr, c
       const double packs = std::ceil(r.battery->mission_energy_j / r.battery->usable_energy_j - 1e-9);
       if (packs > 1.0) text += " About " + fixedText(packs, 0) + " batteries' usable energy is needed: plan --sorties splits it.";
     }
-    facts.push_back({flight.battery.ends_in_air ? "battery at the end (in the air)" : "battery at landing", text});
+    if (flight.battery.depleted) facts.push_back({"battery verdict", text});
+    facts.push_back(batteryEndFact(flight.battery, text));
   }
   facts.push_back({"area size", fixedText(geo::area(pr.area) / 1e4, 3) + " ha (" + fixedText(geo::area(pr.area), 0) + " m^2)"});
   double farthest = 0.0;
@@ -71,7 +72,8 @@ void addLegsAndBreakdowns(report::PlanReportData& d, const pl::FlownPath& f, con
     report::PlanLeg pl_leg;
     pl_leg.points = legPolyline(leg);
     pl_leg.role = geo::roleName(leg.role);
-    pl_leg.speed = f.speeds.cruise[i];
+    // A turn in place does not move: the planner's floor speed on it (0.05 m/s) is not a speed flown.
+    pl_leg.speed = leg.kind == geo::PrimitiveKind::TurnInPlace ? 0.0 : f.speeds.cruise[i];
     pl_leg.energy = f.leg_energy[i];
     pl_leg.time = f.leg_time[i];
     pl_leg.length = leg.length();

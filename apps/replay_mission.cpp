@@ -116,7 +116,7 @@ json flightJson(const calibration::FlightComparison& c, const std::string& log, 
 
 MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup, const std::vector<std::string>& log_paths,
                               const std::vector<std::string>& mission_paths, const std::vector<calibration::LogReplay>& reps,
-                              const logs::LogReadOptions& read) {
+                              const logs::LogReadOptions& read, const mission::ReadOptions& mission_read) {
   const bool use_cal = setup.calibrated;
   const en::EnergyModel& model = setup.model;
   const std::string model_text = use_cal ? "the vehicle file's calibration" : "the vehicle's physics";
@@ -127,7 +127,8 @@ MissionReplays missionReplays(const en::Vehicle& v, const PredictionSetup& setup
   out.report.autopilot = mission::toString(setup.autopilot.family);
   for (std::size_t i = 0; i < log_paths.size(); ++i) {
     MissionLog ml = readMissionLog(log_paths[i], read);
-    calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i]), std::move(ml.log)};
+    calibration::MissionFlight f{log_paths[i], mission::readMission(mission_paths[i], mission_read), std::move(ml.log)};
+    for (const auto& w : f.mission.warnings) out.notes.push_back(w);  // what lenient reading skipped, and other readings
     // As predict: the calibration flights of the mission's kind decide a disputed acceleration.
     mission::AutopilotConfig ap = setup.autopilot;
     const auto choice = kindChoiceOf(calibration::missionKind(mission::sequenceMission(f.mission), ap), setup);

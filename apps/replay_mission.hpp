@@ -12,6 +12,7 @@
 #include "wattswath/energy/model.hpp"
 #include "wattswath/energy/vehicle.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
+#include "wattswath/mission/files.hpp"
 #include "wattswath/report/reports.hpp"
 
 namespace wattswath::apps {
@@ -25,10 +26,11 @@ struct MissionReplays {
 
 /// Compares each log of `log_paths` with the prediction, under `setup` (as `predict` flies it), of
 /// the mission of `mission_paths` at the same index; `reps` are the replays of the --effects model
-/// on the same logs (the kinematics / physics split when `setup` is not calibrated).
+/// on the same logs (the kinematics / physics split when `setup` is not calibrated); the missions are
+/// read with `mission_read` (what its lenient reading skipped is among the notes).
 MissionReplays missionReplays(const energy::Vehicle& v, const PredictionSetup& setup, const std::vector<std::string>& log_paths,
                               const std::vector<std::string>& mission_paths, const std::vector<calibration::LogReplay>& reps,
-                              const logs::LogReadOptions& read);
+                              const logs::LogReadOptions& read, const mission::ReadOptions& mission_read);
 
 /// One sentence on where the log's vehicle took off, `east_m` and `north_m` [m] from the mission's
 /// home (FlightComparison::launch), and that the prediction flies from there.

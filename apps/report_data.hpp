@@ -46,6 +46,11 @@ std::vector<report::DiagnosisRow> diagnosisRows(const calibration::Diagnosis& d)
 /// The items of a mission (numbers as in the mission file) for the plan map, positioned in `frame` [m].
 std::vector<report::MissionMark> planMapItems(const mission::Mission& m, const geometry::LocalFrame& frame);
 
+/// The report fact on the battery where the flight ends, as a (label, text) pair: the usable charge
+/// left at landing (or where a mission that ends in the air ends) with `detail` appended, or, when the
+/// cut-off is reached in flight, when it is reached (a "0 % at landing" would say it lands).
+std::pair<std::string, std::string> batteryEndFact(const mission::BatteryPrediction& b, const std::string& detail);
+
 /// The mission report's trajectory, items, phase totals, battery and verdict from a prediction
 /// (facts are left to the command); `reserve_pct` [%] is the reserve line.
 report::MissionReportData missionReportData(const mission::MissionPrediction& p, double reserve_pct);

@@ -422,6 +422,26 @@ TEST(CliPlan, BatteryWhenTheVehicleHasOne) {
   EXPECT_TRUE(nlohmann::json::parse(rb.output).at("battery").is_null());
 }
 
+// A plan whose one flight runs out of battery says so on one basis: the terminal line and the report
+// say when the cut-off comes, not "0 % left on landing" (the line mixed a margin on the energy at mean
+// power with the charge left, and the report had a "battery at landing" row for a flight that never lands).
+TEST(CliPlan, AFlightThatRunsOutIsSaidToReachTheCutOffNotToLand) {
+  const auto out = outDir("cutoff");
+  const std::string args = " plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " +
+                           sourcePath("tests/data/iris-small-battery.json") + " --spacing 15 --force --out " + out;
+  const auto t = run(cliBinary() + args + " 2>/dev/null");
+  ASSERT_EQ(t.status, 0) << t.output;
+  EXPECT_NE(t.output.find("kJ and reaches the cut-off before it lands (reserve 25 %): does not fit"), std::string::npos) << t.output;
+  EXPECT_EQ(t.output.find("kJ usable (margin"), std::string::npos) << t.output;
+  const std::string page = slurp(out + "/report.html");
+  const auto j = nlohmann::json::parse(run(cliBinary() + args + " --no-report --json 2>/dev/null").output);
+  EXPECT_TRUE(j.at("battery").at("depleted").get<bool>());
+  EXPECT_FALSE(j.at("battery").at("fits").get<bool>());
+  EXPECT_EQ(page.find("<dt>battery at landing</dt>"), std::string::npos);
+  EXPECT_NE(page.find("<dt>battery cut-off</dt><dd>reached "), std::string::npos);
+  EXPECT_LT(page.find("<dt>battery verdict</dt>"), page.find("<dt>battery cut-off</dt>"));
+}
+
 // One flight model for planning and prediction (issue 17): `predict` on the mission.plan and the
 // mission.waypoints that `plan` wrote gives the energy and time the plan reports, within 1 %, for
 // an ArduCopter 4.x vehicle (S-curve model) and the calibrated ArduCopter 3.x IRIS+ (leash model);

@@ -91,6 +91,12 @@ TEST(CliPredict, ReportOfABatteryThatRunsOutSaysSoFirstAndMarksTheCutOff) {
   int marks = 0;
   for (std::size_t p = page.find(label); p != std::string::npos; p = page.find(label, p + 1)) ++marks;
   EXPECT_EQ(marks, 3) << label;  // speed, altitude and battery
+  // It never lands: no "battery at landing 0.0 %" row, but when the cut-off comes.
+  EXPECT_EQ(page.find("<dt>battery at landing</dt>"), std::string::npos);
+  char cutoff[160];
+  std::snprintf(cutoff, sizeof cutoff, "<dt>battery cut-off</dt><dd>reached %ld:%02ld min:s after the take-off, in the air", secs / 60,
+                secs % 60);
+  EXPECT_NE(page.find(cutoff), std::string::npos) << cutoff;
   std::remove(html.c_str());
   std::filesystem::remove_all(dir);
 }
@@ -346,6 +352,34 @@ TEST(CliPredict, ALogOfAnotherMissionIsSaidNotToBeOfIt) {
   const json own = runJson("replay --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " + log +
                            " --mission " + sharedData("iris-flights/mission__2017-10-18_1436_energy14.waypoints") + " --json");
   EXPECT_TRUE(own["mission_prediction"][0]["match_problem"].is_null()) << own["mission_prediction"][0]["match_problem"];
+}
+
+// replay --mission reads a mission as calibrate does: an unsupported command that does not move the
+// vehicle is refused, naming the option that skips it, and --lenient-mission skips it with a note in
+// the text and in --json (replay had no such option; calibrate named its own by string replacement).
+TEST(CliPredict, ReplayMissionSkipsAnUnsupportedCommandOnlyWithLenientMission) {
+  const std::string flight = "2017-10-18_1436_energy14";
+  std::ifstream in(sharedData("iris-flights/mission__" + flight + ".waypoints"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // A DO_GRIPPER (211) after the DO_CHANGE_SPEED of item 2: renumbered by position, as MP reads it.
+  const std::string gripper = "3\t0\t0\t211\t1\t0\t0\t0\t0\t0\t0\t1\n";
+  const auto at = text.find("\n3\t");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + 1, gripper);
+  const std::string mission = tempPath("replay_lenient.waypoints");
+  std::ofstream(mission) << text;
+  const std::string args = "replay --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " +
+                           sharedData("iris-flights/" + flight + ".csv") + " --mission " + mission;
+  const RunResult strict = run(cli(args + " 2>&1"));
+  EXPECT_NE(strict.status, 0);
+  EXPECT_NE(strict.output.find("use --lenient-mission to skip it"), std::string::npos) << strict.output;
+  const json j = runJson(args + " --lenient-mission --json");
+  EXPECT_NE(j["mission_notes"].dump().find("DO_GRIPPER"), std::string::npos) << j["mission_notes"].dump();
+  EXPECT_NE(j["mission_notes"].dump().find("skipped (--lenient-mission)"), std::string::npos);
+  EXPECT_TRUE(j["mission_prediction"][0]["match_problem"].is_null());
+  const RunResult text_run = run(cli(args + " --lenient-mission 2>&1"));
+  EXPECT_EQ(text_run.status, 0) << text_run.output;
+  EXPECT_NE(text_run.output.find("note: "), std::string::npos);
 }
 
 // --keep-energy keeps a calibrated vehicle file's energy model (it rebuilt the physics: hover

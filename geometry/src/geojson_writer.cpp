@@ -89,7 +89,7 @@ std::string coveragePathToGeoJson(const std::vector<CoveragePath>& paths, const 
       const PathLeg& l = path.legs[i];
       // Scalar attributes only, names of at most 10 characters: Shapefile, GPX and GeoPackage keep them.
       json props = {{"path", pi},
-                    {"leg", i},
+                    {"leg", i + 1},  // numbered from 1, as the plan report counts legs
                     {"role", roleName(l.role)},
                     {"kind", kindName(l.kind)},
                     {"pattern", path.pattern},

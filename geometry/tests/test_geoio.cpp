@@ -297,7 +297,7 @@ TEST(WriteGeoJson, PathOneFeaturePerLegWithScalarProperties) {
   const auto& feats = j["features"];
   ASSERT_EQ(feats.size(), 4u);
   for (size_t i = 0; i < feats.size(); ++i) {
-    EXPECT_EQ(feats[i]["properties"]["leg"], i);
+    EXPECT_EQ(feats[i]["properties"]["leg"], i + 1);  // as the plan report counts
     for (const auto& [key, value] : feats[i]["properties"].items()) {
       EXPECT_TRUE(value.is_primitive()) << key;
       EXPECT_LE(key.size(), 10u) << key;  // Shapefile's limit on field names

@@ -120,7 +120,7 @@ void checkSpeed(const MissionItem& it) {
   const double type = it.param[0], v = it.param[1];
   if (!(type == 0.0 || type == 1.0 || type == 2.0 || type == 3.0))
     badField(it, "param1 (speed type)", type, "0 (airspeed), 1 (ground speed), 2 (climb) or 3 (descent)");
-  if (v == -1.0 || v == -2.0) return;  // MAVLink: no change, or back to the default
+  if (isSpeedSentinel(v)) return;  // MAVLink: no change, or back to the default
   if (!(std::isfinite(v) && v > 0.0)) {
     badField(it, "param2 (speed)", v, "a speed > 0 m/s, -1 for no change or -2 for the default speed");
   }
@@ -222,13 +222,13 @@ void checkCommands(Mission& m, const ReadOptions& o) {
                              "), expected a supported command (docs/missions.md)";
     if (isNavCommand(it.command)) {
       fail(it.where, what + "; a navigation command moves the vehicle, so the prediction cannot leave it out (not even "
-                            "with --lenient): remove it or replace it with the waypoints it flies");
+                            "with " + o.lenient_option + "): remove it or replace it with the waypoints it flies");
     }
-    if (!o.lenient) fail(it.where, what + "; use --lenient to skip it");
-    m.warnings.push_back(it.where + ": " + what + "; skipped (--lenient)");
+    if (!o.lenient) fail(it.where, what + "; use " + o.lenient_option + " to skip it");
+    m.warnings.push_back(it.where + ": " + what + "; skipped (" + o.lenient_option + ")");
   }
   if (kept.empty())
-    fail(m.source, "all " + std::to_string(m.items.size()) + " items have unsupported commands (skipped with --lenient), "
+    fail(m.source, "all " + std::to_string(m.items.size()) + " items have unsupported commands (skipped with " + o.lenient_option + "), "
                    "expected at least one supported item");
   m.items = std::move(kept);
 }

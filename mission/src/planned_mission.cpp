@@ -231,7 +231,7 @@ std::string toLegCsv(const std::vector<LegRecord>& legs) {
        "speed_cruise_mps,speed_end_mps,time_s,energy_j\n";
   for (size_t i = 0; i < legs.size(); ++i) {
     const auto& l = legs[i];
-    o << i << "," << csvEscape(l.kind) << "," << csvEscape(l.role) << "," << num(l.start.lat_deg, 8) << ","
+    o << i + 1 << "," << csvEscape(l.kind) << "," << csvEscape(l.role) << "," << num(l.start.lat_deg, 8) << ","
       << num(l.start.lon_deg, 8) << "," << num(l.end.lat_deg, 8) << "," << num(l.end.lon_deg, 8) << ","
       << num(l.length_m, 3) << "," << num(l.speed_start_mps, 3) << "," << num(l.speed_cruise_mps, 3) << ","
       << num(l.speed_end_mps, 3) << "," << num(l.time_s, 3) << "," << num(l.energy_j, 2) << "\n";

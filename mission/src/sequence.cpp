@@ -113,12 +113,12 @@ struct Sequencer {
     // PX4 resets its cruise speed on any speed <= 0 (reset_cruising_speed()); ArduCopter's
     // ModeAuto::do_change_speed acts only on a speed > 0, so -1 (no change) and -2 (the default:
     // MAVLink's meaning) leave its speed as it was.
-    if (v == -1.0 || v == -2.0) speed_xy_px4 = 0.0;
+    if (isSpeedSentinel(v)) speed_xy_px4 = 0.0;
     if (v == -2.0) {
       warn(it.where + ": DO_CHANGE_SPEED -2 (the default speed): PX4 returns to its default cruise speed; ArduCopter acts "
            "only on a speed > 0 and keeps the speed it has");
     }
-    if (v == -1.0 || v == -2.0 || std::isnan(v)) return;
+    if (isSpeedSentinel(v) || std::isnan(v)) return;
     if (!(v > 0.0) || !std::isfinite(v)) {
       throw std::invalid_argument(it.where + ": DO_CHANGE_SPEED speed (param2) = " + std::to_string(v) +
                                   " m/s, expected > 0 (or -1 for no change, -2 for the default speed)");

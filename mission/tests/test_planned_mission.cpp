@@ -114,6 +114,7 @@ TEST(PlannedMission, CsvCarriesSpeedAndEnergy) {
   const std::string csv = toLegCsv({l});
   EXPECT_EQ(csv.substr(0, 4), "leg,");
   EXPECT_NE(csv.find("3000.00"), std::string::npos);
+  EXPECT_NE(csv.find("\n1,line,sweep,"), std::string::npos) << csv;  // numbered from 1, as the plan report counts
 }
 
 TEST(PlannedMission, CameraCommandsHoldsVehicleTypeAndFences) {

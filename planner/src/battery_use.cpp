@@ -43,6 +43,7 @@ BatteryUse predictBatteryUse(const std::vector<energy::PowerStep>& profile, cons
   // Usable charge left on landing as the autopilot counts it: the charge drawn against lambda C0.
   const double left = 1.0 - r.charge_ah / (battery.pack.usable_fraction * battery.capacityAh());
   u.remaining_pct = r.depleted ? 0.0 : 100.0 * std::min(left, 1.0);
+  u.depleted = r.depleted;
   u.fits = !r.depleted && left >= s.reserve_fraction;
   if (!u.fits) {
     std::ostringstream w;

@@ -58,11 +58,10 @@ double savingPct(const TurnRow& row) {
 /// The two figures and what goes into them.
 struct TurnCharts {
   LineChart energy, saving;
-  Series paper;  ///< Table V's savings, as points on the saving chart
 };
 
 /// Adds the angle `betas[i]`: its sharp and rounded energies against leg length (when `draw_energy`)
-/// and its saving; the paper's savings at that angle join `c.paper`.
+/// and its saving, with the paper's Table V savings at that angle as points of the same colour.
 void addAngle(TurnCharts& c, const TurnReportData& d, const std::vector<double>& betas, std::size_t i, bool draw_energy) {
   std::vector<const TurnRow*> rows;
   for (const auto& row : d.rows) {
@@ -70,8 +69,11 @@ void addAngle(TurnCharts& c, const TurnReportData& d, const std::vector<double>&
   }
   std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->leg_length < b->leg_length; });
   const std::string angle = formatNumber(betas[i] * kDeg, 0) + " deg";
-  Series sharp, round, saving;
+  Series sharp, round, saving, paper;
   sharp.name = "sharp, " + angle;
+  paper.name = "paper (Table V), " + angle;
+  paper.style = SeriesStyle::Points;
+  paper.colour = seriesColour(i);
   round.name = "rounded, " + angle;
   saving.name = angle;
   sharp.colour = round.colour = saving.colour = seriesColour(i);
@@ -85,8 +87,8 @@ void addAngle(TurnCharts& c, const TurnReportData& d, const std::vector<double>&
     saving.x.push_back(row->leg_length);
     saving.y.push_back(savingPct(*row));
     if (row->paper_saving_pct) {
-      c.paper.x.push_back(row->leg_length);
-      c.paper.y.push_back(*row->paper_saving_pct);
+      paper.x.push_back(row->leg_length);
+      paper.y.push_back(*row->paper_saving_pct);
     }
   }
   if (draw_energy) {
@@ -94,6 +96,7 @@ void addAngle(TurnCharts& c, const TurnReportData& d, const std::vector<double>&
     c.energy.series.push_back(round);
   }
   c.saving.series.push_back(saving);
+  if (!paper.x.empty()) c.saving.series.push_back(paper);
 }
 
 /// Log axes where the data span more than a factor 20: Table V spans decades of leg length, and
@@ -179,16 +182,13 @@ HtmlReport turnReport(const TurnReportData& d) {
   c.saving.y = {"saving (E_sharp - E_rounded) / E_sharp", "%"};
   c.saving.y_ref = 0.0;
   c.saving.height = 320;
-  c.paper.name = "paper (Table V)";
-  c.paper.style = SeriesStyle::Points;
-  c.paper.colour = "#000000";
   for (std::size_t i = 0; i < betas.size(); ++i) addAngle(c, d, betas, i, !one_angle || i == drawn);
-  if (!c.paper.x.empty()) c.saving.series.push_back(c.paper);
   chooseLogAxes(c, d.rows);
   if (!d.rows.empty()) {
     r.heading("Energy of the two corner strategies");
     r.figure({"turns-energy", renderSvg(c.energy), energyCaption(d, betas, drawn, one_angle, sp)});
-    r.figure({"turns-saving", renderSvg(c.saving), "Positive: the rounded, constant-speed turn uses less energy."});
+    r.figure({"turns-saving", renderSvg(c.saving), "Positive: the rounded, constant-speed turn uses less energy. Lines: this model; points: the savings "
+                                                 "the paper's Table V gives, in the colour of their angle."});
   }
   r.table(turnTable(d));
   return r;

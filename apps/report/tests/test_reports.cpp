@@ -265,7 +265,9 @@ TEST(Reports, TurnEnergyChartDrawsOneAngleWhenTheAnglesOverlap) {
 TEST(Reports, TurnAndSpeedReports) {
   const auto t = wr::turnReport(sampleTurns());
   EXPECT_EQ(checkFigures(t), 2);
-  EXPECT_NE(t.html().find("paper (Table V)"), std::string::npos);
+  // The paper's points are told apart by angle (they were all black, under one legend entry).
+  EXPECT_NE(t.html().find("paper (Table V), 45 deg"), std::string::npos);
+  EXPECT_NE(t.html().find("paper (Table V), 90 deg"), std::string::npos);
   EXPECT_NE(t.html().find("rounded, 90 deg"), std::string::npos);
   const auto s = wr::speedReport(sampleSpeed());
   EXPECT_EQ(checkFigures(s), 2);

@@ -27,7 +27,7 @@ struct PathGeoJsonOptions {
 /// One GeoJSON FeatureCollection holding one LineString Feature per leg (arcs sampled; a turn in
 /// place repeats its vertex) with scalar properties only, so that GIS formats without lists
 /// (Shapefile, GPX with extensions, GeoPackage) keep every field (names of at most 10
-/// characters): "path" and "leg" (indices), "role" ("sweep"/"turn"/"transit"/"climb"), "kind"
+/// characters): "path" (index from 0) and "leg" (number from 1, as the plan report counts), "role" ("sweep"/"turn"/"transit"/"climb"), "kind"
 /// ("line"/"arc"/"turn_in_place"), "pattern", "cell", "sweep_deg" [deg], "altitude_m" [m],
 /// "length_m" [m], and each leg_properties key. Throws std::invalid_argument when a
 /// leg_properties vector does not have one value per leg.

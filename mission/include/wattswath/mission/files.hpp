@@ -35,6 +35,7 @@ inline constexpr long long kMaxMissionFileBytes = 64LL * 1024 * 1024;
 /// How missions are read and checked.
 struct ReadOptions {
   bool lenient = false;                      ///< an unsupported command becomes a warning and its item is dropped
+  std::string lenient_option = "--lenient";  ///< the option that sets `lenient`, as messages name it
   double max_distance_m = 50000.0;           ///< [m] farthest a positional item may be from home, (0, 2e7]
   std::size_t max_unrolled_items = 100000;   ///< most items the DO_JUMP loops may unroll to, [1, 1e8]
   /// [deg] when set, where the vehicle will arm: positional items are checked against it instead of

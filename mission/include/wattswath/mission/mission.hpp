@@ -69,6 +69,10 @@ struct MissionItem {
   std::string where;             ///< "FILE:LINE" or "FILE: mission.items[3]" for messages
 };
 
+/// True for DO_CHANGE_SPEED's param2 values that set no new speed: -1 (no change) and -2 (back to the
+/// default speed), MAVLink's MAV_CMD_DO_CHANGE_SPEED sentinels [m/s].
+inline bool isSpeedSentinel(double speed_mps) { return speed_mps == -1.0 || speed_mps == -2.0; }
+
 /// A whole mission: the planned home and the items in order.
 struct Mission {
   std::string source;                 ///< file the mission was read from

@@ -100,7 +100,8 @@ struct LegRecord {
   double energy_j = 0.0;         ///< [J] electrical energy
 };
 
-/// CSV of legs with a header row (units in the column names).
+/// CSV of legs with a header row (units in the column names); legs are numbered from 1, as the plan
+/// report's table and map count them.
 std::string toLegCsv(const std::vector<LegRecord>& legs);
 
 }  // namespace wattswath::mission

@@ -28,6 +28,7 @@ struct BatteryUse {
   double remaining_pct = 0.0;      ///< [%] usable charge left on landing, counted (charge drawn against the usable capacity)
   double reserve_pct = 0.0;        ///< [%] reserve asked for (settings)
   bool fits = false;               ///< true when the flight ends above the cut-off with the reserve left
+  bool depleted = false;           ///< true when the cut-off is reached in flight (remaining_pct is then 0)
   std::string warning;             ///< empty when it fits; else a sentence saying why and by how much
 };
 
