@@ -1,6 +1,7 @@
 // Flight logs read for replay, diagnose and fit, each checked as a measurement first (issue 19).
 #include "log_inputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <iostream>
@@ -32,6 +33,17 @@ void checkLog(logs::FlightLog& log, const std::string& p, const energy::Vehicle&
     throw std::runtime_error(p + ": " + c.power_problem +
                              ". Refused: a model compared with this power says nothing; use --trust-power to use it anyway");
   }
+  // What the reader skipped or found (a truncated file, samples out of time order, a log that ends in
+  // the air): said with every number drawn from the log, not only by `log info`.
+  std::vector<std::string> reader_warnings;
+  if (const auto w = log.metadata.find("warnings"); w != log.metadata.end()) {
+    for (std::size_t b = 0; b < w->second.size();) {
+      const std::size_t e = std::min(w->second.find(" | ", b), w->second.size());
+      reader_warnings.push_back(w->second.substr(b, e - b));
+      b = e + 3;
+    }
+  }
+  for (const auto& n : reader_warnings) report.lines.push_back(p + ": " + n);
   for (const auto& n : c.notes) report.lines.push_back(p + ": " + n);
   if (!c.power_problem.empty()) {
     report.lines.push_back(p + ": measured power used only because of --trust-power: " + c.power_problem);
@@ -45,6 +57,7 @@ void checkLog(logs::FlightLog& log, const std::string& p, const energy::Vehicle&
                          {"median_current_a", num(c.median_current_a)},
                          {"hover_power_w", num(c.hover_power_w)},
                          {"position_cut_at_s", c.cut ? json(c.cut_at_s) : json(nullptr)},
+                         {"reader_warnings", reader_warnings},
                          {"notes", c.notes}});
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -50,12 +51,22 @@ double rateHz(const std::vector<double>& t) {
   return m > 0 ? 1.0 / m : kNaN;
 }
 
-// Keeps only the rows whose time strictly increases; returns how many were dropped.
+// Keeps the longest run of rows whose time strictly increases; returns how many were dropped.
 template <typename... Cols>
 std::size_t keepIncreasing(std::vector<double>& t, Cols&... cols) {
-  std::vector<std::size_t> keep;
-  for (std::size_t k = 0; k < t.size(); ++k)
-    if (std::isfinite(t[k]) && (keep.empty() || t[k] > t[keep.back()])) keep.push_back(k);
+  // The longest strictly increasing run of finite times (patience sorting, O(n log n)): one corrupt
+  // timestamp far ahead costs that sample only, where keeping the increasing prefix dropped every
+  // sample after it.
+  std::vector<std::size_t> tails, prev(t.size(), SIZE_MAX);
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (!std::isfinite(t[k])) continue;
+    const auto at = std::lower_bound(tails.begin(), tails.end(), t[k], [&](std::size_t i, double v) { return t[i] < v; });
+    if (at != tails.begin()) prev[k] = *(at - 1);
+    if (at == tails.end()) tails.push_back(k);
+    else *at = k;
+  }
+  std::vector<std::size_t> keep(tails.size());
+  for (std::size_t n = tails.size(), k = tails.empty() ? 0 : tails.back(); n > 0; k = prev[k]) keep[--n] = k;
   const std::size_t dropped = t.size() - keep.size();
   auto select = [&](auto& v) {
     std::remove_reference_t<decltype(v)> out;
@@ -127,7 +138,7 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
   log.origin_lon_deg = raw.origin_lon;
   log.origin_alt_m = raw.origin_alt;
   std::size_t before = 0, after = 0;
-  double max_gap = 0.0;
+  double max_gap = 0.0, gap_from = 0.0;
   std::size_t j = 0;
   for (std::size_t k = 0; k < b.t.size(); ++k) {
     const double t = b.t[k];
@@ -136,7 +147,10 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
     while (j + 2 < raw.pt.size() && raw.pt[j + 1] < t) ++j;
     const double t0 = raw.pt[j], t1 = raw.pt[j + 1];
     const double w = t1 > t0 ? std::clamp((t - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
-    max_gap = std::max(max_gap, t1 - t0);
+    if (t1 - t0 > max_gap) {
+      max_gap = t1 - t0;
+      gap_from = t0;
+    }
     LogSample s;
     s.t = t;
     s.position = (1 - w) * raw.pos[j] + w * raw.pos[j + 1];
@@ -200,6 +214,11 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
   m["data_end_s"] = num(std::max(b.t.back(), raw.pt.back()), 10);
   m["battery_samples_outside_position"] = std::to_string(before) + " before, " + std::to_string(after) + " after";
   m["position_max_gap_s"] = num(max_gap, 4);
+  if (max_gap > tol::kLogPositionGapWarn) {
+    raw.warnings.push_back("no position sample for " + num(max_gap, 3) + " s, from " + num(gap_from, 10) + " s to " +
+                           num(gap_from + max_gap, 10) + " s: the positions and velocities across it are interpolated "
+                           "in a straight line, not measured");
+  }
   m["resampling"] = "battery sample times; position, velocity, acceleration, yaw linearly interpolated";
   m["frame"] = "ENU from the EKF origin (x east, y north, z up)";
   m["airborne_source"] = raw.landed.empty()

@@ -137,10 +137,22 @@ void dataflashEvents(const dataflash::Log& L, Raw& raw, bool copter) {
     if (L.hasTime("EV") && L.has("EV", "Id")) {
       const auto t = L.times("EV");
       const auto id = L.column("EV", "Id");
+      // EV 17 LAND_COMPLETE_MAYBE is logged each time the flag sets and nothing when it clears
+      // (ArduCopter land_detector.cpp, set_land_complete_maybe): one followed by another 17 (or by a
+      // NOT_LANDED before any LAND_COMPLETE) was a moment of low throttle in flight, not a landing.
+      auto maybeThatCleared = [&](std::size_t k) {
+        for (std::size_t n = k + 1; n < t.size(); ++n) {
+          const int next = static_cast<int>(id[n]);
+          if (next == 17 || next == 28) return true;
+          if (next == 11 || next == 18) return false;
+        }
+        return false;  // the log ends: taken as the touch-down
+      };
       for (std::size_t k = 0; k < t.size(); ++k) {
         const int e = static_cast<int>(id[k]);
         const std::string nm = logEventName(e);
         raw.events.push_back({t[k], "event", "EV " + std::to_string(e) + (nm.empty() ? "" : " " + nm)});
+        if (e == 17 && maybeThatCleared(k)) continue;
         if (e == 11 || e == 17 || e == 18) raw.landed.push_back({t[k], true, "EV " + std::to_string(e) + " " + nm});
         if (e == 28) raw.landed.push_back({t[k], false, "EV 28 NOT_LANDED"});
       }

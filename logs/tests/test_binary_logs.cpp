@@ -19,7 +19,7 @@ namespace {
 using namespace wattswath::test::logbytes;
 
 // ArduPilot 4.x style: BAT with two instances (0 reads no voltage), XKF1 with two cores, EV, MODE.
-Bytes modernDataFlash() {
+Bytes modernDataFlash(const std::vector<std::pair<double, int>>& events = {{5.0, 28}, {15.0, 18}}) {
   DataFlash d;
   d.fmt(150, 3 + 8 + 1 + 4 + 4, "BAT", "QBff", "TimeUS,Inst,Volt,Curr");
   d.fmt(151, 3 + 8 + 1 + 6 * 4 + 2, "XKF1", "QBffffffC", "TimeUS,C,VN,VE,VD,PN,PE,PD,Yaw");
@@ -50,7 +50,7 @@ Bytes modernDataFlash() {
       put<float>(d.b, inst == 0 ? 0.0f : (flying ? 10.0f : 1.0f));
     }
   }
-  for (auto [t, id] : {std::pair<double, int>{5.0, 28}, {15.0, 18}}) {
+  for (auto [t, id] : events) {
     d.head(152);
     put<std::uint64_t>(d.b, static_cast<std::uint64_t>(t * 1e6));
     d.b.push_back(static_cast<std::uint8_t>(id));
@@ -80,6 +80,62 @@ TEST(DataFlash, ModernBatInstancesAndXkf1Cores) {
   ASSERT_FALSE(log.events.empty());
   EXPECT_EQ(log.events.front().kind, "message");
   EXPECT_EQ(log.events.at(1).text, "GUIDED (4)");
+}
+
+// EV 17 LAND_COMPLETE_MAYBE is logged each time the flag sets, nothing when it clears: one followed
+// by another 17 was low throttle in flight (it ended the airborne window there, 80 s of a SITL
+// flight replayed as on the ground); the one before LAND_COMPLETE is the touch-down.
+TEST(DataFlash, ALandCompleteMaybeThatClearedIsNotALanding) {
+  const auto log = wattswath::logs::readDataFlashBytes(modernDataFlash({{5.0, 28}, {8.0, 17}, {14.5, 17}, {15.0, 18}}), "maybe.bin", {});
+  ASSERT_EQ(log.airborne.size(), 1u);
+  EXPECT_DOUBLE_EQ(log.airborne[0].begin, 5.0);
+  EXPECT_DOUBLE_EQ(log.airborne[0].end, 14.5);
+  // A maybe the log ends after is taken as the touch-down.
+  const auto end = wattswath::logs::readDataFlashBytes(modernDataFlash({{5.0, 28}, {15.0, 17}}), "maybe-end.bin", {});
+  ASSERT_EQ(end.airborne.size(), 1u);
+  EXPECT_DOUBLE_EQ(end.airborne[0].end, 15.0);
+}
+
+// One corrupt timestamp far ahead (2^62 us) costs that sample only: keeping the increasing prefix
+// dropped every battery sample after it (a SITL log ended at 119 s of 196 s, 22 kJ of 44 kJ).
+TEST(DataFlash, OneCorruptTimestampCostsThatSampleOnly) {
+  Bytes b = modernDataFlash();
+  int seen = 0;
+  for (std::size_t k = 0; k + 12 < b.size(); ++k) {
+    if (b[k] == 0xA3 && b[k + 1] == 0x95 && b[k + 2] == 150 && b[k + 11] == 1 && ++seen == 60) {
+      const std::uint64_t huge = std::uint64_t{1} << 62;
+      std::memcpy(&b[k + 3], &huge, sizeof huge);  // the 60th BAT instance 1 record, at 6.9 s
+      break;
+    }
+  }
+  ASSERT_EQ(seen, 60);
+  const auto log = wattswath::logs::readDataFlashBytes(b, "spike.bin", {});
+  EXPECT_GT(log.samples.back().t, 20.5);  // to the end of the log, not 6.8 s
+  EXPECT_NE(log.metadata.at("warnings").find("1 battery samples with non-increasing time not used"), std::string::npos)
+      << log.metadata.at("warnings");
+}
+
+// Positions missing for 4 s (XKF1 records cut out) are interpolated across the gap, and said to be:
+// a 45 s gap drew a straight line across a square's corner with no word.
+TEST(DataFlash, AGapInThePositionsIsSaid) {
+  const Bytes full = modernDataFlash();
+  Bytes b;
+  for (std::size_t k = 0; k < full.size();) {
+    std::uint64_t us = 0;
+    if (k + 11 < full.size() && full[k] == 0xA3 && full[k + 1] == 0x95 && full[k + 2] == 151) {
+      std::memcpy(&us, &full[k + 3], sizeof us);
+      if (us > 8000000 && us < 12000000) {
+        k += 3 + 8 + 1 + 6 * 4 + 2;  // one XKF1 record
+        continue;
+      }
+    }
+    b.push_back(full[k++]);
+  }
+  const auto log = wattswath::logs::readDataFlashBytes(b, "gap.bin", {});
+  ASSERT_NE(log.metadata.count("warnings"), 0u);
+  EXPECT_NE(log.metadata.at("warnings").find("no position sample for 4.1 s, from 7.95 s to 12.05 s"), std::string::npos)
+      << log.metadata.at("warnings");
+  EXPECT_EQ(wattswath::logs::readDataFlashBytes(full, "full.bin", {}).metadata.count("warnings"), 0u);
 }
 
 TEST(DataFlash, BatteryInstanceOptionAndWindow) {

@@ -23,6 +23,9 @@ inline constexpr double kLogMinCurrent = -1.0;
 /// a longer gap is the logger stopping or two flights in one log, whose energy must not be
 /// counted as if measured.
 inline constexpr double kLogMaxSampleGap = 60.0;
+/// [s] longest time between two position samples of a .bin/.ulg log read without a warning: the
+/// kinematics across a longer gap are a straight-line interpolation (EKF outputs run at 10-50 Hz).
+inline constexpr double kLogPositionGapWarn = 2.0;
 /// [B] default largest flight-log file read (LogReadOptions::max_file_bytes, `--max-log-size`):
 /// logs are read whole, and reading takes about 2x the file in memory for DataFlash and ULog and
 /// 3x for CSV, so 512 MiB stays under 2 GB. Hours of logging at default rates are well below it.
