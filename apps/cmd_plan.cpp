@@ -649,11 +649,31 @@ void runPlan(const PlanOpts& o) {
     progress("plan: splitting into sorties for the battery (" + o.sorties.sorties + ", reserve " + fixedText(o.sorties.reserve_pct, 0) + " %)");
     scoring.mission.arc_waypoints = flight.arc_waypoints;  // the sorties are written as the mission was
     scoring.mission.speeds_a_waypoint_early = flight.speeds_a_waypoint_early;
-    split = planSorties(r.plan, flight, scoring, o.vehicle, o.sorties, dir);
+    SortieRequest req = o.sorties;
+    req.force = o.force;
+    req.inputs = {o.area, o.vehicle};
+    req.inputs.insert(req.inputs.end(), o.no_fly.begin(), o.no_fly.end());
+    split = planSorties(r.plan, flight, scoring, o.vehicle, req, dir);
+  }
+  // Sortie files an earlier run left here would be flown with this mission's: refused, or with
+  // --force removed once this run's files are in place.
+  const auto stale = staleSortieFiles(dir, split ? split->files : std::vector<std::string>{});
+  if (!stale.empty() && !o.force) {
+    std::string list;
+    for (const auto& f : stale) list += (list.empty() ? "" : ", ") + f;
+    throw std::runtime_error(o.out + " holds sortie files an earlier run wrote and this one does not (" + list +
+                             "): a pilot flying every sortie file there would fly another survey; remove them, or give "
+                             "--force to have them removed");
   }
   const nlohmann::json sorties = split ? split->json : nlohmann::json(nullptr);
   if (!o.no_report || !o.report_svg.empty()) writePlanReport(o, s, r, vehicle, model, flight, plan_text, split);
   out_set.commit();
+  for (const auto& f : stale) {
+    std::error_code ec;
+    fs::remove(dir / f, ec);
+    notes.push_back(ec ? "could not remove " + (dir / f).string() + ", left by an earlier run: " + ec.message()
+                       : "removed " + f + ", a sortie file an earlier run left in " + o.out + " (--force)");
+  }
   const PlanChecks c = checkPlan(o, s, flown_pr, r, pm, notes);
   if (o.json) {
     auto j = planJsonOf(r, pr, o, dir, notes);

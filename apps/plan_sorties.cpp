@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <regex>
 #include <stdexcept>
 
 #include "cli.hpp"
@@ -190,14 +191,20 @@ std::string fleetName(int vehicle, int order, const char* ext) {
 
 // Writes the sorties' missions and fills the per-sortie JSON and report rows (fleet: `fleet`).
 void writeSorties(const std::vector<FlownSortie>& flown, const std::vector<pl::Track>& tracks, const pl::FleetSchedule* fleet,
-                  bool camera, const std::filesystem::path& dir, nlohmann::json& list, report::PlanSorties& view) {
+                  bool camera, const std::filesystem::path& dir, const SortieRequest& req, nlohmann::json& list,
+                  SortieOutcome& out) {
+  auto& view = out.view;
   for (std::size_t k = 0; k < flown.size(); ++k) {
     const auto& f = flown[k];
     const pl::ScheduledSortie* sc = fleet ? &fleet->sorties[k] : nullptr;
     const std::string plan = sc ? fleetName(sc->vehicle, sc->order, "plan") : name(k, "plan");
     const std::string wpl = sc ? fleetName(sc->vehicle, sc->order, "waypoints") : name(k, "waypoints");
+    // As plan's other files: never over an input, over an existing file only with --force.
+    for (const auto& file : {plan, wpl}) checkWritable((dir / file).string(), req.force, req.inputs);
     writeTextFileAtomic((dir / plan).string(), mission::toQgcPlan(f.mission.mission));
     writeTextFileAtomic((dir / wpl).string(), mission::toQgcWpl(f.mission.mission));
+    out.files.push_back(plan);
+    out.files.push_back(wpl);
     const double e = f.prediction.total.energy_j;
     nlohmann::json row = {{"file", plan}, {"energy_j", e}, {"energy_wh", e / 3600.0}, {"time_s", f.prediction.total.time_s},
                           {"usable_left_pct", 100.0 * f.prediction.battery.usable_left_end}, {"fits", f.prediction.battery.fits},
@@ -274,7 +281,7 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   if (req.vehicles > 0) fleet = pl::scheduleFleet(tracks, fleetSettings(req));
   SortieOutcome out;
   nlohmann::json list = nlohmann::json::array();
-  writeSorties(flown, tracks, fleet ? &*fleet : nullptr, scoring.mission.trigger_distance_m > 0.0, dir, list, out.view);
+  writeSorties(flown, tracks, fleet ? &*fleet : nullptr, scoring.mission.trigger_distance_m > 0.0, dir, req, list, out);
   const double e = total(flown), e_naive = total(naive_flown);
   out.json = {{"count", flown.size()}, {"reserve_pct", req.reserve_pct}, {"energy_margin_pct", req.energy_margin_pct}, {"total_energy_j", e},
               {"total_time_s", totalTime(flown)}, {"single_flight_energy_j", single_flight_j},
@@ -290,6 +297,18 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   view.single_base = "mission.plan flown by " + flight.autopilot + ", unlimited battery";
   view.reserve_pct = req.reserve_pct;
   if (fleet) fillFleetView(*fleet, req, view);
+  return out;
+}
+
+std::vector<std::string> staleSortieFiles(const std::filesystem::path& dir, const std::vector<std::string>& written) {
+  static const std::regex names(R"((sortie_[0-9]{2,}|vehicle_[0-9]+_sortie_[0-9]{2,})\.(plan|waypoints))");
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string n = e.path().filename().string();
+    if (std::regex_match(n, names) && std::find(written.begin(), written.end(), n) == written.end()) out.push_back(n);
+  }
+  std::sort(out.begin(), out.end());
   return out;
 }
 

@@ -4,6 +4,7 @@
 // sortie that does not land with the reserve shrinks the budget and the split is redone.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,13 +24,20 @@ struct SortieRequest {
   double swap_time_s = 120.0;       ///< [s] battery swap on the ground between two sorties of a vehicle
   double launch_interval_s = 30.0;  ///< [s] between the vehicles' first take-offs
   double separation_m = 15.0;       ///< [m] least horizontal distance between airborne vehicles
+  bool force = false;               ///< replace existing sortie files (--force); never an input
+  std::vector<std::string> inputs;  ///< the run's input files, which no sortie file may overwrite
 };
 
 /// The split's summary (JSON) and what the plan report draws of it.
 struct SortieOutcome {
   nlohmann::json json;           ///< counts, energies, per sortie, fleet schedule
   report::PlanSorties view;      ///< the report's sorties section
+  std::vector<std::string> files;  ///< the file names written into the output folder
 };
+
+/// The sortie files in `dir` (`sortie_NN.plan` / `.waypoints`, `vehicle_K_sortie_NN.*`, as
+/// planSorties names them) that are not among `written`: left by an earlier run.
+std::vector<std::string> staleSortieFiles(const std::filesystem::path& dir, const std::vector<std::string>& written);
 
 /// Splits `plan` (the plan written, `flight` its one flight by the autopilot model, whose take-off
 /// and landing every sortie repeats) for the vehicle's battery, writes

@@ -580,6 +580,37 @@ TEST(CliPlan, SortiesEachLandWithTheReserveAndTogetherFlyTheWholePlan) {
   EXPECT_NE(nb.output.find("--sorties needs the vehicle's battery"), std::string::npos) << nb.output;
 }
 
+// Sortie files are plan's outputs like the others: never written over an input, even with --force
+// (a vehicle file named sortie_01.plan was overwritten), and sortie files an earlier run left in the
+// folder are refused, or removed with --force (a pilot loading every sortie would fly them too).
+TEST(CliPlan, SortieFilesNeverOverwriteAnInputAndEarlierOnesAreNotLeftBeside) {
+  const auto out = outDir("sorties_safe");
+  const std::string base = " plan " + sourcePath("data/areas/iris_area.geojson") + " --spacing 15 --sorties auto --no-report --out " + out;
+  const std::string vehicle_in_out = out + "/sortie_01.plan";
+  std::filesystem::create_directories(out);
+  std::filesystem::copy_file(sourcePath("tests/data/iris-small-battery.json"), vehicle_in_out);
+  const std::string before = slurp(vehicle_in_out);
+  const auto r = run(cliBinary() + base + " --vehicle " + vehicle_in_out + " --force 2>&1");
+  EXPECT_NE(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("sortie_01.plan"), std::string::npos) << r.output;
+  EXPECT_EQ(slurp(vehicle_in_out), before);
+  std::filesystem::remove(vehicle_in_out);
+  // An earlier run's sortie_41.plan: refused without --force, removed with it.
+  const std::string vehicle = " --vehicle " + sourcePath("tests/data/iris-small-battery.json");
+  std::filesystem::remove_all(out);
+  std::filesystem::create_directories(out);
+  { std::ofstream(out + "/sortie_41.plan") << "{}"; }
+  const auto refused = run(cliBinary() + base + vehicle + " 2>&1");
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.output.find("holds sortie files an earlier run wrote and this one does not (sortie_41.plan)"), std::string::npos)
+      << refused.output;
+  const auto forced = run(cliBinary() + base + vehicle + " --force 2>&1");
+  ASSERT_EQ(forced.status, 0) << forced.output;
+  EXPECT_NE(forced.output.find("removed sortie_41.plan"), std::string::npos) << forced.output;
+  EXPECT_FALSE(std::filesystem::exists(out + "/sortie_41.plan"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/sortie_01.plan"));
+}
+
 // A GSD sets the altitude as QGC's CameraCalc does (altitude = GSD x image width x focal length /
 // sensor width: 2 cm/px on a 13.2 mm, 5472 px sensor behind 8.8 mm is 72.96 m), and a camera that
 // needs 2 s between photos caps the sweeps at trigger distance / 2 s.
