@@ -104,7 +104,7 @@ PlanFlight flyFinalists(planner::PlanResult& r, planner::FlightScoring scoring, 
   if (best.speeds_a_waypoint_early) {
     const bool scurve = setup.autopilot.family == mission::AutopilotFamily::ArduCopterSCurve;
     notes.push_back("flight model: each speed command is written a waypoint early (the faster of its leg's planned speed and "
-                    "the next leg's): " + f.autopilot +
+                    "the next leg's, but never above a camera leg's own where a leg with photos meets one without): " + f.autopilot +
                     (scurve ? " plans the leg after a waypoint it flies through before that leg's speed command runs and "
                               "reaches a faster speed by a second acceleration after the first;"
                             : " flies a speed increase only from the next waypoint on;") +

@@ -347,10 +347,15 @@ TEST(CliPlanShared, ACameraPlanWhosePhotosMissTheAreaIsPlannedWithStraightSweeps
   const auto j = nlohmann::json::parse(r.output);
   EXPECT_GE(j.at("mission").at("camera").at("photo_coverage_pct").get<double>(), 99.0);
   EXPECT_NE(j.at("pattern").get<std::string>(), "spiral");
+  // Since speed commands written a waypoint early no longer raise a camera leg to a faster leg's
+  // speed (2026-12-07), the spiral flies dearer than straight sweeps and is not chosen as flown
+  // either; before, it was chosen, its photos checked, and replaced, which the notes said.
   std::string notes;
   for (const auto& n : j.at("notes")) notes += n.get<std::string>() + "\n";
-  EXPECT_NE(notes.find("camera: the cheapest plan (spiral"), std::string::npos) << notes;
-  EXPECT_NE(notes.find("written instead: straight sweeps"), std::string::npos) << notes;
+  const bool replaced = notes.find("camera: the cheapest plan (spiral") != std::string::npos &&
+                        notes.find("written instead: straight sweeps") != std::string::npos;
+  const bool flown_cheaper = notes.find("candidate flies cheaper than the search's choice") != std::string::npos;
+  EXPECT_TRUE(replaced || flown_cheaper) << notes;
 }
 
 // Without --trigger-interval nothing capped the sweeps for the camera: 0.69 cm/px at up to 11.7 m/s,

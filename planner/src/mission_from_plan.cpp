@@ -188,8 +188,21 @@ MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& 
   }
   auto& out = b.out;
   if (options.speeds_a_waypoint_early) {  // in order: waypoint i + 1 still holds its own planned command
-    for (size_t i = 0; i + 1 < out.waypoints.size(); ++i)
-      out.waypoints[i].speed_mps = std::max(out.waypoints[i].speed_mps, out.waypoints[i + 1].speed_mps);
+    // The command with waypoint i is flown on leg i (an autopilot that changes speed at once) or on
+    // leg i + 1 (ArduCopter 3.x, a waypoint late): where only one of the two takes photos it is held
+    // at that leg's own speed, so the camera leg is never flown faster than planned either way (a
+    // sortie's last sweep was flown at its transit home's 10.5 m/s where the trigger interval capped
+    // the sweeps at 5.25: a photo every 21 m for 10.5 m).
+    bool photos = false;  // the camera is on along the leg into waypoint i
+    for (size_t i = 0; i + 1 < out.waypoints.size(); ++i) {
+      const bool into_photos = photos;
+      if (out.waypoints[i].camera_trigger_m) photos = *out.waypoints[i].camera_trigger_m > 0.0;
+      const double own = out.waypoints[i].speed_mps, next = out.waypoints[i + 1].speed_mps;
+      double early = std::max(own, next);
+      if (into_photos && !photos) early = std::min(early, own);
+      if (!into_photos && photos) early = std::min(early, next);
+      out.waypoints[i].speed_mps = early;
+    }
   }
   if (camera_on) out.waypoints.back().camera_trigger_m = 0.0;
   if (!out.waypoints.empty()) out.waypoints.back().hold_s = 0.0;  // the return to launch stops there anyway

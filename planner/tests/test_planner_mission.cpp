@@ -114,6 +114,27 @@ TEST(MissionFromPlan, MergesShortLegsHoldsSmallChangesAndRaisesSlowSpeeds) {
   expectHonestMission(f, pr, frame);
 }
 
+// Speed commands a waypoint early never raise a leg flown with the camera on to a transit's speed,
+// whether the autopilot flies a command on its own leg or the next (a sortie's last sweep was flown
+// at its transit home's 10.5 m/s where the trigger interval capped the sweeps at 5.25: a photo every
+// 21 m for 10.5 m); between two camera legs they are still raised.
+TEST(MissionFromPlan, EarlySpeedsKeepACameraLegAtItsOwnSpeed) {
+  const auto f = flown({line({0, -20}, {0, 0}, LegRole::Transit),     // 0: 12 m/s, camera on at its end
+                        line({0, 0}, {50, 0}),                          // 1: sweep at 4
+                        line({50, 0}, {100, 0}),                        // 2: sweep at 5
+                        line({100, 0}, {100, 50}, LegRole::Transit)},  // 3: home at 12
+                       {12.0, 4.0, 5.0, 12.0});
+  MissionOptions o;
+  o.trigger_distance_m = 10.0;
+  o.speeds_a_waypoint_early = true;
+  const auto m = missionWaypoints(f, o);
+  ASSERT_EQ(m.waypoints.size(), 4u);
+  EXPECT_DOUBLE_EQ(m.waypoints[0].speed_mps, 4.0);   // into the first sweep: flown on it by a 3.x autopilot
+  EXPECT_DOUBLE_EQ(m.waypoints[1].speed_mps, 5.0);   // a camera leg raised to the next camera leg's speed
+  EXPECT_DOUBLE_EQ(m.waypoints[2].speed_mps, 5.0);   // the last sweep: not 12
+  EXPECT_DOUBLE_EQ(*m.waypoints[2].camera_trigger_m, 0.0);
+}
+
 TEST(MissionFromPlan, ExampleAreaMissionHasNoPlaceholderSpeedsOrDegenerateWaypoints) {
   // scripts/example.sh: the bundled IRIS+ area with its no-fly zone, 15 m spacing.
   const auto area = geometry::readSurveyArea(test::sourcePath("data/areas/iris_area.geojson"));
