@@ -18,8 +18,9 @@ using nlohmann::json;
 
 [[noreturn]] void fail(const std::string& source, const std::string& what) { throw SurveyAreaError(source + ": " + what); }
 
-/// Largest distance [m] between a geofence circle and the polygon standing for it (inscribed,
-/// so the polygon never reaches outside an inclusion circle's fence).
+/// Largest distance [m] between a geofence circle and the polygon standing for it (inscribed for an
+/// inclusion, so it never reaches outside the fence; circumscribed for an exclusion, so it covers
+/// the whole no-fly circle).
 constexpr double kCircleTolerance = 0.05;
 
 /// A QGC position [lat, lon(, alt)] of numbers, or a clear error.
@@ -44,9 +45,10 @@ LabeledPolygon qgcPolygon(const json& poly, const std::string& name, const std::
   return p;
 }
 
-/// A geofence circle {"center": [lat, lon], "radius": r} as an inscribed polygon, vertices by
+/// A geofence circle {"center": [lat, lon], "radius": r} as an inscribed (or, `circumscribed`, a
+/// circumscribed) polygon, vertices by
 /// the WGS84 geodesic (GeographicLib), enough of them for kCircleTolerance.
-LabeledPolygon qgcCircle(const json& c, const std::string& name, const std::string& source) {
+LabeledPolygon qgcCircle(const json& c, const std::string& name, const std::string& source, bool circumscribed) {
   if (!c.is_object() || !c.contains("center") || !c.contains("radius") || !c["radius"].is_number()) {
     fail(source, name + ": expected {\"center\": [lat, lon], \"radius\": metres}");
   }
@@ -61,11 +63,12 @@ LabeledPolygon qgcCircle(const json& c, const std::string& name, const std::stri
   // Sagitta of a chord: r (1 - cos(pi / n)) <= tolerance.
   const double n = std::ceil(M_PI / std::acos(1.0 - std::min(1.0, kCircleTolerance / r)));
   const int count = static_cast<int>(std::clamp(n, 16.0, 3600.0));
+  const double vertex_r = circumscribed ? r / std::cos(M_PI / count) : r;  // edges tangent to the circle
   LabeledPolygon p;
   p.outer.name = name + " (circle of " + std::to_string(count) + " vertices)";
   for (int i = 0; i < count; ++i) {
     double lat = 0.0, lon = 0.0;
-    GeographicLib::Geodesic::WGS84().Direct(centre.lat_deg, centre.lon_deg, 360.0 * i / count, r, lat, lon);
+    GeographicLib::Geodesic::WGS84().Direct(centre.lat_deg, centre.lon_deg, 360.0 * i / count, vertex_r, lat, lon);
     p.outer.pts.emplace_back(lon, lat);
     p.outer.labels.push_back("vertex " + std::to_string(i));
   }
@@ -93,6 +96,13 @@ void qgcSurveyItems(const json& mission, const std::string& source, RawArea& out
 /// geoFence version 2: polygons and circles, inclusion -> area candidates, exclusion -> no-fly.
 void qgcGeoFence(const json& fence, const std::string& source, RawArea& out, std::vector<LabeledPolygon>& inclusions) {
   if (!fence.is_object()) fail(source, "geoFence must be an object");
+  // QGroundControl's GeoFenceController::load reads no fence of version 1 (or none) and loads the
+  // rest of the plan; so do we, and say so.
+  if (!fence.contains("version") || fence["version"] == 1) {
+    out.notes.push_back(source + ": geoFence version " + (fence.contains("version") ? std::string("1") : std::string("missing")) +
+                        ": its fences are not read (QGroundControl ignores them too)");
+    return;
+  }
   if (fence.value("version", 0) != 2) {
     fail(source, "geoFence version " + fence.value("version", json(nullptr)).dump() + " is not supported (expected 2, QGroundControl 3.4 and later)");
   }
@@ -108,7 +118,7 @@ void qgcGeoFence(const json& fence, const std::string& source, RawArea& out, std
       const bool circle = std::string(key) == "circles";
       if (circle && !f.contains("circle")) fail(source, name + ": circle fence without \"circle\"");
       if (!circle && !f.contains("polygon")) fail(source, name + ": polygon fence without \"polygon\"");
-      LabeledPolygon p = circle ? qgcCircle(f["circle"], name, source) : qgcPolygon(f["polygon"], name, source);
+      LabeledPolygon p = circle ? qgcCircle(f["circle"], name, source, !f["inclusion"].get<bool>()) : qgcPolygon(f["polygon"], name, source);
       (f["inclusion"].get<bool>() ? inclusions : out.no_fly).push_back(std::move(p));
     }
   }

@@ -253,7 +253,8 @@ std::vector<Ring> zonesFromRaw(RawArea& raw, std::vector<LabeledPolygon>& polys,
 const PolygonWithHoles& SurveyArea::polygon() const {
   if (regions.size() != 1) {
     throw SurveyAreaError(source + ": the area has " + std::to_string(regions.size()) +
-                          " separate regions; use SurveyArea::regions");
+                          " separate regions (features or parts that do not touch): plan one at a time, chosen "
+                          "with --layer / --where or from a file holding only it (library: SurveyArea::regions)");
   }
   return regions.front();
 }
@@ -293,6 +294,24 @@ Point SurveyArea::bboxMax() const {
 }
 
 namespace {
+/// Refuses an area whose longitudes span more than 180 deg: it crosses the 180 deg meridian, where
+/// a local frame centred on the longitudes' mean lands on the other side of the Earth (a field at
+/// 179.999 E / 179.999 W was planned at 0.001 E, 49.7 S).
+void checkNotAcrossTheAntimeridian(const RawArea& raw, const std::string& source) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto* polys : {&raw.polygons, &raw.no_fly})
+    for (const auto& poly : *polys)
+      for (const auto& p : poly.outer.pts) {
+        lo = std::min(lo, p.x());
+        hi = std::max(hi, p.x());
+      }
+  if (hi - lo > 180.0) {
+    throw SurveyAreaError(source + ": the area's longitudes run from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                          " deg: it crosses the 180 deg meridian (antimeridian), which wattswath does not handle; expected "
+                          "an area on one side of it");
+  }
+}
+
 /// Frame, projection, validation and the file's own no-fly zones, for a RawArea from any reader.
 SurveyArea buildArea(RawArea raw, const std::string& source, const ReadOptions& options) {
   if (raw.polygons.empty()) throw SurveyAreaError(source + ": no polygon found (expected at least one area polygon)");
@@ -302,6 +321,7 @@ SurveyArea buildArea(RawArea raw, const std::string& source, const ReadOptions& 
   if (raw.geodetic) {
     checkGeodeticPolygons(raw.polygons, source);
     checkGeodeticPolygons(raw.no_fly, source);
+    checkNotAcrossTheAntimeridian(raw, source);
     area.frame = LocalFrame(chooseOrigin(raw, options, source));
   } else if (options.origin) {
     area.frame = LocalFrame(*options.origin);

@@ -242,15 +242,16 @@ TEST(AreaFormats, QgcPlanInclusionFenceIsTheAreaAndCirclesArePolygons) {
   const geo::SurveyArea a = geo::readSurveyArea((d / "fence.plan").string());
   ASSERT_EQ(a.regions.front().holes.size(), 1U);
   EXPECT_EQ(a.regions.front().outer.size(), 4U);
-  // The circle's polygon is inscribed within 5 cm: its area lies between pi (r - 0.05)^2 and pi r^2.
+  // The no-fly circle's polygon is circumscribed within 5 cm: its area lies between pi r^2 and
+  // pi (r + 0.05)^2 (inscribed, it left up to 5 cm of the zone outside the polygon).
   EXPECT_GE(a.regions.front().holes.front().size(), 16U);
   const double full = [&] {
     writeFile(d / "no_circle.plan", qgcPlan("", inclusion, ""));
     return geo::readSurveyArea((d / "no_circle.plan").string()).area();
   }();
   const double cut = full - a.area();
-  EXPECT_LE(cut, M_PI * 20.0 * 20.0);
-  EXPECT_GE(cut, M_PI * 19.95 * 19.95);
+  EXPECT_GE(cut, M_PI * 20.0 * 20.0);
+  EXPECT_LE(cut, M_PI * 20.05 * 20.05);
   fs::remove_all(d);
 }
 
@@ -259,8 +260,15 @@ TEST(AreaFormats, QgcPlanErrorsNameTheField) {
   writeFile(d / "lonlat.plan", qgcPlan(R"({"type":"ComplexItem","complexItemType":"survey","polygon":[[43.0,"x"]]})", "", ""));
   EXPECT_NE(errorOf((d / "lonlat.plan").string()).find("mission item 0 (survey), polygon, vertex 0: expected a position [lat, lon]"),
             std::string::npos);
+  // A fence of version 1 (or none) is not read, as QGroundControl's GeoFenceController::load reads
+  // none, and the rest of the plan is: a survey is the area, with a note (it refused the plan).
   writeFile(d / "v1.plan", R"({"fileType":"Plan","geoFence":{"version":1,"polygon":[]}})");
-  EXPECT_NE(errorOf((d / "v1.plan").string()).find("geoFence version 1 is not supported"), std::string::npos);
+  EXPECT_NE(errorOf((d / "v1.plan").string()).find("no polygon found"), std::string::npos);
+  writeFile(d / "v1_survey.plan", R"({"fileType":"Plan","geoFence":{"version":1,"polygon":[]},"mission":{"items":[)" + kSurvey + "]}}");
+  const auto v1 = geo::readSurveyArea((d / "v1_survey.plan").string());
+  std::string v1_notes;
+  for (const auto& n : v1.repairs) v1_notes += n + "\n";
+  EXPECT_NE(v1_notes.find("geoFence version 1: its fences are not read"), std::string::npos) << v1_notes;
   writeFile(d / "radius.plan", qgcPlan(kSurvey, "", R"({"inclusion":false,"circle":{"center":[43.001,10.001],"radius":-3}})"));
   EXPECT_NE(errorOf((d / "radius.plan").string()).find("geoFence.circles[0]: radius -3"), std::string::npos);
   fs::remove_all(d);
