@@ -200,15 +200,23 @@ nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, 
 }
 
 /// The plan, its cells, the bound, the baselines and the battery as text.
-void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin) {
+/// The plan as text: what is flown first (the pattern, the flight as the autopilot model flies
+/// mission.plan, the battery as predict says it), then the planner's own survey model and baselines.
+void printPlanText(const pl::PlanResult& r, const PlanFlight& flight, double whole_area_pct, double margin) {
   const double e = r.plan.flown.energy;
   std::cout << std::fixed << std::setprecision(1);
   std::cout << "plan: " << r.plan.pattern;
   if (r.plan.pattern != "spiral") std::cout << " at " << std::setprecision(0) << r.plan.sweep_angle_deg << " deg";
-  std::cout << std::setprecision(1) << ", " << e / 1000.0 << " kJ, " << std::setprecision(0) << r.plan.flown.time
-            << " s, " << r.plan.flown.length << " m, coverage " << std::setprecision(1) << r.plan.coverage_pct << " %";
+  std::cout << std::setprecision(1) << ", coverage " << r.plan.coverage_pct << " %";
   if (margin > 0.0) std::cout << " (" << whole_area_pct << " % counting the no-fly margin band as area)";
   std::cout << "\n";
+  printFlight(flight);
+  // The battery as predict gives it for mission.plan (its verdict, with --energy-margin).
+  if (flight.prediction.battery.known)
+    std::cout << "battery: the flight draws " << fixedText(flight.prediction.total.energy_j / 1000.0, 1) << " kJ. "
+              << flight.prediction.battery.verdict << "\n";
+  std::cout << std::setprecision(1) << "planner's survey model (closed form, first waypoint to last, the figures below compare): "
+            << e / 1000.0 << " kJ, " << std::setprecision(0) << r.plan.flown.time << " s, " << r.plan.flown.length << " m\n";
   if (r.line_count_neighbour) {
     const auto& n = *r.line_count_neighbour;
     std::cout << "  line count: the one-angle plan at " << std::setprecision(0) << n.candidate.sweep_angle_deg
@@ -231,13 +239,6 @@ void printPlanText(const pl::PlanResult& r, double whole_area_pct, double margin
   if (r.best_spiral)
     std::cout << "best spiral: " << r.best_spiral->flown.energy / 1000.0 << " kJ (plan saves "
               << 100.0 * (r.best_spiral->flown.energy - e) / r.best_spiral->flown.energy << " % of this baseline's energy)\n";
-  // One basis, as predict's verdict: the charge drawn against the usable capacity (the energy margin
-  // at the flight's mean power is a different share; it stays in --json).
-  if (r.battery)
-    std::cout << "battery: the flight draws " << fixedText(r.battery->mission_energy_j / 1000.0, 1) << " kJ and "
-              << (r.battery->depleted ? "reaches the cut-off before it lands"
-                                      : "lands with " + fixedText(r.battery->remaining_pct, 1) + " % of the usable charge")
-              << " (reserve " << fixedText(r.battery->reserve_pct, 0) << " %): " << (r.battery->fits ? "fits" : "does not fit") << "\n";
 }
 
 /// "A,B" as two positive numbers; throws std::invalid_argument naming `option` and `expected`.
@@ -460,6 +461,7 @@ pl::FlightScoring flightScoring(const PlanOpts& o, const PlanSetup& s, const ene
   scoring.vehicle = &vehicle;
   if (wind) scoring.settings.wind = wind->air();
   scoring.settings.reserve_fraction = o.sorties.reserve_pct / 100.0;  // --reserve, for the flight's verdict
+  scoring.settings.energy_margin = o.sorties.energy_margin_pct / 100.0;  // --energy-margin, as predict's verdict
   return scoring;
 }
 
@@ -683,14 +685,19 @@ void runPlan(const PlanOpts& o) {
     j["max_outside_depth_m"] = c.inside.max_depth_m;
     j["mission"] = missionJson(s, pm, o.no_fly_margin, c.photo_pct);
     j["flight"] = flightJson(flight);
+    if (j["battery"].is_object()) {  // predict's verdict on mission.plan, with --energy-margin
+      const auto& b = flight.prediction.battery;
+      j["battery"]["energy_margin_pct"] = 100.0 * b.energy_margin;
+      j["battery"]["fits_with_margin"] = b.fits_with_margin;
+      j["battery"]["verdict"] = b.verdict;
+    }
     j["sorties"] = sorties;
     j["wind"] = windJson(wind);
     printJson(j);
     return;
   }
-  printPlanText(r, c.whole_area_pct, o.no_fly_margin);
+  printPlanText(r, flight, c.whole_area_pct, o.no_fly_margin);
   printMission(s, pm, o.no_fly_margin, c.photo_pct, energy::marinsHoverPowerW(vehicle));
-  printFlight(flight);
   if (!sorties.is_null()) printSorties(sorties);
   for (const auto& n : notes) std::cout << "note: " << n << "\n";
   std::string sortie_files;

@@ -23,8 +23,8 @@ void addSortieOptions(CLI::App* cmd, SortieRequest& req) {
                   "each sortie with --sorties")
       ->check(CLI::Range(0.0, 90.0));
   cmd->add_option("--energy-margin", req.energy_margin_pct,
-                  "each sortie keeps the reserve with this much more energy too, for the prediction's own error [%] "
-                  "(default 10, as predict's; 0: the reserve as predicted)")
+                  "the battery verdict also checks the reserve with this much more energy, for the prediction's own error "
+                  "[%] (default 10, as predict's; 0: the reserve as predicted): the plan's verdict, and each sortie keeps it")
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--vehicles", req.vehicles,
                   "a fleet of N vehicles flies the sorties at once (implies --sorties auto): contiguous runs of sorties per vehicle "

@@ -410,6 +410,10 @@ TEST(CliPlan, BatteryWhenTheVehicleHasOne) {
   ASSERT_EQ(p.status, 0) << p.output;
   EXPECT_NEAR(nlohmann::json::parse(p.output).at("battery").at("usable_left_at_landing").get<double>() * 100.0,
               b.at("remaining_pct").get<double>(), 0.1);
+  // The same verdict, --energy-margin included (plan said "fits" where predict said "Too close to
+  // call": its margin applied to sorties only).
+  EXPECT_EQ(b.at("verdict"), nlohmann::json::parse(p.output).at("battery").at("verdict"));
+  EXPECT_EQ(b.at("fits_with_margin"), nlohmann::json::parse(p.output).at("battery").at("fits_with_margin"));
   const auto r5 = run(cliBinary() + " plan " + sourcePath("data/areas/espiral_rectangle.geojson") + " --vehicle " +
                       sourcePath("data/vehicles/hwang-hexacopter.json") + " --spacing 30 --reserve 5 --out " + outDir("battery5") +
                       " --json 2>/dev/null");
@@ -436,7 +440,7 @@ TEST(CliPlan, AFlightThatRunsOutIsSaidToReachTheCutOffNotToLand) {
                            sourcePath("tests/data/iris-small-battery.json") + " --spacing 15 --force --out " + out;
   const auto t = run(cliBinary() + args + " 2>/dev/null");
   ASSERT_EQ(t.status, 0) << t.output;
-  EXPECT_NE(t.output.find("kJ and reaches the cut-off before it lands (reserve 25 %): does not fit"), std::string::npos) << t.output;
+  EXPECT_NE(t.output.find("kJ. Does not fit: the battery reaches its cut-off"), std::string::npos) << t.output;
   EXPECT_EQ(t.output.find("kJ usable (margin"), std::string::npos) << t.output;
   const std::string page = slurp(out + "/report.html");
   const auto j = nlohmann::json::parse(run(cliBinary() + args + " --no-report --json 2>/dev/null").output);
