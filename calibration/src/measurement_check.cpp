@@ -118,6 +118,13 @@ std::string powerProblem(const logs::FlightLog& log, const std::vector<size_t>& 
     pw.push_back(std::isfinite(s.power) ? s.power : s.voltage * s.current);
   }
   c.airborne_samples = static_cast<int>(idx.size());
+  const auto unmeasured = std::count_if(pw.begin(), pw.end(), [](double p) { return !std::isfinite(p); });
+  if (unmeasured > 0) {
+    c.hover_power_w = energy::marinsHoverPowerW(v);
+    return "the battery current is not measured in " + std::to_string(unmeasured) + " of " + std::to_string(idx.size()) +
+           " airborne samples (no finite current: ArduPilot logs BAT.Curr as NaN and PX4 current_a as -1 without a current "
+           "sensor), so the power drawn there is unknown";
+  }
   c.median_power_w = median(pw);
   c.median_current_a = cur.size() == idx.size() ? median(cur) : std::numeric_limits<double>::quiet_NaN();
   c.hover_power_w = energy::marinsHoverPowerW(v);
@@ -171,6 +178,28 @@ void validate(const MeasurementLimits& l) {
   checkSettingRange("MeasurementLimits", "min_kept_s", l.min_kept_s, 0.0, inf);
 }
 
+namespace {
+/// A log whose position and velocity do not change at all while it counts as airborne (all zero:
+/// no position logged, or a run on the ground) measures no flight: a model compared with it, fitted
+/// to it or diagnosed on it says nothing. Real sensors jitter by centimetres, so only an exactly
+/// still record is refused.
+std::string stillKinematicsProblem(const logs::FlightLog& log, const std::vector<size_t>& idx) {
+  if (idx.size() < 10) return "";
+  Eigen::Vector3d lo = log.samples[idx.front()].position, hi = lo;
+  double fastest = 0.0;
+  for (size_t i : idx) {
+    const auto& s = log.samples[i];
+    lo = lo.cwiseMin(s.position);
+    hi = hi.cwiseMax(s.position);
+    fastest = std::max(fastest, s.velocity.norm());
+  }
+  if ((hi - lo).maxCoeff() >= 1e-3 || fastest >= 1e-3) return "";
+  return "the logged position and velocity do not change at all over the " + std::to_string(idx.size()) +
+         " samples counted as airborne (position range " + num((hi - lo).maxCoeff(), 3) + " m, speed at most " + num(fastest, 3) +
+         " m/s): no flight was measured (a log without position, or of the vehicle on the ground)";
+}
+}  // namespace
+
 MeasurementCheck checkMeasurement(logs::FlightLog& log, const energy::Vehicle& v, const MeasurementLimits& l) {
   validate(l);
   MeasurementCheck c;
@@ -179,6 +208,8 @@ MeasurementCheck checkMeasurement(logs::FlightLog& log, const energy::Vehicle& v
   checkPosition(log, v, l, c);
   if (!c.position_problem.empty() || log.samples.empty()) return c;
   const auto idx = airborneSamples(log, l, c);
+  c.position_problem = stillKinematicsProblem(log, idx);
+  if (!c.position_problem.empty()) return c;
   c.power_problem = powerProblem(log, idx, v, l, c);
   return c;
 }

@@ -3,6 +3,8 @@
 // current and what was seen named; a diverged position estimate is cut off (late) or refused (early).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "test_util.hpp"
 #include "wattswath/calibration/diagnose.hpp"
 #include "wattswath/calibration/measurement_check.hpp"
@@ -54,6 +56,37 @@ TEST(MeasurementCheck, CurrentStuckAtZeroIsRefusedNamingTheCurrent) {
   const auto c = checkMeasurement(log, iris());
   EXPECT_TRUE(contains(c.power_problem, "battery current reads 0 A in all")) << c.power_problem;
   EXPECT_TRUE(contains(c.power_problem, "airborne samples")) << c.power_problem;
+}
+
+// A battery without a current sensor: ArduPilot logs BAT.Curr as NaN, PX4 current_a as -1 (read as
+// NaN). The check passed it (median power NaN) and replay, fit and diagnose then died on "sample 0
+// has no power"; now the current is said not to be measured, in how many samples.
+TEST(MeasurementCheck, ACurrentThatIsNotMeasuredIsSaidToBe) {
+  FlightLog log = flight();
+  for (size_t i = 0; i < log.samples.size(); i += 2) {
+    log.samples[i].current = std::nan("");
+    log.samples[i].power = std::nan("");
+  }
+  const auto c = checkMeasurement(log, iris());
+  EXPECT_TRUE(contains(c.power_problem, "the battery current is not measured in ")) << c.power_problem;
+  EXPECT_TRUE(contains(c.power_problem, "ArduPilot logs BAT.Curr as NaN")) << c.power_problem;
+}
+
+// A log whose position and velocity are exactly still while the current says it flies (all zero:
+// no position, or a ground run at 8 A) was replayed (+119 %), fitted and diagnosed "nothing missing".
+TEST(MeasurementCheck, ExactlyStillKinematicsAreNoFlight) {
+  FlightLog log = flight();
+  for (auto& x : log.samples) {
+    x.position.setZero();
+    x.velocity.setZero();
+    x.acceleration.setZero();
+  }
+  const auto c = checkMeasurement(log, iris());
+  EXPECT_TRUE(contains(c.position_problem, "do not change at all over the")) << c.position_problem;
+  // A real hover jitters: a centimetre of it is a flight.
+  FlightLog hover = log;
+  for (size_t i = 0; i < hover.samples.size(); ++i) hover.samples[i].position.z() = 10.0 + 0.01 * std::sin(0.7 * i);
+  EXPECT_TRUE(checkMeasurement(hover, iris()).position_problem.empty());
 }
 
 TEST(MeasurementCheck, NineWattsForAFlyingQuadIsFarBelowHover) {
