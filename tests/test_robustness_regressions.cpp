@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "test_util.hpp"
 #include "wattswath/logs/autopilot_log.hpp"
 #include "wattswath/calibration/diagnose.hpp"
@@ -438,3 +440,19 @@ TEST(Regression, MissionVehicleEffectAndPathFilesOverTheirLimitAreRefusedBeforeR
 }
 
 }  // namespace
+
+// With --json an error printed nothing on stdout: a pipeline parsing it got no document. It is now
+// {"error": message} on stdout (and the message on stderr), exit status 1.
+TEST(Regression, AnErrorUnderJsonIsAJsonObjectOnStdout) {
+  using wattswath::test::run;
+  const auto r = run(wattswath::test::cliBinary() + " log info " + wattswath::test::sourcePath("tests/data/bad/log_empty.csv") +
+                     " --json 2>/dev/null");
+  EXPECT_EQ(r.status, 1);
+  const auto j = nlohmann::json::parse(r.output);
+  EXPECT_NE(j.at("error").get<std::string>().find("empty file (0 bytes)"), std::string::npos) << r.output;
+  // Without --json, stdout stays empty.
+  EXPECT_EQ(run(wattswath::test::cliBinary() + " log info " + wattswath::test::sourcePath("tests/data/bad/log_empty.csv") +
+                " 2>/dev/null")
+                .output,
+            "");
+}

@@ -4,8 +4,11 @@
 #include "wattswath/logs/autopilot_log.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -364,6 +367,20 @@ LogFormat detectLogFormat(const std::string& path) {
     return LogFormat::Ulog;
   if (n >= 2 && static_cast<unsigned char>(head[0]) == 0xA3 && static_cast<unsigned char>(head[1]) == 0x95)
     return LogFormat::DataFlash;
+  if (n == 0) throw std::runtime_error(path + ": empty file (0 bytes), expected a flight log (canonical CSV, ArduPilot .bin or PX4 .ulg)");
+  // A binary log's name with neither binary header: say so, rather than read it as a CSV.
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (ext == ".bin" || ext == ".ulg") {
+    char hex[8];
+    std::string first;
+    for (std::streamsize k = 0; k < std::min<std::streamsize>(n, 4); ++k) {
+      std::snprintf(hex, sizeof hex, "%s0x%02X", k ? " " : "", static_cast<unsigned char>(head[k]));
+      first += hex;
+    }
+    throw std::runtime_error(path + ": not an ArduPilot DataFlash (.bin) or PX4 ULog (.ulg) log: it begins with bytes " + first +
+                             ", expected 0xA3 0x95 (DataFlash) or \"ULog\" 0x01 0x12 0x35 (ULog)");
+  }
   return LogFormat::Csv;
 }
 
