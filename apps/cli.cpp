@@ -256,6 +256,7 @@ std::string stageOutput(const std::string& path, const std::function<void(const 
 OutputSet::OutputSet(const std::string& dir) : dir_(dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
+  created_ = !fs::exists(dir, ec);
   fs::create_directories(dir, ec);
   lock_fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (lock_fd_ < 0) throw std::runtime_error(dir + ": cannot open the output folder (" + std::strerror(errno) + ")");
@@ -288,6 +289,8 @@ OutputSet::~OutputSet() {
   g_output_set = previous_;
   guard_.reset();
   if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the lock
+  // A run that failed before committing leaves no folder it made (remove() takes only an empty one).
+  if (created_ && !committed_) std::filesystem::remove(dir_, ec);
 }
 
 void OutputSet::stage(const std::string& tmp, const std::string& target, int slot) { staged_.push_back({tmp, target, slot}); }
@@ -327,6 +330,7 @@ void OutputSet::commit() {
   syncFolder(dir_);
   removeCommitJournal(dir_);
   staged_.clear();
+  committed_ = true;
 }
 
 CLI::Option* addForceFlag(CLI::App* cmd, bool& force) {

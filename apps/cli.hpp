@@ -76,6 +76,8 @@ class OutputSet {
     int slot;
   };
   std::string dir_;
+  bool created_ = false;    // this set made the folder
+  bool committed_ = false;  // commit() ran to its end
   int lock_fd_ = -1;
   OutputSet* previous_ = nullptr;
   std::vector<Staged> staged_;

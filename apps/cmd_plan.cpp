@@ -273,6 +273,8 @@ pl::Camera cameraOf(const PlanOpts& o) {
     const auto sensor = parsePair(o.sensor_mm, "--sensor-mm", "W,H in mm, e.g. 23.2,15.4");
     const auto image = o.image_px.empty() ? std::pair<double, double>{0, 0}
                                           : parsePair(o.image_px, "--image-px", "W,H in pixels, e.g. 5456,3632");
+    if (image.first != std::floor(image.first) || image.second != std::floor(image.second) || image.first > 1e6 || image.second > 1e6)
+      throw std::invalid_argument("--image-px " + o.image_px + ": expected whole numbers of pixels W,H (at most 1000000), e.g. 5456,3632");
     return pl::Camera::fromSensor(sensor.first, sensor.second, o.focal_mm, static_cast<int>(image.first),
                                   static_cast<int>(image.second));
   }
@@ -320,6 +322,10 @@ void setSpacing(const PlanOpts& o, PlanSetup& s) {
   s.photos = pl::photoGeometry(cam, pr.altitude, s.side_overlap, s.frontal_overlap);
   pr.footprint = s.photos->footprint_across_m;
   pr.spacing = s.photos->line_spacing_m;
+  if (pr.spacing > 1000.0)
+    throw std::invalid_argument("the camera at " + fixedText(pr.altitude, 1) + " m with side overlap " + fixedText(o.overlap, 2) +
+                                " gives sweep lines " + fixedText(pr.spacing, 0) + " m apart (footprint " + fixedText(pr.footprint, 0) +
+                                " m), more than the 1000 m planned: check --fov / --sensor-mm / --focal-mm and --altitude");
 }
 
 PlanSetup setUp(const PlanOpts& o) {
@@ -336,6 +342,10 @@ PlanSetup setUp(const PlanOpts& o) {
   pr.no_fly = s.area.no_fly;
   pr.altitude = o.altitude;
   setSpacing(o, s);
+  if (pr.altitude > 120.0)
+    s.notes.push_back("altitude " + fixedText(pr.altitude, 0) + " m above home: higher than the 120 m most rules allow (EU open "
+                      "category, US 400 ft) and than ArduPilot's default FENCE_ALT_MAX (100 m); the written geofence has no "
+                      "altitude limit, so check your vehicle's and your permission");
   const PlanWorkEstimate work = estimatePlanWork(pr.area, pr.no_fly, pr.spacing);
   progress(work.summary);
   checkPlanWork(work, pr.spacing, !o.sorties.sorties.empty(), o.allow_large, o.area, o.spacing <= 0.0);
@@ -724,7 +734,7 @@ void registerPlanCommand(CLI::App& app) {
   cmd->add_option("--no-fly", o->no_fly, "no-fly zone file(s)")->check(CLI::ExistingFile);
   addAreaSelectOptions(cmd, o->layer, o->where);
   cmd->add_option("--home", o->home, "take-off point LAT,LON [deg] (default: the area file's home, else its first vertex)");
-  cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m]")->check(kPositive);
+  cmd->add_option("--spacing", o->spacing, "distance between sweep lines [m], (0, 1000]")->check(kPositive)->check(CLI::Range(0.0, 1000.0));
   cmd->add_flag("--allow-large", o->allow_large,
                 "Plan even when the area needs more than 5000 sweep lines at this spacing or has more than 1000 "
                 "vertices (refused by default: planning time and memory grow with them)");
@@ -734,13 +744,13 @@ void registerPlanCommand(CLI::App& app) {
       ->excludes(altitude);
   cmd->add_option("--trigger-interval", o->trigger_interval_s, "shortest time between photos the camera allows [s]: caps the sweep speed at trigger distance / interval")
       ->check(CLI::Range(0.01, 3600.0));
-  cmd->add_option("--fov", o->fov_deg, "camera field of view across track [deg]");
+  cmd->add_option("--fov", o->fov_deg, "camera field of view across track [deg], (0, 180)")->check(kPositive)->check(CLI::Range(0.0, 179.9));
   cmd->add_option("--fov-along", o->fov_along_deg, "camera field of view along track [deg] (default: --fov, a square footprint)")
       ->check(CLI::Range(0.0, 180.0));
   cmd->add_option("--sensor-mm", o->sensor_mm, "camera sensor width,height [mm], with --focal-mm (instead of --fov)");
   cmd->add_option("--focal-mm", o->focal_mm, "camera focal length [mm], with --sensor-mm")->check(kPositive);
   cmd->add_option("--image-px", o->image_px, "image width,height [px], with --sensor-mm: ground sampling distance");
-  cmd->add_option("--overlap", o->overlap, "side overlap between neighbouring swaths, fraction in [0, 1)");
+  cmd->add_option("--overlap", o->overlap, "side overlap between neighbouring swaths, fraction in [0, 1)")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--frontal-overlap", o->frontal_overlap,
                   "overlap between consecutive photos along a sweep, fraction in [0, 1) (default: --overlap); sets the "
                   "camera trigger distance")

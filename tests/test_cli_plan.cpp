@@ -301,6 +301,15 @@ TEST(CliPlan, ClearErrors) {
   expectError(base + " --altitude 50 --sensor-mm 23.2,15.4 --overlap 0.7", "--focal-mm");
   expectError(base + " --altitude 50 --fov 60 --focal-mm 16 --sensor-mm 23.2,15.4 --overlap 0.7", "not both");
   expectError(base + " --spacing 10 --no-fly-margin -1", "no-fly-margin");
+  // Each names the option and the value (fresh-eyes review: an internal SurveyProblem message, a
+  // missing-option message for a negative overlap, a generic one for --fov 0, 5456.9 px truncated).
+  expectError(base + " --spacing 1e6", "--spacing: Value 1e6 not in range");
+  expectError(base + " --fov 0 --overlap 0.5", "--fov: expected a number > 0, got 0");
+  expectError(base + " --fov 70 --overlap -0.2", "--overlap: Value -0.2 not in range");
+  expectError(base + " --altitude 30 --sensor-mm 13.2,8.8 --focal-mm 8.8 --image-px 5456.9,3632 --overlap 0.7",
+              "--image-px 5456.9,3632: expected whole numbers of pixels");
+  expectError(base + " --fov 170 --overlap 0.1 --altitude 900", "gives sweep lines 18517 m apart");
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::temp_directory_path() / "wattswath_test_plan_errors"));  // none left
   // Home on the IRIS+ area's no-fly zone (a vertex of it): inside the margin.
   expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --spacing 15 --out " +
                   outDir("errors3") + " --home 43.7159,10.461794",
