@@ -47,7 +47,10 @@ bool airborne(const logs::FlightLog& log, double t) {
 }
 
 nlohmann::json rangeJson(Range r) {
-  nlohmann::json j = {{"min", r.min}, {"max", r.max}};
+  // No finite value (a current that is not measured): null, not an infinite "number".
+  const bool any = std::isfinite(r.min) && std::isfinite(r.max);
+  nlohmann::json j = {{"min", any ? nlohmann::json(r.min) : nlohmann::json(nullptr)},
+                      {"max", any ? nlohmann::json(r.max) : nlohmann::json(nullptr)}};
   if (!r.air.empty()) {
     std::nth_element(r.air.begin(), r.air.begin() + static_cast<std::ptrdiff_t>(r.air.size() / 2), r.air.end());
     j["median_airborne"] = r.air[r.air.size() / 2];

@@ -42,7 +42,8 @@ std::string logEventName(int id) {
 void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& raw) {
   std::vector<Battery> found;
   std::string untimed;
-  for (const std::string name : {"BAT", "BAT2", "CURR", "CURR2"}) {
+  // CUR2: the second battery of ArduCopter 3.4-3.6 (LogStructure.h LOG_CURRENT2_MSG).
+  for (const std::string name : {"BAT", "BAT2", "CURR", "CURR2", "CUR2"}) {
     if (L.has(name, "Volt") && L.has(name, "Curr") && !L.hasTime(name)) untimed += (untimed.empty() ? "" : ", ") + name;
     if (!L.has(name, "Volt") || !L.has(name, "Curr") || !L.hasTime(name)) continue;
     const auto t = L.times(name);
@@ -75,18 +76,25 @@ void dataflashBattery(const dataflash::Log& L, const LogReadOptions& opt, Raw& r
       found.push_back(bb);
     }
   }
-  raw.meta["battery_candidates"] = "BAT, BAT2, CURR, CURR2 with Volt and Curr";
+  raw.meta["battery_candidates"] = "BAT, BAT2, CURR, CURR2, CUR2 with Volt and Curr";
   if (!untimed.empty()) {
     raw.meta["battery_candidates"] += " and a timestamp; " + untimed + " here without one (ArduCopter <= 3.1), which cannot be placed in time";
   }
+  // By default the first with a voltage, preferring one whose current is measured (a monitor without
+  // a current sensor logs NaN): the power of a voltage-only monitor is unknown.
+  const auto measuresCurrent = [](const Battery& bb) {
+    return std::count_if(bb.i.begin(), bb.i.end(), [](double x) { return std::isfinite(x); }) * 2 > static_cast<long>(bb.i.size());
+  };
+  const bool any_current = std::any_of(found.begin(), found.end(), [&](const Battery& bb) { return median(bb.v) > 1.0 && measuresCurrent(bb); });
   bool chosen = false;
   for (auto& bb : found) {
-    const bool ok = opt.battery_instance >= 0 ? bb.instance == opt.battery_instance : median(bb.v) > 1.0;
+    const bool ok = opt.battery_instance >= 0 ? bb.instance == opt.battery_instance
+                                              : median(bb.v) > 1.0 && (!any_current || measuresCurrent(bb));
     if (ok && !chosen) {
       raw.battery = bb;
       chosen = true;
     } else {
-      raw.battery_others.push_back(bb.label + (median(bb.v) > 1.0 ? "" : ", no voltage"));
+      raw.battery_others.push_back(bb.label + (median(bb.v) > 1.0 ? (measuresCurrent(bb) ? "" : ", current not measured") : ", no voltage"));
     }
   }
   if (!chosen && !found.empty())

@@ -138,6 +138,23 @@ TEST(DataFlash, AGapInThePositionsIsSaid) {
   EXPECT_EQ(wattswath::logs::readDataFlashBytes(full, "full.bin", {}).metadata.count("warnings"), 0u);
 }
 
+// A monitor without a current sensor logs Curr as NaN: a battery whose current is measured is taken
+// first (instance 0 here reads 22.2 V and NaN A; it was chosen, and every later power unknown).
+TEST(DataFlash, ABatteryWhoseCurrentIsMeasuredIsPreferred) {
+  Bytes b = modernDataFlash();
+  for (std::size_t k = 0; k + 19 < b.size(); ++k) {
+    if (b[k] == 0xA3 && b[k + 1] == 0x95 && b[k + 2] == 150 && b[k + 11] == 0) {
+      const float volt = 22.2f, curr = std::nanf("");
+      std::memcpy(&b[k + 12], &volt, sizeof volt);
+      std::memcpy(&b[k + 16], &curr, sizeof curr);
+    }
+  }
+  const auto log = wattswath::logs::readDataFlashBytes(b, "nan-current.bin", {});
+  EXPECT_NE(log.metadata.at("battery_source").find("BAT instance 1"), std::string::npos) << log.metadata.at("battery_source");
+  EXPECT_NE(log.metadata.at("battery_sources_not_used").find("BAT instance 0 (201 samples), current not measured"), std::string::npos)
+      << log.metadata.at("battery_sources_not_used");
+}
+
 TEST(DataFlash, BatteryInstanceOptionAndWindow) {
   wattswath::logs::LogReadOptions o;
   o.battery_instance = 0;  // chosen explicitly, even though it reads 0 V
