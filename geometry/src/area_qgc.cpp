@@ -3,7 +3,9 @@
 // `.poly`. Each gives a RawArea in lon/lat, labelled for messages (area_internal.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include <GeographicLib/Geodesic.hpp>
@@ -131,6 +133,62 @@ RawArea parseQgcPlan(const std::string& text, const std::string& source) {
 }
 
 namespace {
+/// True when (x, y) lies inside the ring `r` (even-odd rule; lon/lat as plane coordinates, which is
+/// exact enough for a fence a few kilometres across).
+bool insideRing(const Ring& r, double x, double y) {
+  bool in = false;
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+    if ((r[i].y() > y) != (r[j].y() > y) && x < (r[j].x() - r[i].x()) * (y - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x()) in = !in;
+  }
+  return in;
+}
+
+/// [m] a survey point this close to a fence's edge counts as inside it (a fence drawn on the survey).
+constexpr double kOnFenceM = 0.5;
+
+/// Distance [m] from (x = lon, y = lat) to the ring's edges, on a local equirectangular plane.
+double metresToRing(const Ring& r, double x, double y) {
+  const double my = 111320.0, mx = my * std::cos(y * M_PI / 180.0);
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < r.size(); ++i) {
+    const Point& a = r[i];
+    const Point& b = r[(i + 1) % r.size()];
+    const double ax = (a.x() - x) * mx, ay = (a.y() - y) * my, bx = (b.x() - x) * mx, by = (b.y() - y) * my;
+    const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+    const double t = len2 > 0.0 ? std::clamp(-(ax * dx + ay * dy) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(ax + t * dx, ay + t * dy));
+  }
+  return best;
+}
+
+/// A survey whose boundary leaves every inclusion fence of the same plan would be flown into the
+/// fence (the autopilot's fence action): refused, naming the survey point outside (its edges are
+/// checked at 50 points each). QGroundControl keeps the two apart; the vehicle enforces the fence.
+void checkSurveyInsideFences(const std::vector<LabeledPolygon>& surveys, const std::vector<LabeledPolygon>& fences,
+                             const std::string& source) {
+  constexpr int kSteps = 50;
+  for (const auto& s : surveys) {
+    const Ring& r = s.outer.pts;
+    for (size_t i = 0; i < r.size(); ++i) {
+      const Point& a = r[i];
+      const Point& b = r[(i + 1) % r.size()];
+      for (int k = 0; k < kSteps; ++k) {
+        const double f = static_cast<double>(k) / kSteps;
+        const double x = a.x() + f * (b.x() - a.x()), y = a.y() + f * (b.y() - a.y());
+        const bool held = std::any_of(fences.begin(), fences.end(), [&](const LabeledPolygon& g) {
+          return insideRing(g.outer.pts, x, y) || metresToRing(g.outer.pts, x, y) <= kOnFenceM;
+        });
+        if (held) continue;
+        char where[96];
+        std::snprintf(where, sizeof where, "%.7f, %.7f", y, x);
+        fail(source, s.outer.name + " reaches outside the plan's inclusion geofence (at " + std::string(where) + ", " +
+                         (k == 0 ? s.outer.labels[i] : "on the edge after " + s.outer.labels[i]) +
+                         "): the vehicle would meet its fence there; move the survey inside the fence, or the fence out");
+      }
+    }
+  }
+}
+
 RawArea qgcPlan(const json& j, const std::string& source) {
   if (!j.is_object() || !j.contains("fileType") || j["fileType"] != "Plan") {
     fail(source, "not a QGroundControl plan (expected a JSON object with \"fileType\": \"Plan\")");
@@ -153,7 +211,10 @@ RawArea qgcPlan(const json& j, const std::string& source) {
     if (!inclusions.empty()) out.notes.push_back(source + ": no survey item; the area is the geofence's inclusion polygon(s)");
     out.polygons = std::move(inclusions);
   } else if (!inclusions.empty()) {
-    out.notes.push_back(source + ": " + std::to_string(inclusions.size()) + " inclusion fence(s) not used as area (the survey polygons are)");
+    checkSurveyInsideFences(out.polygons, inclusions, source);
+    out.notes.push_back(source + ": " + std::to_string(inclusions.size()) +
+                        " inclusion fence(s) hold the survey polygons, which are the area; the fence mission.plan is "
+                        "written with is wattswath's own (around the area), not these");
   }
   return out;
 }

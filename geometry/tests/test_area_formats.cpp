@@ -255,6 +255,29 @@ TEST(AreaFormats, QgcPlanInclusionFenceIsTheAreaAndCirclesArePolygons) {
   fs::remove_all(d);
 }
 
+// A survey that reaches outside the plan's own inclusion fence would fly into the fence: refused,
+// naming where (the fence was dropped with a note and the mission flew 80 m past it). A fence around
+// the survey, or drawn on it, holds it.
+TEST(AreaFormats, ASurveyOutsideThePlansInclusionFenceIsRefused) {
+  const fs::path d = tempDir("plan_fence");
+  const auto fence = [](double lat_max, double lon_max) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, R"({"inclusion":true,"version":1,"polygon":[[42.9999,9.9999],[42.9999,%.4f],[%.4f,%.4f],[%.4f,9.9999]]})",
+                  lon_max, lat_max, lon_max, lat_max);
+    return std::string(buf);
+  };
+  writeFile(d / "small.plan", qgcPlan(kSurvey, fence(43.0012, 10.0021), ""));
+  EXPECT_NE(errorOf((d / "small.plan").string()).find("polygon reaches outside the plan's inclusion geofence (at 43.0012400, 10.0020000, on the edge after vertex 1)"),
+            std::string::npos)
+      << errorOf((d / "small.plan").string());
+  writeFile(d / "around.plan", qgcPlan(kSurvey, fence(43.0021, 10.0021), ""));
+  EXPECT_NO_THROW(geo::readSurveyArea((d / "around.plan").string()));
+  const std::string on = R"({"inclusion":true,"version":1,"polygon":[[43.0,10.0],[43.0,10.002],[43.002,10.002],[43.002,10.0]]})";
+  writeFile(d / "on.plan", qgcPlan(kSurvey, on, ""));
+  EXPECT_NO_THROW(geo::readSurveyArea((d / "on.plan").string()));
+  fs::remove_all(d);
+}
+
 TEST(AreaFormats, QgcPlanErrorsNameTheField) {
   const fs::path d = tempDir("plan_bad");
   writeFile(d / "lonlat.plan", qgcPlan(R"({"type":"ComplexItem","complexItemType":"survey","polygon":[[43.0,"x"]]})", "", ""));
