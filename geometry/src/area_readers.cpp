@@ -358,13 +358,32 @@ SurveyArea parseSurveyArea(const std::string& text, const std::string& source, c
 }
 
 SurveyArea readSurveyArea(const std::string& path, const ReadOptions& options) {
-  SurveyArea area = buildArea(readAny(path, options), path, options);
+  RawArea raw = readAny(path, options);
+  if (!options.layer.empty() || !options.where.empty()) {
+    // --layer / --where choose the area; the file's no-fly zones stay no-fly zones whatever was
+    // chosen (a filter on the field's name dropped the zone "Mast" of the layer "nofly" unsaid).
+    ReadOptions all = options;
+    all.layer.clear();
+    all.where.clear();
+    RawArea every = readAny(path, all);
+    if (every.no_fly.size() > raw.no_fly.size()) {
+      raw.notes.push_back(path + ": " + std::to_string(every.no_fly.size()) + " no-fly zone(s) read from the whole file, not "
+                          "only from what --layer / --where chose");
+      raw.no_fly = std::move(every.no_fly);
+    }
+  }
+  SurveyArea area = buildArea(std::move(raw), path, options);
   for (const auto& f : options.no_fly_files) subtractNoFlyZones(area, readNoFlyZones(f, area, options));
   return area;
 }
 
 NoFlyZones readNoFlyZones(const std::string& path, const SurveyArea& area, const ReadOptions& options) {
-  RawArea raw = readAny(path, options);
+  // --layer / --where choose the area in the area file; a no-fly file is read whole (with them it
+  // read the chosen field itself as a no-fly zone, or failed on a layer it does not have).
+  ReadOptions whole = options;
+  whole.layer.clear();
+  whole.where.clear();
+  RawArea raw = readAny(path, whole);
   std::vector<LabeledPolygon> all = std::move(raw.polygons);
   for (auto& p : raw.no_fly) all.push_back(std::move(p));
   if (all.empty()) throw SurveyAreaError(path + ": no polygon found (expected at least one no-fly zone)");

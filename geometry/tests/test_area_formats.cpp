@@ -118,6 +118,30 @@ TEST(AreaFormats, LayerAndWhereChooseFeatures) {
   fs::remove_all(d);
 }
 
+// --layer / --where choose the area; the file's no-fly zones (here in a layer "nofly", whose feature
+// the filter does not match) and a no-fly file are read whole: the zone was dropped unsaid, and a
+// no-fly file was filtered too (failing on a layer it does not have).
+TEST(AreaFormats, LayerAndWhereChooseTheAreaNotTheNoFlyZones) {
+  const fs::path d = tempDir("layer_nofly");
+  const fs::path gpkg = d / "fields.gpkg", zone = d / "zone.geojson";
+  writeFile(zone, R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{"role":"no_fly","name":"Mast"},
+    "geometry":{"type":"Polygon","coordinates":[[[10.46140,43.71540],[10.46150,43.71540],[10.46150,43.71548],[10.46140,43.71548],[10.46140,43.71540]]]}}]})");
+  ogr2ogr("-f GPKG -nln fields", gpkg, kIris);
+  ogr2ogr("-f GPKG -update -nln nofly", gpkg, zone.string());
+  geo::ReadOptions o;
+  o.layer = "fields";
+  o.where = "role = 'area'";
+  const geo::SurveyArea a = geo::readSurveyArea(gpkg.string(), o);
+  EXPECT_EQ(a.no_fly.size(), 1U);
+  std::string notes;
+  for (const auto& n : a.repairs) notes += n + "\n";
+  EXPECT_NE(notes.find("no-fly zone(s) read from the whole file"), std::string::npos) << notes;
+  // A no-fly file without the area's layer is read whole.
+  o.no_fly_files = {zone.string()};
+  EXPECT_NO_THROW(geo::readSurveyArea(gpkg.string(), o));
+  fs::remove_all(d);
+}
+
 // A plan's GeoPackage (plan --gpkg) holds its legs as lines beside the area: read back without
 // --layer, the area is read and the line layer skipped with a note naming it (it failed on the lines).
 TEST(AreaFormats, AGeoPackageWithALineLayerBesideTheAreaReadsTheArea) {

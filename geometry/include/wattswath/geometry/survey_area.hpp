@@ -117,7 +117,8 @@ struct NoFlyZones {
 };
 
 /// Reads a file of no-fly zones (every polygon in it, in any format above; a QGC file's rows 1..n
-/// are one zone) and projects it into `area`'s frame. Throws SurveyAreaError naming the file.
+/// are one zone) and projects it into `area`'s frame; `options`' layer and where choose the area
+/// only, a no-fly file is read whole. Throws SurveyAreaError naming the file.
 NoFlyZones readNoFlyZones(const std::string& path, const SurveyArea& area, const ReadOptions& options = {});
 
 /// Subtracts no-fly zones [m] from `area` (CGAL Boolean operations): a zone inside becomes a hole,
