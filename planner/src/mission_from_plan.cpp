@@ -173,7 +173,12 @@ MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& 
         if (b.out.waypoints.empty()) b.add(leg.start, planned, -1);  // a sweep from home: camera on at its start
         b.out.waypoints.back().camera_trigger_m = options.trigger_distance_m;
       } else if (!sweep && camera_on) {
-        b.out.waypoints.back().camera_trigger_m = 0.0;
+        auto& last = b.out.waypoints.back().camera_trigger_m;
+        // A run whose sweep was merged into the waypoint that turned the camera on (a stub under
+        // kMinWaypointSpacing) flies nowhere: no command at all, not "on" overwritten by "off",
+        // which left a stray "off" and an uncounted photo.
+        if (last && *last > 0.0) last.reset();
+        else last = 0.0;
       }
       camera_on = sweep;
     }

@@ -135,6 +135,37 @@ TEST(MissionFromPlan, EarlySpeedsKeepACameraLegAtItsOwnSpeed) {
   EXPECT_DOUBLE_EQ(*m.waypoints[2].camera_trigger_m, 0.0);
 }
 
+// A sweep stub shorter than the least waypoint spacing is merged into the waypoint that turned the
+// camera on: that run takes no photo and writes no command, where "on" was overwritten by "off"
+// (a stray DO_SET_CAM_TRIGG_DIST 0 with no "on" before it, and a photo the count missed).
+TEST(MissionFromPlan, AMergedSweepStubWritesNoStrayCameraOff) {
+  const auto f = flown({line({0, -20}, {0, 0}, LegRole::Transit),     // 0: to the stub
+                        line({0, 0}, {0.3, 0}),                         // 1: a 0.3 m sweep, merged
+                        line({0.3, 0}, {0, 20}, LegRole::Turn),         // 2
+                        line({0, 20}, {100, 20}),                       // 3: a real sweep
+                        line({100, 20}, {100, 40}, LegRole::Transit)},  // 4
+                       {8.0, 5.0, 5.0, 5.0, 8.0});
+  MissionOptions o;
+  o.trigger_distance_m = 10.0;
+  const auto m = missionWaypoints(f, o);
+  bool on = false;
+  int runs = 0;
+  for (const auto& w : m.waypoints) {
+    if (!w.camera_trigger_m) continue;
+    if (*w.camera_trigger_m > 0.0) {
+      EXPECT_FALSE(on);
+      on = true;
+      ++runs;
+    } else {
+      EXPECT_TRUE(on) << "a camera off with no camera on before it";
+      on = false;
+    }
+  }
+  EXPECT_FALSE(on);
+  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(m.camera_runs, 1);
+}
+
 TEST(MissionFromPlan, ExampleAreaMissionHasNoPlaceholderSpeedsOrDegenerateWaypoints) {
   // scripts/example.sh: the bundled IRIS+ area with its no-fly zone, 15 m spacing.
   const auto area = geometry::readSurveyArea(test::sourcePath("data/areas/iris_area.geojson"));
