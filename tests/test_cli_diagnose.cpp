@@ -24,6 +24,16 @@ std::string tempPath(const std::string& name) {
   return (dir / name).string();
 }
 
+// Five samples (4 s of an IRIS+ flight) read "nothing_missing: the residual carries none of the
+// tested signals" with no signal tested; too little data gets no verdict, in words and in --json.
+TEST(CliDiagnose, FiveSamplesCannotTell) {
+  const Outcome r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--log", "tests/data/iris_short5.csv", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("verdict"), "cannot_tell") << j.at("conclusion");
+  EXPECT_NE(j.at("conclusion").get<std::string>().find("The data cannot tell: 5 airborne samples"), std::string::npos);
+}
+
 TEST(CliDiagnose, UserEffectTurnsUnexplainedIntoFound) {
   const std::string log = tempPath("heated.csv");
   Outcome r = runCli({"simulate", "--vehicle", "data/vehicles/iris.json", "--effects",

@@ -175,6 +175,9 @@ double rmsOf(const std::vector<double>& r) {
   return r.empty() ? 0.0 : std::sqrt(s / r.size());
 }
 
+/// [-] samples below which a diagnosis gives no verdict.
+constexpr double kMinDiagnosisSamples = 30.0;
+
 // The verdict from the found effects and the structure the final residual keeps: a significant
 // signature, or a variance above the white noise's by more than about 4 standard errors of the
 // noise estimate (6 / sqrt(n) relative: the median-difference estimate has about 1.5 / sqrt(n)).
@@ -184,6 +187,16 @@ void conclude(Diagnosis& d) {
     if (g.significant) sig.push_back(&g);
   size_t n = 0;
   for (const auto& p : d.final_power) n += p.size();
+  // Too little data to test anything: no verdict (5 samples read "nothing is missing" with no signal
+  // tested). (The residual's correlation time is no guide here: a missing effect lengthens it.)
+  if (d.signatures.empty() || static_cast<double>(n) < kMinDiagnosisSamples) {
+    d.verdict = "cannot_tell";
+    d.conclusion = "The data cannot tell: " + std::to_string(n) + " airborne samples" +
+                   (d.signatures.empty() ? std::string(", and no signal of the residual could be tested")
+                                         : ", fewer than the " + num(kMinDiagnosisSamples, 2) + " needed to test the residual's signals") +
+                   "; give longer logs, or more of them.";
+    return;
+  }
   const double ratio = d.noise_w > 0.0 ? d.final_rmse_w / d.noise_w : 1.0;
   const bool excess = ratio * ratio - 1.0 > 6.0 / std::sqrt(std::max<double>(1.0, static_cast<double>(n)));
   const std::string noise = "residual " + num(d.final_rmse_w, 3) + " W against a white noise of " + num(d.noise_w, 3) +

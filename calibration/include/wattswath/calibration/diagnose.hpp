@@ -139,7 +139,8 @@ struct Diagnosis {
   std::vector<LogReplay> physics_replay;    ///< the model as given, per log (for plots)
   std::vector<ResidualTable> residuals;     ///< residual tables of the model as given
   /// "missing_effect" (found effects leave no structure), "nothing_missing" (no effect kept, no
-  /// structure) or "unexplained" (a structure remains that no candidate explains)
+  /// structure), "unexplained" (a structure remains that no candidate explains) or "cannot_tell"
+  /// (too few independent samples, or no signal could be tested: no verdict)
   std::string verdict;
   std::vector<CandidateResult> found;       ///< the kept effects in the order they were added
   std::vector<std::string> search;          ///< the greedy search step by step, in words
