@@ -131,3 +131,13 @@ TEST(ReplayLimits, SamplesOutsideTheReadersAirborneWindowsAreOnTheGround) {
   for (int i = 0; i < 100; ++i) EXPECT_FALSE(p.states[static_cast<size_t>(i)].airborne) << i;
   EXPECT_TRUE(p.states[150].airborne);
 }
+
+// One empty yaw_rad cell switched the whole log's heading from the logged yaw to the track (flying
+// east, pointing north here); now that sample holds the last logged yaw and the rest keep theirs.
+TEST(ReplayLimits, OneMissingYawDoesNotSwitchTheLogToTheTrack) {
+  auto log = levelFlight(100, [](int) { return 5.0; });
+  for (auto& s : log.samples) s.yaw = M_PI / 2;
+  log.samples[50].yaw = std::nan("");
+  const auto p = cal::prepareLog(log);
+  for (const auto& m : p.states) EXPECT_NEAR(m.heading, M_PI / 2, 1e-12) << m.t;
+}
