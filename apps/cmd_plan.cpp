@@ -208,7 +208,9 @@ void printPlanText(const pl::PlanResult& r, const PlanFlight& flight, double who
   std::cout << "plan: " << r.plan.pattern;
   if (r.plan.pattern != "spiral") std::cout << " at " << std::setprecision(0) << r.plan.sweep_angle_deg << " deg";
   std::cout << std::setprecision(1) << ", coverage " << r.plan.coverage_pct << " %";
-  if (margin > 0.0) std::cout << " (" << whole_area_pct << " % counting the no-fly margin band as area)";
+  if (margin > 0.0)
+    std::cout << " of the area planned (" << whole_area_pct << " % of the area outside the no-fly zones, the margin band"
+              << (whole_area_pct < 90.0 ? " and any part the margin cut off" : "") << " included)";
   std::cout << "\n";
   printFlight(flight);
   // The battery as predict gives it for mission.plan (its verdict, with --energy-margin).
@@ -617,7 +619,10 @@ void runPlan(const PlanOpts& o) {
   const auto marins = energy::marinsModel(vehicle);
   const auto model = wind ? energy::withWind(marins, vehicle, wind->air().x(), wind->air().y()) : marins;
   if (wind) s.notes.push_back("wind: " + wind->text() + "; the sweep direction and speeds are chosen for it");
+  const std::size_t notes_before = s.notes.size();
   const auto flown_pr = pl::withNoFlyMargin(pr, o.no_fly_margin, &s.notes);
+  for (std::size_t k = notes_before; k < s.notes.size(); ++k)
+    if (s.notes[k].rfind("WARNING", 0) == 0) progress(s.notes[k]);  // at once, not only at the end
   auto r = pl::planCoverage(flown_pr, vehicle, model, ps, [](const std::string& line) { progress(line); });
 
   pl::FlightScoring scoring = flightScoring(o, s, vehicle, wind);

@@ -460,6 +460,19 @@ TEST(CliPlan, AFlightThatRunsOutIsSaidToReachTheCutOffNotToLand) {
   EXPECT_LT(page.find("<dt>battery verdict</dt>"), page.find("<dt>battery cut-off</dt>"));
 }
 
+// A no-fly zone 1.5 m from the edge with the 2 m margin cuts the area in two: the part left unplanned
+// is a WARNING (on stderr at once and among the notes) and the headline coverage says of what (it
+// read "coverage 100.0 % (56.1 % counting the no-fly margin band as area)").
+TEST(CliPlan, AnAreaTheMarginCutsInTwoIsAWarning) {
+  const auto out = outDir("margin_cut");
+  const auto r = run(cliBinary() + " plan " + sourcePath("tests/data/areas/rect_200x100.geojson") + " --no-fly " +
+                     sourcePath("tests/data/areas/nofly_gap_1p5m.geojson") + " --vehicle " + iris() +
+                     " --spacing 15 --no-report --out " + out + " 2>&1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("WARNING: the no-fly margin of 2.00 m cuts the area into 2 parts"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("of the area planned (56.1 % of the area outside the no-fly zones"), std::string::npos) << r.output;
+}
+
 // One flight model for planning and prediction (issue 17): `predict` on the mission.plan and the
 // mission.waypoints that `plan` wrote gives the energy and time the plan reports, within 1 %, for
 // an ArduCopter 4.x vehicle (S-curve model) and the calibrated ArduCopter 3.x IRIS+ (leash model);

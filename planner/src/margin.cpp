@@ -115,8 +115,9 @@ SurveyProblem withNoFlyMargin(const SurveyProblem& problem, double margin_m, std
   if (parts.size() > 1 && notes) {
     double left = 0.0;
     for (size_t i = 1; i < parts.size(); ++i) left += geo::area(parts[i]);
-    notes->push_back("the no-fly margin of " + metres(margin_m) + " m cuts the area into " + std::to_string(parts.size()) +
-                     " parts; the largest is covered, " + metres(left) + " m^2 in the others is not");
+    notes->push_back("WARNING: the no-fly margin of " + metres(margin_m) + " m cuts the area into " + std::to_string(parts.size()) +
+                     " parts; the largest is covered, " + metres(left) + " m^2 in the others is NOT (plan them from "
+                     "their own area file, or lower --no-fly-margin)");
   }
   return out;
 }
