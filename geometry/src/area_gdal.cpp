@@ -72,11 +72,27 @@ std::string typeName(const OGRGeometry& g) {
   return n;
 }
 
+/// [-] a line whose ends are farther apart than this share of its length is a path, not an outline.
+constexpr double kOpenLineShare = 0.05;
+
 /// Lines (GPX tracks and routes, KML LineStrings) are rings: each line one ring, holes found by
 /// containment (OGRGeometryFactory::organizePolygons), so a track of outline + obstacle works.
 void addLines(const OGRGeometry& g, const std::string& name, OgrTarget& fc) {
   std::vector<OGRGeometry*> polys;
   auto addLine = [&](const OGRLineString& l) {
+    // An outline walked or drawn ends near its start; a path that does not (a power line, a route)
+    // is no area: left out, said (closing it made a triangle of a path).
+    const int n = l.getNumPoints();
+    double length = 0.0;
+    const double my = 111320.0, mx = my * std::cos(l.getY(0) * M_PI / 180.0);
+    for (int k = 1; k < n; ++k) length += std::hypot((l.getX(k) - l.getX(k - 1)) * mx, (l.getY(k) - l.getY(k - 1)) * my);
+    const double gap = n > 0 ? std::hypot((l.getX(n - 1) - l.getX(0)) * mx, (l.getY(n - 1) - l.getY(0)) * my) : 0.0;
+    if (n < 3 || gap > kOpenLineShare * length) {
+      fc.out.notes.push_back(fc.source + ": " + name + ": an open line (its ends " + std::to_string(static_cast<long>(std::lround(gap))) +
+                             " m apart, " + std::to_string(static_cast<long>(std::lround(length))) +
+                             " m long) is not an area outline; ignored");
+      return;
+    }
     auto* ring = new OGRLinearRing();
     ring->addSubLineString(&l);
     ring->closeRings();
@@ -89,7 +105,7 @@ void addLines(const OGRGeometry& g, const std::string& name, OgrTarget& fc) {
   } else {
     for (const auto* l : *g.toMultiLineString()) addLine(*l);
   }
-  if (polys.empty()) fail(fc.source, name + ": empty line geometry");
+  if (polys.empty()) return;  // every line open: each said above
   int valid = 0;
   std::unique_ptr<OGRGeometry> organized(
       OGRGeometryFactory::organizePolygons(polys.data(), static_cast<int>(polys.size()), &valid, nullptr));
@@ -203,6 +219,9 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
     if (ct && g->transform(ct.get()) != OGRERR_NONE) fail(source, name + ": cannot reproject to WGS84" + gdalSays());
     std::string role = fieldText(*feature, "role");
     if (role.empty()) role = fieldText(*feature, "name");
+    // A layer named as no-fly zones (a KML folder "No-fly zones", a GeoPackage layer "obstacles")
+    // makes its features no-fly zones, whatever their own names.
+    if (!isNoFlyName(role) && lowerAscii(role) != "home" && isNoFlyName(layer.GetName())) role = layer.GetName();
     OgrTarget target{source, role, sel.strict, out, vertices};
     addGeometry(*g, name, target, 0);
     if (sel.strict) CPLErrorReset();

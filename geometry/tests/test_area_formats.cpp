@@ -142,6 +142,20 @@ TEST(AreaFormats, LayerAndWhereChooseTheAreaNotTheNoFlyZones) {
   fs::remove_all(d);
 }
 
+// Google Earth: a placemark in a folder named "No-fly zones" is a no-fly zone whatever its own name
+// (it was a second area part, "area polygons 0 and 1 overlap"); a drawn path (an open LineString) is
+// no area outline and is left out with a note (it was closed into a triangle).
+TEST(AreaFormats, GoogleEarthFoldersAndPaths) {
+  const auto folder = geo::readSurveyArea(sourcePath("tests/data/areas/ge_folder_nofly.kml"));
+  ASSERT_EQ(folder.regions.size(), 1U);
+  EXPECT_EQ(folder.regions.front().holes.size(), 2U);
+  const auto path = geo::readSurveyArea(sourcePath("tests/data/areas/ge_with_path.kml"));
+  ASSERT_EQ(path.regions.size(), 1U);
+  std::string notes;
+  for (const auto& n : path.repairs) notes += n + "\n";
+  EXPECT_NE(notes.find("an open line (its ends 321 m apart, 803 m long) is not an area outline; ignored"), std::string::npos) << notes;
+}
+
 // A plan's GeoPackage (plan --gpkg) holds its legs as lines beside the area: read back without
 // --layer, the area is read and the line layer skipped with a note naming it (it failed on the lines).
 TEST(AreaFormats, AGeoPackageWithALineLayerBesideTheAreaReadsTheArea) {
