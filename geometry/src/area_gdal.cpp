@@ -187,7 +187,8 @@ void noGeometry(long index, const std::string& name, const std::string& source, 
   fail(source, name + ": " + (why.empty() ? "GDAL could not read it whole" + gdalSays() : why));
 }
 
-void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, RawArea& out, size_t& vertices) {
+void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, RawArea& out, size_t& vertices,
+               bool layer_is_role) {
   const std::string lname = "layer \"" + std::string(layer.GetName()) + "\"";
   if (!sel.where.empty() && layer.SetAttributeFilter(sel.where.c_str()) != OGRERR_NONE) {
     fail(source, lname + ": --where \"" + sel.where + "\" is not a valid OGR SQL filter on its fields" + gdalSays());
@@ -220,8 +221,8 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
     std::string role = fieldText(*feature, "role");
     if (role.empty()) role = fieldText(*feature, "name");
     // A layer named as no-fly zones (a KML folder "No-fly zones", a GeoPackage layer "obstacles")
-    // makes its features no-fly zones, whatever their own names.
-    if (!isNoFlyName(role) && lowerAscii(role) != "home" && isNoFlyName(layer.GetName())) role = layer.GetName();
+    // makes its features no-fly zones, whatever their own names (`layer_is_role`: several layers).
+    if (layer_is_role && !isNoFlyName(role) && lowerAscii(role) != "home" && isNoFlyName(layer.GetName())) role = layer.GetName();
     OgrTarget target{source, role, sel.strict, out, vertices};
     addGeometry(*g, name, target, 0);
     if (sel.strict) CPLErrorReset();
@@ -297,9 +298,12 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
       for (auto* x : ds->GetLayers()) names += (names.empty() ? "" : ", ") + std::string(x->GetName());
       fail(source, "no layer named \"" + sel.layer + "\" (--layer); the file has: " + names);
     }
-    readLayer(*l, source, sel, out, vertices);
+    readLayer(*l, source, sel, out, vertices, false);
     return whereMatchedNothing(out);
   }
+  // In a file of several layers (KML folders, GeoPackage tables) a layer's name says what it holds;
+  // a one-layer file's layer is named after the file, which says nothing of the role.
+  const bool layer_is_role = sel.layer_in_names && ds->GetLayerCount() > 1;
   const bool gpx = std::string(ds->GetDriverName()) == "GPX";
   const bool lines_skipped = !gpx && hasAreaLayer(*ds);
   for (auto* l : ds->GetLayers()) {
@@ -310,7 +314,7 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
                           n + "\" reads its lines as closed rings)");
       continue;
     }
-    readLayer(*l, source, sel, out, vertices);
+    readLayer(*l, source, sel, out, vertices, layer_is_role);
   }
   return whereMatchedNothing(out);
 }

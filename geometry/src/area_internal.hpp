@@ -94,6 +94,7 @@ RawArea parseWithGdal(const std::string& bytes, const std::string& source, const
 /// Validates and repairs one labelled polygon in ENU metres (CGAL); returns repair notes.
 std::vector<std::string> validateLabeled(LabeledPolygon& poly, const std::string& source, const RepairSettings& s);
 /// Throws when two regions' interiors overlap.
-void checkRegionsDisjoint(const std::vector<PolygonWithHoles>& regions, const std::string& source);
+void checkRegionsDisjoint(const std::vector<PolygonWithHoles>& regions, const std::string& source,
+                          const std::vector<std::string>& names = {});
 
 }  // namespace wattswath::geometry::detail

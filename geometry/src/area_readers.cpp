@@ -335,13 +335,15 @@ SurveyArea buildArea(RawArea raw, const std::string& source, const ReadOptions& 
     if (area.frame) area.home = area.frame->toLocal(raw.home->lat_deg, raw.home->lon_deg);
     area.home_alt_m = raw.home->alt_m;
   }
+  std::vector<std::string> names;
   for (auto& p : raw.polygons) {
     projectPolygon(p, area.frame, raw.geodetic, source);
     auto notes = validateLabeled(p, source, options.repair);
     area.repairs.insert(area.repairs.end(), notes.begin(), notes.end());
     area.regions.push_back(toPolygon(p));
+    names.push_back(p.outer.name);
   }
-  checkRegionsDisjoint(area.regions, source);
+  checkRegionsDisjoint(area.regions, source, names);
   if (!raw.no_fly.empty()) {
     NoFlyZones zones;
     zones.source = source;

@@ -321,7 +321,9 @@ std::vector<std::string> validateLabeled(LabeledPolygon& poly, const std::string
   return notes;
 }
 
-void checkRegionsDisjoint(const std::vector<PolygonWithHoles>& regions, const std::string& source) {
+void checkRegionsDisjoint(const std::vector<PolygonWithHoles>& regions, const std::string& source,
+                          const std::vector<std::string>& names) {
+  const auto named = [&](size_t i) { return i < names.size() ? names[i] : "area polygon " + std::to_string(i); };
   std::vector<Pwh> ps;
   for (const auto& r : regions) ps.push_back(toPwh(r));
   std::vector<CGAL::Bbox_2> boxes;
@@ -329,8 +331,9 @@ void checkRegionsDisjoint(const std::vector<PolygonWithHoles>& regions, const st
   for (size_t i = 0; i < ps.size(); ++i) {
     for (size_t j = i + 1; j < ps.size(); ++j) {
       if (CGAL::do_overlap(boxes[i], boxes[j]) && CGAL::do_intersect(ps[i], ps[j])) {
-        throw SurveyAreaError(source + ": area polygons " + std::to_string(i) + " and " + std::to_string(j) +
-                              " overlap; the parts of a multi-polygon must be disjoint");
+        throw SurveyAreaError(source + ": " + named(i) + " and " + named(j) +
+                              " overlap; the parts of an area must be disjoint (merge them into one polygon, or mark one "
+                              "as a no-fly zone)");
       }
     }
   }

@@ -330,6 +330,12 @@ TEST(AreaFormats, QgcPlanErrorsNameTheField) {
   std::string v1_notes;
   for (const auto& n : v1.repairs) v1_notes += n + "\n";
   EXPECT_NE(v1_notes.find("geoFence version 1: its fences are not read"), std::string::npos) << v1_notes;
+  // Overlapping area parts are named (it said "area polygons 0 and 1 overlap").
+  const std::string a = R"({"inclusion":true,"version":1,"polygon":[[43.0,10.0],[43.0,10.002],[43.002,10.002],[43.002,10.0]]})";
+  const std::string b = R"({"inclusion":true,"version":1,"polygon":[[43.001,10.001],[43.001,10.003],[43.003,10.003],[43.003,10.001]]})";
+  writeFile(d / "overlap.plan", qgcPlan("", a + "," + b, ""));
+  EXPECT_NE(errorOf((d / "overlap.plan").string()).find("geoFence.polygons[0] and geoFence.polygons[1] overlap"), std::string::npos)
+      << errorOf((d / "overlap.plan").string());
   writeFile(d / "radius.plan", qgcPlan(kSurvey, "", R"({"inclusion":false,"circle":{"center":[43.001,10.001],"radius":-3}})"));
   EXPECT_NE(errorOf((d / "radius.plan").string()).find("geoFence.circles[0]: radius -3"), std::string::npos);
   fs::remove_all(d);
