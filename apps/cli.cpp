@@ -256,7 +256,11 @@ std::string stageOutput(const std::string& path, const std::function<void(const 
 OutputSet::OutputSet(const std::string& dir) : dir_(dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  created_ = !fs::exists(dir, ec);
+  // The folders this set makes (the leaf and any missing parents), removed again if it fails.
+  for (fs::path p = fs::absolute(dir, ec); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    made_.push_back(p);
+    if (p == p.parent_path()) break;
+  }
   fs::create_directories(dir, ec);
   lock_fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (lock_fd_ < 0) throw std::runtime_error(dir + ": cannot open the output folder (" + std::strerror(errno) + ")");
@@ -290,7 +294,8 @@ OutputSet::~OutputSet() {
   guard_.reset();
   if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the lock
   // A run that failed before committing leaves no folder it made (remove() takes only an empty one).
-  if (created_ && !committed_) std::filesystem::remove(dir_, ec);
+  if (!committed_)
+    for (const auto& p : made_) std::filesystem::remove(p, ec);
 }
 
 void OutputSet::stage(const std::string& tmp, const std::string& target, int slot) { staged_.push_back({tmp, target, slot}); }

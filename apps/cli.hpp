@@ -3,6 +3,7 @@
 /// Shared plumbing of the wattswath command-line tool: command registration, output, errors.
 /// Each subcommand lives in its own apps/cmd_*.cpp and exposes a register function.
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -76,7 +77,7 @@ class OutputSet {
     int slot;
   };
   std::string dir_;
-  bool created_ = false;    // this set made the folder
+  std::vector<std::filesystem::path> made_;  // folders this set made, deepest first
   bool committed_ = false;  // commit() ran to its end
   int lock_fd_ = -1;
   OutputSet* previous_ = nullptr;

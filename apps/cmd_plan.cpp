@@ -209,8 +209,7 @@ void printPlanText(const pl::PlanResult& r, const PlanFlight& flight, double who
   if (r.plan.pattern != "spiral") std::cout << " at " << std::setprecision(0) << r.plan.sweep_angle_deg << " deg";
   std::cout << std::setprecision(1) << ", coverage " << r.plan.coverage_pct << " %";
   if (margin > 0.0)
-    std::cout << " of the area planned (" << whole_area_pct << " % of the area outside the no-fly zones, the margin band"
-              << (whole_area_pct < 90.0 ? " and any part the margin cut off" : "") << " included)";
+    std::cout << " of the area planned (" << whole_area_pct << " % of the area outside the no-fly zones, the margin band included)";
   std::cout << "\n";
   printFlight(flight);
   // The battery as predict gives it for mission.plan (its verdict, with --energy-margin).
@@ -674,7 +673,9 @@ void runPlan(const PlanOpts& o) {
   }
   // Sortie files an earlier run left here would be flown with this mission's: refused, or with
   // --force removed once this run's files are in place.
-  const auto stale = staleSortieFiles(dir, split ? split->files : std::vector<std::string>{});
+  std::vector<std::string> inputs = {o.area, o.vehicle};
+  inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
+  const auto stale = staleSortieFiles(dir, split ? split->files : std::vector<std::string>{}, inputs);
   if (!stale.empty() && !o.force) {
     std::string list;
     for (const auto& f : stale) list += (list.empty() ? "" : ", ") + f;
@@ -778,7 +779,9 @@ void registerPlanCommand(CLI::App& app) {
                   "forecast gives it, e.g. 6,45: the search takes the drag at air speed and the finalists are flown in it "
                   "(default: still air)");
   cmd->add_option("--out", o->out, "output folder for mission.plan, mission.waypoints, path.geojson, legs.csv")->required();
-  cmd->add_flag("--force", o->force, "overwrite existing output files");
+  cmd->add_flag("--force", o->force,
+                "overwrite existing output files, and remove sortie files (sortie_NN.*, vehicle_K_sortie_NN.*) an earlier "
+                "run left in --out that this run does not write (never an input file)");
   cmd->add_flag("--no-spiral", o->no_spiral,
                 "straight parallel lines only: spirals do not compete (consistent image headings for photogrammetry)");
   cmd->add_flag("--no-report", o->no_report, "do not write DIR/report.html (the HTML plan report, on by default)");

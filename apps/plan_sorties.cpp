@@ -300,13 +300,20 @@ SortieOutcome planSorties(const pl::PlanCandidate& plan, const PlanFlight& fligh
   return out;
 }
 
-std::vector<std::string> staleSortieFiles(const std::filesystem::path& dir, const std::vector<std::string>& written) {
+std::vector<std::string> staleSortieFiles(const std::filesystem::path& dir, const std::vector<std::string>& written,
+                                          const std::vector<std::string>& inputs) {
   static const std::regex names(R"((sortie_[0-9]{2,}|vehicle_[0-9]+_sortie_[0-9]{2,})\.(plan|waypoints))");
   std::vector<std::string> out;
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
     const std::string n = e.path().filename().string();
-    if (std::regex_match(n, names) && std::find(written.begin(), written.end(), n) == written.end()) out.push_back(n);
+    if (!std::regex_match(n, names) || std::find(written.begin(), written.end(), n) != written.end()) continue;
+    // An input of this run with a sortie's name (an area saved as sortie_01.plan) is never stale.
+    const bool input = std::any_of(inputs.begin(), inputs.end(), [&](const std::string& in) {
+      std::error_code same_ec;
+      return std::filesystem::equivalent(e.path(), in, same_ec);
+    });
+    if (!input) out.push_back(n);
   }
   std::sort(out.begin(), out.end());
   return out;

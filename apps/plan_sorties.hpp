@@ -36,8 +36,10 @@ struct SortieOutcome {
 };
 
 /// The sortie files in `dir` (`sortie_NN.plan` / `.waypoints`, `vehicle_K_sortie_NN.*`, as
-/// planSorties names them) that are not among `written`: left by an earlier run.
-std::vector<std::string> staleSortieFiles(const std::filesystem::path& dir, const std::vector<std::string>& written);
+/// planSorties names them) that are not among `written` nor one of the run's `inputs`: left by an
+/// earlier run.
+std::vector<std::string> staleSortieFiles(const std::filesystem::path& dir, const std::vector<std::string>& written,
+                                          const std::vector<std::string>& inputs);
 
 /// Splits `plan` (the plan written, `flight` its one flight by the autopilot model, whose take-off
 /// and landing every sortie repeats) for the vehicle's battery, writes

@@ -309,7 +309,6 @@ TEST(CliPlan, ClearErrors) {
   expectError(base + " --altitude 30 --sensor-mm 13.2,8.8 --focal-mm 8.8 --image-px 5456.9,3632 --overlap 0.7",
               "--image-px 5456.9,3632: expected whole numbers of pixels");
   expectError(base + " --fov 170 --overlap 0.1 --altitude 900", "gives sweep lines 18517 m apart");
-  EXPECT_FALSE(std::filesystem::exists(std::filesystem::temp_directory_path() / "wattswath_test_plan_errors"));  // none left
   // Home on the IRIS+ area's no-fly zone (a vertex of it): inside the margin.
   expectError("plan " + sourcePath("data/areas/iris_area.geojson") + " --vehicle " + iris() + " --spacing 15 --out " +
                   outDir("errors3") + " --home 43.7159,10.461794",
@@ -470,7 +469,7 @@ TEST(CliPlan, AnAreaTheMarginCutsInTwoIsAWarning) {
                      " --spacing 15 --no-report --out " + out + " 2>&1");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("WARNING: the no-fly margin of 2.00 m cuts the area into 2 parts"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("of the area planned (56.1 % of the area outside the no-fly zones"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("of the area planned (56.1 % of the area outside the no-fly zones, the margin band included)"), std::string::npos) << r.output;
 }
 
 // One flight model for planning and prediction (issue 17): `predict` on the mission.plan and the
@@ -609,6 +608,8 @@ TEST(CliPlan, SortiesEachLandWithTheReserveAndTogetherFlyTheWholePlan) {
                       sourcePath("tests/data/iris-no-battery.json") + " --spacing 15 --sorties auto --out " + outDir("sorties_nb") + " 2>&1");
   EXPECT_NE(nb.status, 0);
   EXPECT_NE(nb.output.find("--sorties needs the vehicle's battery"), std::string::npos) << nb.output;
+  // It failed after its output folder was made (and mission.plan staged): no folder is left.
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::temp_directory_path() / "wattswath_test_plan_sorties_nb"));
 }
 
 // Sortie files are plan's outputs like the others: never written over an input, even with --force
@@ -640,6 +641,16 @@ TEST(CliPlan, SortieFilesNeverOverwriteAnInputAndEarlierOnesAreNotLeftBeside) {
   EXPECT_NE(forced.output.find("removed sortie_41.plan"), std::string::npos) << forced.output;
   EXPECT_FALSE(std::filesystem::exists(out + "/sortie_41.plan"));
   EXPECT_TRUE(std::filesystem::exists(out + "/sortie_01.plan"));
+  // An input with a sortie's name is never taken for an earlier run's file (an area saved as
+  // sortie_01.plan was removed by --force).
+  const auto again = outDir("sorties_safe_input");
+  std::filesystem::create_directories(again);
+  std::filesystem::copy_file(out + "/mission.plan", again + "/sortie_01.plan");
+  const auto kept = run(cliBinary() + " plan " + again + "/sortie_01.plan --spacing 15 --no-report --force --out " + again +
+                        " --vehicle " + iris() + " 2>&1");
+  ASSERT_EQ(kept.status, 0) << kept.output;
+  EXPECT_TRUE(std::filesystem::exists(again + "/sortie_01.plan"));
+  EXPECT_EQ(kept.output.find("removed sortie_01.plan"), std::string::npos) << kept.output;
 }
 
 // A GSD sets the altitude as QGC's CameraCalc does (altitude = GSD x image width x focal length /

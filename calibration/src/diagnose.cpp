@@ -194,7 +194,10 @@ void conclude(Diagnosis& d) {
     d.conclusion = "The data cannot tell: " + std::to_string(n) + " airborne samples" +
                    (d.signatures.empty() ? std::string(", and no signal of the residual could be tested")
                                          : ", fewer than the " + num(kMinDiagnosisSamples, 2) + " needed to test the residual's signals") +
-                   "; give longer logs, or more of them.";
+                   "; give longer logs, or more of them." +
+                   (d.found.empty() ? std::string()
+                                    : " (The search kept " + std::to_string(d.found.size()) +
+                                          " effect(s), listed under found, which so few samples cannot confirm.)");
     return;
   }
   const double ratio = d.noise_w > 0.0 ? d.final_rmse_w / d.noise_w : 1.0;

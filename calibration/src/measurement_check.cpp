@@ -118,12 +118,22 @@ std::string powerProblem(const logs::FlightLog& log, const std::vector<size_t>& 
     pw.push_back(std::isfinite(s.power) ? s.power : s.voltage * s.current);
   }
   c.airborne_samples = static_cast<int>(idx.size());
-  const auto unmeasured = std::count_if(pw.begin(), pw.end(), [](double p) { return !std::isfinite(p); });
+  // Every sample, on the ground too: the replay needs the power of each.
+  size_t no_current = 0, no_voltage = 0, unmeasured = 0;
+  for (const auto& s : log.samples) {
+    if (std::isfinite(s.power) || std::isfinite(s.voltage * s.current)) continue;
+    ++unmeasured;
+    no_current += !std::isfinite(s.current);
+    no_voltage += !std::isfinite(s.voltage);
+  }
   if (unmeasured > 0) {
     c.hover_power_w = energy::marinsHoverPowerW(v);
-    return "the battery current is not measured in " + std::to_string(unmeasured) + " of " + std::to_string(idx.size()) +
-           " airborne samples (no finite current: ArduPilot logs BAT.Curr as NaN and PX4 current_a as -1 without a current "
-           "sensor), so the power drawn there is unknown";
+    const std::string what = no_current >= no_voltage ? "battery current" : "battery voltage";
+    return "the " + what + " is not measured in " + std::to_string(unmeasured) + " of " + std::to_string(log.samples.size()) +
+           " samples (not finite" +
+           (no_current >= no_voltage ? std::string(": ArduPilot logs BAT.Curr as NaN and PX4 current_a as -1 without a current sensor")
+                                     : std::string()) +
+           "), so the power drawn there is unknown";
   }
   c.median_power_w = median(pw);
   c.median_current_a = cur.size() == idx.size() ? median(cur) : std::numeric_limits<double>::quiet_NaN();

@@ -92,15 +92,18 @@ std::vector<double> copySamples(const FlightLog& log, PreparedLog& P) {
 // The heading of each sample [rad]: the logged yaw when every sample has one, else the track
 // (held while the vehicle is slower than `stop_speed` [m/s]).
 std::vector<double> headings(const std::vector<LogSample>& S, double stop_speed) {
-  // The logged yaw where there is one; a cell without (an empty yaw_rad) holds the last logged yaw
-  // (the first one before it), so one gap does not switch the whole log to the track (it did).
+  // The logged yaw when most samples have one; a cell without (an empty yaw_rad) holds the last
+  // logged yaw (the first one before it), so one gap does not switch the whole log to the track (it
+  // did). With yaw in fewer than half the samples, the track.
+  const auto with_yaw = std::count_if(S.begin(), S.end(), [](const LogSample& x) { return std::isfinite(x.yaw); });
+  const bool use_yaw = 2 * static_cast<size_t>(with_yaw) > S.size();
   const auto first_yaw = std::find_if(S.begin(), S.end(), [](const LogSample& x) { return std::isfinite(x.yaw); });
   std::vector<double> heading(S.size());
   double last_track = 0.0, last_yaw = first_yaw == S.end() ? 0.0 : first_yaw->yaw;
   for (size_t i = 0; i < S.size(); ++i) {
     if (S[i].velocity.head<2>().norm() > stop_speed) last_track = std::atan2(S[i].velocity.y(), S[i].velocity.x());
     if (std::isfinite(S[i].yaw)) last_yaw = S[i].yaw;
-    heading[i] = first_yaw == S.end() ? last_track : last_yaw;
+    heading[i] = use_yaw ? last_yaw : last_track;
   }
   return heading;
 }

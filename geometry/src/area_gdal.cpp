@@ -72,7 +72,8 @@ std::string typeName(const OGRGeometry& g) {
   return n;
 }
 
-/// [-] a line whose ends are farther apart than this share of its length is a path, not an outline.
+/// [-] in KML, a line whose ends are farther apart than this share of its length is a drawn path,
+/// not an outline (GPX tracks and routes are outlines walked or planned: always closed).
 constexpr double kOpenLineShare = 0.05;
 
 /// Lines (GPX tracks and routes, KML LineStrings) are rings: each line one ring, holes found by
@@ -87,10 +88,10 @@ void addLines(const OGRGeometry& g, const std::string& name, OgrTarget& fc) {
     const double my = 111320.0, mx = my * std::cos(l.getY(0) * M_PI / 180.0);
     for (int k = 1; k < n; ++k) length += std::hypot((l.getX(k) - l.getX(k - 1)) * mx, (l.getY(k) - l.getY(k - 1)) * my);
     const double gap = n > 0 ? std::hypot((l.getX(n - 1) - l.getX(0)) * mx, (l.getY(n - 1) - l.getY(0)) * my) : 0.0;
-    if (n < 3 || gap > kOpenLineShare * length) {
+    if (fc.open_lines_are_paths && n >= 3 && gap > kOpenLineShare * length) {
       fc.out.notes.push_back(fc.source + ": " + name + ": an open line (its ends " + std::to_string(static_cast<long>(std::lround(gap))) +
                              " m apart, " + std::to_string(static_cast<long>(std::lround(length))) +
-                             " m long) is not an area outline; ignored");
+                             " m long) is a drawn path, not an area outline; ignored");
       return;
     }
     auto* ring = new OGRLinearRing();
@@ -105,7 +106,10 @@ void addLines(const OGRGeometry& g, const std::string& name, OgrTarget& fc) {
   } else {
     for (const auto* l : *g.toMultiLineString()) addLine(*l);
   }
-  if (polys.empty()) return;  // every line open: each said above
+  if (polys.empty()) {
+    if (fc.open_lines_are_paths && !g.IsEmpty()) return;  // every line a path: each said above
+    fail(fc.source, name + ": empty line geometry");
+  }
   int valid = 0;
   std::unique_ptr<OGRGeometry> organized(
       OGRGeometryFactory::organizePolygons(polys.data(), static_cast<int>(polys.size()), &valid, nullptr));
@@ -188,7 +192,7 @@ void noGeometry(long index, const std::string& name, const std::string& source, 
 }
 
 void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, RawArea& out, size_t& vertices,
-               bool layer_is_role) {
+               bool layer_is_role, bool kml) {
   const std::string lname = "layer \"" + std::string(layer.GetName()) + "\"";
   if (!sel.where.empty() && layer.SetAttributeFilter(sel.where.c_str()) != OGRERR_NONE) {
     fail(source, lname + ": --where \"" + sel.where + "\" is not a valid OGR SQL filter on its fields" + gdalSays());
@@ -223,7 +227,7 @@ void readLayer(OGRLayer& layer, const std::string& source, const GdalRead& sel, 
     // A layer named as no-fly zones (a KML folder "No-fly zones", a GeoPackage layer "obstacles")
     // makes its features no-fly zones, whatever their own names (`layer_is_role`: several layers).
     if (layer_is_role && !isNoFlyName(role) && lowerAscii(role) != "home" && isNoFlyName(layer.GetName())) role = layer.GetName();
-    OgrTarget target{source, role, sel.strict, out, vertices};
+    OgrTarget target{source, role, sel.strict, out, vertices, kml};
     addGeometry(*g, name, target, 0);
     if (sel.strict) CPLErrorReset();
   }
@@ -291,6 +295,8 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
     }
     return a;
   };
+  const std::string driver = ds->GetDriverName();
+  const bool kml = driver == "LIBKML" || driver == "KML";
   if (!sel.layer.empty()) {
     OGRLayer* l = ds->GetLayerByName(sel.layer.c_str());
     if (!l) {
@@ -298,7 +304,7 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
       for (auto* x : ds->GetLayers()) names += (names.empty() ? "" : ", ") + std::string(x->GetName());
       fail(source, "no layer named \"" + sel.layer + "\" (--layer); the file has: " + names);
     }
-    readLayer(*l, source, sel, out, vertices, false);
+    readLayer(*l, source, sel, out, vertices, false, kml);
     return whereMatchedNothing(out);
   }
   // In a file of several layers (KML folders, GeoPackage tables) a layer's name says what it holds;
@@ -314,7 +320,7 @@ RawArea readWithGdal(const std::string& path, const std::string& source, const G
                           n + "\" reads its lines as closed rings)");
       continue;
     }
-    readLayer(*l, source, sel, out, vertices, layer_is_role);
+    readLayer(*l, source, sel, out, vertices, layer_is_role, kml);
   }
   return whereMatchedNothing(out);
 }

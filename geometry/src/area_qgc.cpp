@@ -98,11 +98,10 @@ void qgcSurveyItems(const json& mission, const std::string& source, RawArea& out
 /// geoFence version 2: polygons and circles, inclusion -> area candidates, exclusion -> no-fly.
 void qgcGeoFence(const json& fence, const std::string& source, RawArea& out, std::vector<LabeledPolygon>& inclusions) {
   if (!fence.is_object()) fail(source, "geoFence must be an object");
-  // QGroundControl's GeoFenceController::load reads no fence of version 1 (or none) and loads the
-  // rest of the plan; so do we, and say so.
-  if (!fence.contains("version") || fence["version"] == 1) {
-    out.notes.push_back(source + ": geoFence version " + (fence.contains("version") ? std::string("1") : std::string("missing")) +
-                        ": its fences are not read (QGroundControl ignores them too)");
+  // QGroundControl's GeoFenceController::load reads no fence of version 1 and loads the rest of the
+  // plan; so do we, and say so (a fence without a version it refuses, as we do below).
+  if (fence.contains("version") && fence["version"] == 1) {
+    out.notes.push_back(source + ": geoFence version 1: its fences are not read (QGroundControl ignores them too)");
     return;
   }
   if (fence.value("version", 0) != 2) {

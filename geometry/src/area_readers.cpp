@@ -367,7 +367,12 @@ SurveyArea readSurveyArea(const std::string& path, const ReadOptions& options) {
     ReadOptions all = options;
     all.layer.clear();
     all.where.clear();
-    RawArea every = readAny(path, all);
+    RawArea every;
+    try {
+      every = readAny(path, all);
+    } catch (const std::exception& e) {  // a part the filter left out cannot be read: the chosen part stands
+      raw.notes.push_back(path + ": the file's no-fly zones outside what --layer / --where chose were not read (" + e.what() + ")");
+    }
     if (every.no_fly.size() > raw.no_fly.size()) {
       raw.notes.push_back(path + ": " + std::to_string(every.no_fly.size()) + " no-fly zone(s) read from the whole file, not "
                           "only from what --layer / --where chose");

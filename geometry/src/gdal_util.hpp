@@ -95,6 +95,7 @@ struct OgrTarget {
   bool strict;                ///< lines and points other than home are errors (GeoJSON, WKT), not rings / notes
   RawArea& out;               ///< what is read
   size_t& vertices;           ///< vertices read so far in the file (bounded by kMaxVertices)
+  bool open_lines_are_paths = false;  ///< KML: a line whose ends do not meet is a drawn path, not an outline
 };
 
 /// Adds `g` (lon/lat or metres) to t.out under `name`: polygons (to no_fly when the role says so),

@@ -153,7 +153,16 @@ TEST(AreaFormats, GoogleEarthFoldersAndPaths) {
   ASSERT_EQ(path.regions.size(), 1U);
   std::string notes;
   for (const auto& n : path.repairs) notes += n + "\n";
-  EXPECT_NE(notes.find("an open line (its ends 321 m apart, 803 m long) is not an area outline; ignored"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("an open line (its ends 321 m apart, 803 m long) is a drawn path, not an area outline; ignored"),
+            std::string::npos)
+      << notes;
+  // A GPX route of four corners that does not repeat the first is an outline planned: closed.
+  const fs::path d = tempDir("gpx_route");
+  writeFile(d / "route.gpx", R"(<?xml version="1.0"?><gpx version="1.1" creator="test" xmlns="http://www.topografix.com/GPX/1/1"><rte>
+    <rtept lat="43.7150" lon="10.4600"/><rtept lat="43.7150" lon="10.4620"/><rtept lat="43.7160" lon="10.4620"/><rtept lat="43.7160" lon="10.4600"/>
+  </rte></gpx>)");
+  EXPECT_EQ(geo::readSurveyArea((d / "route.gpx").string()).regions.size(), 1U);
+  fs::remove_all(d);
 }
 
 // A plan's GeoPackage (plan --gpkg) holds its legs as lines beside the area: read back without
@@ -323,6 +332,10 @@ TEST(AreaFormats, QgcPlanErrorsNameTheField) {
             std::string::npos);
   // A fence of version 1 (or none) is not read, as QGroundControl's GeoFenceController::load reads
   // none, and the rest of the plan is: a survey is the area, with a note (it refused the plan).
+  // A fence without a version is refused, as QGroundControl refuses it (version is a required key).
+  writeFile(d / "noversion.plan", R"({"fileType":"Plan","geoFence":{"polygons":[]}})");
+  EXPECT_NE(errorOf((d / "noversion.plan").string()).find("geoFence version null is not supported"), std::string::npos)
+      << errorOf((d / "noversion.plan").string());
   writeFile(d / "v1.plan", R"({"fileType":"Plan","geoFence":{"version":1,"polygon":[]}})");
   EXPECT_NE(errorOf((d / "v1.plan").string()).find("no polygon found"), std::string::npos);
   writeFile(d / "v1_survey.plan", R"({"fileType":"Plan","geoFence":{"version":1,"polygon":[]},"mission":{"items":[)" + kSurvey + "]}}");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "wattswath/geometry/clearance.hpp"
@@ -162,6 +163,8 @@ MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& 
   Builder b;
   const bool camera = options.trigger_distance_m > 0.0;
   bool camera_on = false;
+  size_t on_at = 0;                    // the waypoint where the camera was last turned on
+  std::optional<double> before_on;     // its command before that (an "off" of the run before)
   const auto& legs = flown.path.legs;
   const auto& junction = flown.speeds.junction;
   for (size_t i = 0; i < legs.size() && i < flown.speeds.cruise.size(); ++i) {
@@ -171,14 +174,16 @@ MissionWaypoints missionWaypoints(const FlownPath& flown, const MissionOptions& 
       const bool sweep = leg.role == geo::LegRole::Sweep;
       if (sweep && !camera_on) {
         if (b.out.waypoints.empty()) b.add(leg.start, planned, -1);  // a sweep from home: camera on at its start
+        on_at = b.out.waypoints.size() - 1;
+        before_on = b.out.waypoints.back().camera_trigger_m;
         b.out.waypoints.back().camera_trigger_m = options.trigger_distance_m;
       } else if (!sweep && camera_on) {
-        auto& last = b.out.waypoints.back().camera_trigger_m;
         // A run whose sweep was merged into the waypoint that turned the camera on (a stub under
-        // kMinWaypointSpacing) flies nowhere: no command at all, not "on" overwritten by "off",
-        // which left a stray "off" and an uncounted photo.
-        if (last && *last > 0.0) last.reset();
-        else last = 0.0;
+        // kMinWaypointSpacing) flies nowhere: that waypoint gets back the command it had (an "off"
+        // ending the run before, or none), not "on" overwritten by "off", which left a stray "off"
+        // and an uncounted photo.
+        if (on_at == b.out.waypoints.size() - 1) b.out.waypoints.back().camera_trigger_m = before_on;
+        else b.out.waypoints.back().camera_trigger_m = 0.0;
       }
       camera_on = sweep;
     }

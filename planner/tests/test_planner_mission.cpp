@@ -164,6 +164,22 @@ TEST(MissionFromPlan, AMergedSweepStubWritesNoStrayCameraOff) {
   EXPECT_FALSE(on);
   EXPECT_EQ(runs, 1);
   EXPECT_EQ(m.camera_runs, 1);
+  // A run ending where a stub starts (the turn between them merged too): the stub gives back the
+  // "off" that ended the run before (it left the camera on through the transit that followed).
+  const auto g = flown({line({0, 0}, {50, 0}),                          // 0: sweep A from home
+                        line({50, 0}, {50, 0.3}, LegRole::Turn),        // 1: merged: "off" at (50, 0)
+                        line({50, 0.3}, {50.2, 0.3}),                   // 2: stub, merged
+                        line({50.2, 0.3}, {50, 20}, LegRole::Turn),     // 3
+                        line({50, 20}, {50, 60}, LegRole::Transit)},    // 4
+                       {5.0, 5.0, 5.0, 5.0, 8.0});
+  const auto n = missionWaypoints(g, o);
+  on = false;
+  for (const auto& w : n.waypoints) {
+    if (!w.camera_trigger_m) continue;
+    EXPECT_EQ(*w.camera_trigger_m > 0.0, !on) << "camera commands alternate on, off";
+    on = *w.camera_trigger_m > 0.0;
+  }
+  EXPECT_FALSE(on) << "the camera is left on";
 }
 
 TEST(MissionFromPlan, ExampleAreaMissionHasNoPlaceholderSpeedsOrDegenerateWaypoints) {
