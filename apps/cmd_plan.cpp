@@ -137,10 +137,8 @@ std::vector<ms::LegRecord> legRecords(const pl::FlownPath& f, const geo::LocalFr
     l.kind = leg.kind == geo::PrimitiveKind::Line ? "line" : leg.kind == geo::PrimitiveKind::Arc ? "arc" : "turn_in_place";
     l.role = geo::roleName(leg.role);
     l.length_m = leg.length();
-    // A turn in place does not move: the planner's floor speed on it (0.05 m/s) is not a speed flown.
-    const bool in_place = leg.kind == geo::PrimitiveKind::TurnInPlace;
     l.speed_start_mps = f.speeds.junction[i];
-    l.speed_cruise_mps = in_place ? 0.0 : f.speeds.cruise[i];
+    l.speed_cruise_mps = cruiseSpeedFlown(f, i);
     l.speed_end_mps = f.speeds.junction[i + 1];
     l.time_s = f.leg_time[i];
     l.energy_j = f.leg_energy[i];
@@ -199,7 +197,6 @@ nlohmann::json planJsonOf(const pl::PlanResult& r, const pl::SurveyProblem& pr, 
           {"notes", notes}};
 }
 
-/// The plan, its cells, the bound, the baselines and the battery as text.
 /// The plan as text: what is flown first (the pattern, the flight as the autopilot model flies
 /// mission.plan, the battery as predict says it), then the planner's own survey model and baselines.
 void printPlanText(const pl::PlanResult& r, const PlanFlight& flight, double whole_area_pct, double margin) {
@@ -424,14 +421,20 @@ void printMission(const PlanSetup& s, const pl::PlanMission& pm, double margin, 
 /// Where the HTML report goes: --report, else DIR/report.html.
 std::string reportPath(const PlanOpts& o) { return o.report.empty() ? (fs::path(o.out) / "report.html").string() : o.report; }
 
+/// The run's input files: the area, the vehicle and the no-fly files.
+std::vector<std::string> planInputs(const PlanOpts& o) {
+  std::vector<std::string> inputs = {o.area, o.vehicle};
+  inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
+  return inputs;
+}
+
 // The files of this run, checked: none may overwrite an input (even with --force), each may
 // replace an existing file only with --force.
 void checkPlanOutputs(const PlanOpts& o) {
   std::vector<std::string> files = {"mission.plan", "mission.waypoints", "path.geojson", "legs.csv"};
   if (!o.no_report && o.report.empty()) files.push_back("report.html");
   if (o.gpkg) files.push_back("plan.gpkg");
-  std::vector<std::string> inputs = {o.area, o.vehicle};
-  inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
+  const std::vector<std::string> inputs = planInputs(o);
   for (const auto& f : files) checkWritable((fs::path(o.out) / f).string(), o.force, inputs);
   if (!o.no_report && !o.report.empty()) checkWritable(o.report, o.force, inputs);
 }
@@ -667,15 +670,12 @@ void runPlan(const PlanOpts& o) {
     scoring.mission.speeds_a_waypoint_early = flight.speeds_a_waypoint_early;
     SortieRequest req = o.sorties;
     req.force = o.force;
-    req.inputs = {o.area, o.vehicle};
-    req.inputs.insert(req.inputs.end(), o.no_fly.begin(), o.no_fly.end());
+    req.inputs = planInputs(o);
     split = planSorties(r.plan, flight, scoring, o.vehicle, req, dir);
   }
   // Sortie files an earlier run left here would be flown with this mission's: refused, or with
   // --force removed once this run's files are in place.
-  std::vector<std::string> inputs = {o.area, o.vehicle};
-  inputs.insert(inputs.end(), o.no_fly.begin(), o.no_fly.end());
-  const auto stale = staleSortieFiles(dir, split ? split->files : std::vector<std::string>{}, inputs);
+  const auto stale = staleSortieFiles(dir, split ? split->files : std::vector<std::string>{}, planInputs(o));
   if (!stale.empty() && !o.force) {
     std::string list;
     for (const auto& f : stale) list += (list.empty() ? "" : ", ") + f;

@@ -1,7 +1,6 @@
 // Flight logs read for replay, diagnose and fit, each checked as a measurement first (issue 19).
 #include "log_inputs.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <iostream>
@@ -35,14 +34,7 @@ void checkLog(logs::FlightLog& log, const std::string& p, const energy::Vehicle&
   }
   // What the reader skipped or found (a truncated file, samples out of time order, a log that ends in
   // the air): said with every number drawn from the log, not only by `log info`.
-  std::vector<std::string> reader_warnings;
-  if (const auto w = log.metadata.find("warnings"); w != log.metadata.end()) {
-    for (std::size_t b = 0; b < w->second.size();) {
-      const std::size_t e = std::min(w->second.find(" | ", b), w->second.size());
-      reader_warnings.push_back(w->second.substr(b, e - b));
-      b = e + 3;
-    }
-  }
+  const std::vector<std::string> reader_warnings = logs::readerWarnings(log);
   for (const auto& n : reader_warnings) report.lines.push_back(p + ": " + n);
   for (const auto& n : c.notes) report.lines.push_back(p + ": " + n);
   if (!c.power_problem.empty()) {

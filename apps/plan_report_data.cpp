@@ -17,6 +17,10 @@ namespace geo = wattswath::geometry;
 namespace pl = wattswath::planner;
 namespace fs = std::filesystem;
 
+double cruiseSpeedFlown(const pl::FlownPath& f, std::size_t i) {
+  return f.path.legs[i].kind == geo::PrimitiveKind::TurnInPlace ? 0.0 : f.speeds.cruise[i];
+}
+
 namespace {
 
 /// Polyline of one leg for the map [m] (arcs sampled every 10 deg; a turn in place is one point).
@@ -72,8 +76,7 @@ void addLegsAndBreakdowns(report::PlanReportData& d, const pl::FlownPath& f, con
     report::PlanLeg pl_leg;
     pl_leg.points = legPolyline(leg);
     pl_leg.role = geo::roleName(leg.role);
-    // A turn in place does not move: the planner's floor speed on it (0.05 m/s) is not a speed flown.
-    pl_leg.speed = leg.kind == geo::PrimitiveKind::TurnInPlace ? 0.0 : f.speeds.cruise[i];
+    pl_leg.speed = cruiseSpeedFlown(f, i);
     pl_leg.energy = f.leg_energy[i];
     pl_leg.time = f.leg_time[i];
     pl_leg.length = leg.length();

@@ -46,6 +46,10 @@ std::vector<report::DiagnosisRow> diagnosisRows(const calibration::Diagnosis& d)
 /// The items of a mission (numbers as in the mission file) for the plan map, positioned in `frame` [m].
 std::vector<report::MissionMark> planMapItems(const mission::Mission& m, const geometry::LocalFrame& frame);
 
+/// [m/s] The cruise speed of leg `i` of `f` as flown: 0 for a turn in place, which does not move
+/// (the planner's floor speed on it, 0.05 m/s, is not a speed flown).
+double cruiseSpeedFlown(const planner::FlownPath& f, std::size_t i);
+
 /// The report fact on the battery where the flight ends, as a (label, text) pair: the usable charge
 /// left at landing (or where a mission that ends in the air ends) with `detail` appended, or, when the
 /// cut-off is reached in flight, when it is reached (a "0 % at landing" would say it lands).

@@ -89,7 +89,7 @@ std::vector<double> copySamples(const FlightLog& log, PreparedLog& P) {
   return t;
 }
 
-// The heading of each sample [rad]: the logged yaw when every sample has one, else the track
+// The heading of each sample [rad]: the logged yaw when most samples have one, else the track
 // (held while the vehicle is slower than `stop_speed` [m/s]).
 std::vector<double> headings(const std::vector<LogSample>& S, double stop_speed) {
   // The logged yaw when most samples have one; a cell without (an empty yaw_rad) holds the last

@@ -5,13 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
 #include <sstream>
 
 #include <GeographicLib/Geodesic.hpp>
 #include <nlohmann/json.hpp>
 
 #include "area_internal.hpp"
+#include "wattswath/geometry/check.hpp"
+#include "wattswath/geometry/frame.hpp"
 #include "wattswath/geometry/survey_area.hpp"
 
 namespace wattswath::geometry::detail {
@@ -132,33 +133,8 @@ RawArea parseQgcPlan(const std::string& text, const std::string& source) {
 }
 
 namespace {
-/// True when (x, y) lies inside the ring `r` (even-odd rule; lon/lat as plane coordinates, which is
-/// exact enough for a fence a few kilometres across).
-bool insideRing(const Ring& r, double x, double y) {
-  bool in = false;
-  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
-    if ((r[i].y() > y) != (r[j].y() > y) && x < (r[j].x() - r[i].x()) * (y - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x()) in = !in;
-  }
-  return in;
-}
-
 /// [m] a survey point this close to a fence's edge counts as inside it (a fence drawn on the survey).
 constexpr double kOnFenceM = 0.5;
-
-/// Distance [m] from (x = lon, y = lat) to the ring's edges, on a local equirectangular plane.
-double metresToRing(const Ring& r, double x, double y) {
-  const double my = 111320.0, mx = my * std::cos(y * M_PI / 180.0);
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < r.size(); ++i) {
-    const Point& a = r[i];
-    const Point& b = r[(i + 1) % r.size()];
-    const double ax = (a.x() - x) * mx, ay = (a.y() - y) * my, bx = (b.x() - x) * mx, by = (b.y() - y) * my;
-    const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
-    const double t = len2 > 0.0 ? std::clamp(-(ax * dx + ay * dy) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(ax + t * dx, ay + t * dy));
-  }
-  return best;
-}
 
 /// A survey whose boundary leaves every inclusion fence of the same plan would be flown into the
 /// fence (the autopilot's fence action): refused, naming the survey point outside (its edges are
@@ -166,6 +142,16 @@ double metresToRing(const Ring& r, double x, double y) {
 void checkSurveyInsideFences(const std::vector<LabeledPolygon>& surveys, const std::vector<LabeledPolygon>& fences,
                              const std::string& source) {
   constexpr int kSteps = 50;
+  // The fences in metres about the first survey vertex (GeographicLib), tested with the geometry
+  // library's own ring predicates.
+  const Point& o = surveys.front().outer.pts.front();
+  const LocalFrame frame({o.y(), o.x(), 0.0});
+  std::vector<Ring> rings;
+  for (const auto& g : fences) {
+    Ring r;
+    for (const Point& p : g.outer.pts) r.push_back(frame.toLocal(p.y(), p.x()));
+    rings.push_back(std::move(r));
+  }
   for (const auto& s : surveys) {
     const Ring& r = s.outer.pts;
     for (size_t i = 0; i < r.size(); ++i) {
@@ -174,8 +160,9 @@ void checkSurveyInsideFences(const std::vector<LabeledPolygon>& surveys, const s
       for (int k = 0; k < kSteps; ++k) {
         const double f = static_cast<double>(k) / kSteps;
         const double x = a.x() + f * (b.x() - a.x()), y = a.y() + f * (b.y() - a.y());
-        const bool held = std::any_of(fences.begin(), fences.end(), [&](const LabeledPolygon& g) {
-          return insideRing(g.outer.pts, x, y) || metresToRing(g.outer.pts, x, y) <= kOnFenceM;
+        const Point p = frame.toLocal(y, x);
+        const bool held = std::any_of(rings.begin(), rings.end(), [&](const Ring& fence) {
+          return insideRing(fence, p) || distanceToRing(fence, p) <= kOnFenceM;
         });
         if (held) continue;
         char where[96];

@@ -21,6 +21,9 @@
 namespace wattswath::logs {
 namespace detail {
 
+/// Between two warnings in metadata `warnings` (one line of the CSV's `# warnings:` comment).
+constexpr const char* kWarningSeparator = " | ";
+
 std::string num(double x, int precision) {
   std::ostringstream os;
   os.precision(precision);
@@ -229,7 +232,7 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
                              : raw.landed_source + " (before the first: current > " +
                                    num(opt.airborne.current_threshold_a) + " A)";
   std::string w;
-  for (const auto& s : raw.warnings) w += (w.empty() ? "" : " | ") + s;
+  for (const auto& s : raw.warnings) w += (w.empty() ? "" : kWarningSeparator) + s;
   if (!w.empty()) m["warnings"] = w;
   if (log.samples.size() < 2)
     throw std::runtime_error(where + "battery and position data do not overlap in time (battery " +
@@ -354,6 +357,19 @@ void applyTimeWindow(FlightLog& log, const LogReadOptions& opt) {
   log.events.swap(ev);
   log.metadata["window"] = num(log.samples.front().t, 10) + " s to " + num(log.samples.back().t, 10) + " s" +
                            (opt.airborne_only ? " (airborne part)" : "");
+}
+
+std::vector<std::string> readerWarnings(const FlightLog& log) {
+  std::vector<std::string> out;
+  const auto w = log.metadata.find("warnings");
+  if (w == log.metadata.end()) return out;
+  const std::string sep = kWarningSeparator;
+  for (std::size_t b = 0; b < w->second.size();) {
+    const std::size_t e = std::min(w->second.find(sep, b), w->second.size());
+    out.push_back(w->second.substr(b, e - b));
+    b = e + sep.size();
+  }
+  return out;
 }
 
 LogFormat detectLogFormat(const std::string& path) {

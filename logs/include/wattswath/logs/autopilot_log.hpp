@@ -75,6 +75,10 @@ enum class LogFormat { Csv, DataFlash, Ulog };
 /// Format of the file at `path`, from its first bytes ("ULog" magic, 0xA3 0x95 header, else CSV).
 LogFormat detectLogFormat(const std::string& path);
 
+/// What the reader of `log` skipped or found (a truncated file, samples out of time order, a gap in
+/// the positions, a log that ends in the air), one sentence each: metadata `warnings` split.
+std::vector<std::string> readerWarnings(const FlightLog& log);
+
 /// Reads a flight log of any supported format (picked by content, see detectLogFormat()) and
 /// applies options.from_s / to_s / airborne_only. The one entry point for `--log FILE`.
 FlightLog readFlightLog(const std::string& path, const LogReadOptions& options = {});
