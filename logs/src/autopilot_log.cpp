@@ -108,6 +108,28 @@ std::vector<Eigen::Vector3d> accelerationFrom(const std::vector<double>& t, cons
   return a;
 }
 
+// The charge the logged current draws over the whole battery series against the battery's capacity
+// (a parameter of the log): more than the pack holds is a current sensor reading high (a wrong
+// scale, ArduPilot BATT_AMP_PERVLT / PX4 BAT1_A_PER_V) or a capacity parameter that is not this
+// pack's. Either way the energies from this log are in doubt, and the reader says so.
+void checkChargeAgainstCapacity(const Battery& b, std::map<std::string, std::string>& m, std::vector<std::string>& warnings) {
+  double as = 0.0;  // [A s]
+  for (std::size_t k = 1; k < b.t.size(); ++k)
+    if (std::isfinite(b.i[k]) && std::isfinite(b.i[k - 1])) as += 0.5 * (b.i[k] + b.i[k - 1]) * (b.t[k] - b.t[k - 1]);
+  const double drawn_mah = as / 3.6;
+  m["charge_drawn_mah"] = std::to_string(std::lround(drawn_mah));
+  const auto cap = m.find("battery_capacity_mah");
+  if (cap == m.end()) return;
+  const double capacity = std::stod(cap->second);
+  if (!(capacity > 0.0) || drawn_mah <= capacity) return;
+  warnings.push_back("the logged current draws " + std::to_string(std::lround(drawn_mah)) + " mAh, " +
+                     std::to_string(std::lround(100.0 * drawn_mah / capacity)) +
+                     " % of the battery's capacity (" + m["battery_capacity_source"] + ": " + cap->second +
+                     " mAh): either the current sensor reads high (its scale, ArduPilot BATT_AMP_PERVLT or PX4 "
+                     "BAT1_A_PER_V, is wrong) or the capacity set is not this pack's; energies from this log rest "
+                     "on that current");
+}
+
 }  // namespace
 
 FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt) {
@@ -225,6 +247,7 @@ FlightLog assemble(Raw raw, const std::string& source, const LogReadOptions& opt
                            num(gap_from + max_gap, 10) + " s: the positions and velocities across it are interpolated "
                            "in a straight line, not measured");
   }
+  checkChargeAgainstCapacity(b, m, raw.warnings);
   m["resampling"] = "battery sample times; position, velocity, acceleration, yaw linearly interpolated";
   m["frame"] = "ENU from the EKF origin (x east, y north, z up)";
   m["airborne_source"] = raw.landed.empty()

@@ -235,7 +235,6 @@ FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string&
   if (params.count("FRAME")) frame += (frame.empty() ? "" : ", ") + std::string("FRAME=") + num(params["FRAME"]);
   if (raw.vehicle.empty()) raw.vehicle = copter ? "multicopter" : "unknown";
   if (!frame.empty()) raw.vehicle += " (" + frame + ")";
-  if (params.count("BATT_CAPACITY")) raw.meta["battery_capacity_mah"] = num(params["BATT_CAPACITY"]);
   if (L.has("ORGN", "Lat") && L.has("ORGN", "Lng")) {
     // ORGN Type 0 is the EKF origin the positions are measured from (Type 1: home).
     const auto lat = L.column("ORGN", "Lat"), lng = L.column("ORGN", "Lng");
@@ -248,6 +247,13 @@ FlightLog readDataFlashBytes(std::vector<std::uint8_t> bytes, const std::string&
     }
   }
   dataflashBattery(L, opt, raw);
+  // The capacity of the battery used: BATT_CAPACITY for instance 0, BATT2_ ... BATT9_ for 1 ... 8.
+  const int bi = raw.battery.instance;
+  const std::string cap = bi == 0 ? "BATT_CAPACITY" : "BATT" + std::to_string(bi + 1) + "_CAPACITY";
+  if (bi >= 0 && bi <= 8 && params.count(cap) && params[cap] > 0.0) {
+    raw.meta["battery_capacity_mah"] = num(params[cap]);
+    raw.meta["battery_capacity_source"] = cap + " parameter";
+  }
   dataflashPosition(L, opt, raw);
   dataflashEvents(L, raw, copter);
   raw.meta["messages"] = std::to_string(L.messageCount());

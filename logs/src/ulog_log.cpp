@@ -194,6 +194,21 @@ void readEvents(const ulog::Log& L, Raw& raw) {
   for (const auto& s : L.strings()) raw.events.push_back({s.t, "message", s.text});
 }
 
+// The capacity of the battery used: BAT<n>_CAPACITY for battery_status instance n - 1 (PX4 1.12
+// and later), else BAT_CAPACITY (earlier); -1, PX4's default, is "not set".
+void readBatteryCapacity(const ulog::Log& L, Raw& raw) {
+  const auto& p = L.parameters();
+  for (const std::string& name : {"BAT" + std::to_string(raw.battery.instance + 1) + "_CAPACITY", std::string("BAT_CAPACITY")}) {
+    const auto it = p.find(name);
+    if (it == p.end()) continue;
+    if (it->second > 0.0) {
+      raw.meta["battery_capacity_mah"] = num(it->second);
+      raw.meta["battery_capacity_source"] = name + " parameter";
+    }
+    return;
+  }
+}
+
 }  // namespace
 
 FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& source, const LogReadOptions& opt) {
@@ -204,6 +219,7 @@ FlightLog readUlogBytes(std::vector<std::uint8_t> bytes, const std::string& sour
   readFirmwareAndFacts(L, raw);
   readVehicle(L, raw);
   readBattery(L, source, opt, raw);
+  readBatteryCapacity(L, raw);
   readPosition(L, source, opt, raw);
   readEvents(L, raw);
   return assemble(std::move(raw), source, opt);

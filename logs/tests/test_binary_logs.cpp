@@ -155,6 +155,36 @@ TEST(DataFlash, ABatteryWhoseCurrentIsMeasuredIsPreferred) {
       << log.metadata.at("battery_sources_not_used");
 }
 
+// The charge the logged current draws (here 10 A for 10 s and 1 A for 10 s, 30.8 mAh) against the
+// capacity of the battery used (instance 1: BATT2_CAPACITY): more than the pack holds is said, with
+// both possible causes; within it, nothing is said.
+TEST(DataFlash, ACurrentDrawingMoreThanTheCapacityIsSaid) {
+  const auto withCapacity = [](float batt2_mah) {
+    Bytes b = modernDataFlash();
+    DataFlash d;
+    d.b.clear();
+    d.fmt(160, 3 + 8 + 16 + 4, "PARM", "QNf", "TimeUS,Name,Value");
+    for (auto [name, value] : {std::pair<const char*, float>{"BATT_CAPACITY", 5.0f}, {"BATT2_CAPACITY", batt2_mah}}) {
+      d.head(160);
+      put<std::uint64_t>(d.b, 100000);
+      putText(d.b, name, 16);
+      put<float>(d.b, value);
+    }
+    b.insert(b.end(), d.b.begin(), d.b.end());
+    return wattswath::logs::readDataFlashBytes(b, "capacity.bin", {});
+  };
+  const auto high = withCapacity(20.0f);
+  EXPECT_EQ(high.metadata.at("battery_capacity_mah"), "20");
+  EXPECT_EQ(high.metadata.at("charge_drawn_mah"), "31");
+  ASSERT_NE(high.metadata.count("warnings"), 0u);
+  EXPECT_NE(high.metadata.at("warnings").find("draws 31 mAh, 154 % of the battery's capacity (BATT2_CAPACITY parameter: 20 mAh)"),
+            std::string::npos) << high.metadata.at("warnings");
+  EXPECT_NE(high.metadata.at("warnings").find("BATT_AMP_PERVLT"), std::string::npos);
+  const auto fine = withCapacity(40.0f);  // BATT_CAPACITY 5 mAh is instance 0's, not the one used
+  EXPECT_EQ(fine.metadata.at("battery_capacity_mah"), "40");
+  EXPECT_EQ(fine.metadata.count("warnings"), 0u) << fine.metadata.at("warnings");
+}
+
 TEST(DataFlash, BatteryInstanceOptionAndWindow) {
   wattswath::logs::LogReadOptions o;
   o.battery_instance = 0;  // chosen explicitly, even though it reads 0 V
