@@ -8,6 +8,8 @@
 
 #include "cli.hpp"
 #include "log_inputs.hpp"
+#include "predict_spread.hpp"
+#include "prediction_setup.hpp"
 #include "replay_mission.hpp"
 #include "wattswath/report/svg.hpp"
 #include "wattswath/calibration/mission_calibration.hpp"
@@ -26,7 +28,7 @@ struct CalibrateOptions {
   std::string vehicle, out, effects = "hover,kinetic,parasitic_drag,climb,translational_lift";
   std::vector<std::string> logs, missions;
   int evaluations = 150;
-  bool json = false, force = false, lenient = false, keep_energy = false;
+  bool json = false, force = false, lenient = false, keep_energy = false, no_held_out = false;
   logs::LogReadOptions read;
   MeasurementReport measurement;  // the power and position checks of each log (--trust-power)
 };
@@ -72,6 +74,28 @@ void printComparisons(const char* title, const std::vector<cal::FlightComparison
   }
 }
 
+// Leave one flight out: each flight predicted as `predict` and `replay --mission` would with the
+// vehicle file a calibration on the other flights writes (its model, behaviour and, where those
+// flights disagree, the value the flights of this mission's kind chose).
+std::vector<cal::FlightComparison> heldOut(const std::vector<cal::MissionFlight>& flights, const en::Vehicle& v,
+                                           const en::EnergyModel& model, const ms::AutopilotConfig& ap,
+                                           const cal::CalibrationSettings& cs) {
+  std::vector<cal::FlightComparison> out;
+  for (std::size_t i = 0; i < flights.size(); ++i) {
+    progress("calibrate: held out " + flights[i].name + ", calibrating on the other " + std::to_string(flights.size() - 1));
+    std::vector<cal::MissionFlight> others;
+    for (std::size_t k = 0; k < flights.size(); ++k)
+      if (k != i) others.push_back(flights[k]);
+    const en::Vehicle vi = cal::calibratedVehicle(v, cal::calibrateMissions(others, v, model, ap, cs));
+    const PredictionSetup setup = predictionSetup(vi, "the calibration without " + flights[i].name, "", 0.0);
+    ms::AutopilotConfig api = setup.autopilot;
+    const auto choice = kindChoiceOf(cal::missionKind(ms::sequenceMission(flights[i].mission), api), setup);
+    if (choice) api.parameters[setup.disputed_parameter] = choice->value;
+    out.push_back(cal::compareFlight(flights[i], vi, setup.model, api, setup.settings));
+  }
+  return out;
+}
+
 }  // namespace
 
 void registerCalibrateCommand(CLI::App& app) {
@@ -87,6 +111,9 @@ void registerCalibrateCommand(CLI::App& app) {
   cmd->add_option("--evaluations", o->evaluations, "Simulated flights per parameter fit")->check(CLI::Range(10, 5000))->capture_default_str();
   cmd->add_flag("--keep-energy", o->keep_energy, "Calibrate the flight behaviour only; keep the energy coefficients (the vehicle file's calibration when it has one, else the --effects from its physics)");
   cmd->add_flag("--lenient-mission", o->lenient, "Skip unsupported mission commands that do not move the vehicle (not navigation commands) with a warning");
+  cmd->add_flag("--no-held-out", o->no_held_out,
+                "With two flights or more, skip the leave-one-flight-out check (by default each flight is also "
+                "predicted by a calibration on the others: one more calibration per flight)");
   addLogReadOptions(cmd, o->read);
   addTrustPowerFlag(cmd, o->measurement.trust_power);
   addForceFlag(cmd, o->force);
@@ -119,6 +146,7 @@ void registerCalibrateCommand(CLI::App& app) {
     ro.lenient_option = "--lenient-mission";
     std::vector<std::string> window_notes;
     nlohmann::json windows = nlohmann::json::array();
+    checkDistinctLogs(o->logs, o->logs.size());
     for (std::size_t i = 0; i < o->logs.size(); ++i) {
       progress("calibrate: reading " + o->logs[i] + " and " + o->missions[i]);
       MissionLog ml = readMissionLog(o->logs[i], o->read);
@@ -133,9 +161,12 @@ void registerCalibrateCommand(CLI::App& app) {
     cal::CalibrationSettings cs;
     cs.max_evaluations = o->evaluations;
     cs.fit_energy = !o->keep_energy;
+    const bool held_out = !o->no_held_out && flights.size() >= 2;
     progress("calibrate: fitting " + std::string(ms::toString(ap.family)) + " parameters on " + std::to_string(flights.size()) +
-             " flight(s), up to " + std::to_string(o->evaluations) + " simulated flights");
+             " flight(s), up to " + std::to_string(o->evaluations) + " simulated flights" +
+             (held_out ? "; then once more per flight, on the others, to predict the one left out" : ""));
     const cal::CalibrationResult r = cal::calibrateMissions(flights, v, model, ap, cs);
+    const std::vector<cal::FlightComparison> held = held_out ? heldOut(flights, v, model, ap, cs) : std::vector<cal::FlightComparison>{};
     v = cal::calibratedVehicle(std::move(v), r);
     writeTextFileAtomic(o->out, en::vehicleToJson(v));
     progress("calibrate: wrote " + o->out);
@@ -166,13 +197,26 @@ void registerCalibrateCommand(CLI::App& app) {
       }
       for (const auto& c : r.before) j["before"].push_back(comparisonJson(c));
       for (const auto& c : r.after) j["after"].push_back(comparisonJson(c));
+      // "after" is in-sample (the flights fitted); "held_out" predicts each flight from the others.
+      j["after_is_in_sample"] = true;
+      j["held_out"] = nlohmann::json::array();
+      for (const auto& c : held) j["held_out"].push_back(comparisonJson(c));
+      if (held.empty()) j["held_out"] = nullptr;
       printJson(j);
       return;
     }
     for (const auto& n : window_notes) std::cout << "note: " << n << "\n";
     o->measurement.print();
     printComparisons("before (firmware defaults / given parameters, vehicle physics):", r.before);
-    printComparisons("after calibration:", r.after);
+    printComparisons("after calibration, in-sample (on the flights it was fitted to; says little about other flights):",
+                     r.after);
+    if (!held.empty()) {
+      printComparisons("held out (each flight predicted by a calibration on the other flights only, as predict flies it "
+                       "with that calibration's vehicle file):", held);
+    } else if (flights.size() == 1) {
+      std::cout << "  (one flight: no held-out check; calibrate on several flights, or replay --mission another flight "
+                   "with the file written)\n";
+    }
     std::cout << "fitted:\n";
     for (const auto& f : r.fitted) std::cout << "  " << f << "\n";
     for (const auto& n : model_notes) std::cout << "note: " << n << "\n";

@@ -254,6 +254,7 @@ void registerDiagnose(CLI::App& app) {
     const auto v = en::loadVehicle(o->vehicle);
     const auto user = readEffectFiles(o->effect_files);
     const auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), user);
+    checkDistinctLogs(o->logs, o->logs.size());
     const auto logs = readCheckedLogs(o->logs, o->read, v, o->measurement);
     calibration::DiagnoseSettings s;
     for (const auto& u : user)
@@ -336,6 +337,9 @@ void registerFit(CLI::App& app) {
     checkReportWritable(o->report, o->report_svg, o->force, inputs);
     const auto v = en::loadVehicle(o->vehicle);
     const auto model = calibration::buildModelWith(v, en::splitEffectList(o->effects), readEffectFiles(o->effect_files));
+    std::vector<std::string> all = o->logs;
+    all.insert(all.end(), o->test_logs.begin(), o->test_logs.end());
+    checkDistinctLogs(all, o->logs.size());
     const auto train = readCheckedLogs(o->logs, o->read, v, o->measurement);
     const auto test = readCheckedLogs(o->test_logs, o->read, v, o->measurement);
     const auto r = calibration::fitAndCompare(model, train, test);

@@ -90,7 +90,8 @@ json diagnosisJson(const calibration::Diagnosis& d) {
           {"search", d.search},
           {"candidates", cands},
           {"staircase", stair},
-          {"final_effects", d.final_effects}};
+          {"final_effects", d.final_effects},
+          {"untested", d.untested}};
 }
 
 void printDiagnosis(const calibration::Diagnosis& d) {

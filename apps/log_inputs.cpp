@@ -2,6 +2,8 @@
 #include "log_inputs.hpp"
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <iostream>
 #include <stdexcept>
@@ -64,6 +66,25 @@ std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::str
     out.push_back(calibration::prepareLog(log));
   }
   return out;
+}
+
+void checkDistinctLogs(const std::vector<std::string>& paths, std::size_t test_from) {
+  std::vector<std::string> bytes;
+  for (const auto& p : paths) {
+    std::ifstream in(p, std::ios::binary);
+    bytes.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  for (std::size_t a = 0; a < paths.size(); ++a) {
+    for (std::size_t b = a + 1; b < paths.size(); ++b) {
+      if (bytes[a] != bytes[b]) continue;
+      const bool test = b >= test_from && a < test_from;
+      throw std::runtime_error(paths[a] + " and " + paths[b] + " are the same file" +
+                               (paths[a] == paths[b] ? "" : " (identical bytes)") + ": " +
+                               (test ? "a test log must be a flight the fit did not see"
+                                     : "one flight given twice would be counted twice (and held out against itself)") +
+                               "; give each flight once");
+    }
+  }
 }
 
 MissionLog readMissionLog(const std::string& path, const logs::LogReadOptions& read) {

@@ -44,6 +44,12 @@ std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::str
                                                       const logs::LogReadOptions& read,
                                                       const energy::Vehicle& vehicle, MeasurementReport& report);
 
+/// Throws std::runtime_error naming both files when two of `paths` hold the same bytes (one flight
+/// given twice, under two names): a fit would count it twice, a leave-one-flight-out test would
+/// test it on itself. `test_from` is the index from which `paths` are test logs (paths.size():
+/// none), for the message.
+void checkDistinctLogs(const std::vector<std::string>& paths, std::size_t test_from);
+
 /// A log of a flown mission, read for calibrate and replay --mission, with what was compared.
 struct MissionLog {
   logs::FlightLog log;  ///< the samples compared with the mission's prediction

@@ -34,6 +34,37 @@ TEST(CliDiagnose, FiveSamplesCannotTell) {
   EXPECT_NE(j.at("conclusion").get<std::string>().find("The data cannot tell: 5 airborne samples"), std::string::npos);
 }
 
+// A hover (0.3 m of drift at 0.5 m/s) tests no effect that needs fast flight: the verdict was
+// "nothing_missing" while drag, wind and translational lift were marked not determined. It is
+// "cannot_tell", naming them and what the data lack, in words and in --json ("untested").
+TEST(CliDiagnose, AHoverCannotTellWhatNeedsFastFlight) {
+  const std::string path = tempPath("hover_path.txt"), log = tempPath("hover.csv");
+  std::ofstream(path) << "0 0 0\n0 0 10\n0.3 0 10\n0 0 10\n0 0 0\n";
+  Outcome r = runCli({"simulate", "--vehicle", "data/vehicles/iris.json", "--speed", "0.5", "--path", path, "--seed", "3",
+                      "--out", log, "--force"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--effects", "hover,kinetic", "--log", log, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("verdict"), "cannot_tell") << j.at("conclusion");
+  const std::string c = j.at("conclusion");
+  EXPECT_NE(c.find("but they cannot test parasitic_drag, wind, translational_lift (0 of"), std::string::npos) << c;
+  ASSERT_EQ(j.at("untested").size(), 3u) << j.at("untested");
+  EXPECT_EQ(j.at("untested")[0].get<std::string>().rfind("parasitic_drag: 0 of", 0), 0u) << j.at("untested");
+}
+
+// One flight under two names: counted twice, or tested on itself. Refused, naming both files.
+TEST(CliDiagnose, TheSameFlightTwiceIsRefused) {
+  const std::string copy = tempPath("copy.csv");
+  fs::copy_file(wattswath::test::sourcePath("tests/data/iris_short5.csv"), copy, fs::copy_options::overwrite_existing);
+  Outcome r = runCli({"diagnose", "--vehicle", "data/vehicles/iris.json", "--log", "tests/data/iris_short5.csv", "--log", copy});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("are the same file (identical bytes): one flight given twice"), std::string::npos) << r.err;
+  r = runCli({"fit", "--vehicle", "data/vehicles/iris.json", "--log", "tests/data/iris_short5.csv", "--test-log", copy});
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("a test log must be a flight the fit did not see"), std::string::npos) << r.err;
+}
+
 TEST(CliDiagnose, UserEffectTurnsUnexplainedIntoFound) {
   const std::string log = tempPath("heated.csv");
   Outcome r = runCli({"simulate", "--vehicle", "data/vehicles/iris.json", "--effects",

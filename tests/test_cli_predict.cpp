@@ -220,6 +220,12 @@ TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValues) {
     EXPECT_LT(std::abs(f["time_error_pct"].get<double>()), 1.0) << f.dump();
     EXPECT_LT(f["leg_time_mape_pct"].get<double>(), 1.0) << f.dump();
   }
+  // "after" is in-sample; held out, each square is predicted by a calibration on the other one
+  // alone, as predict flies it with that calibration's file: still within 2 %.
+  EXPECT_EQ(c["after_is_in_sample"], true);
+  ASSERT_EQ(c["held_out"].size(), 2u) << c.dump();
+  for (const auto& f : c["held_out"]) EXPECT_LT(std::abs(f["time_error_pct"].get<double>()), 2.0) << f.dump();
+  EXPECT_EQ(c["held_out"][0]["flight"], c["after"][0]["flight"]);
   std::remove(base.c_str());
   std::remove(out.c_str());
 }

@@ -63,8 +63,8 @@ std::string describeValues(const std::string& effect, const std::vector<FittedCo
     const double bearing = std::fmod(std::atan2(e.value, n.value) * 180.0 / M_PI + 360.0, 360.0);
     if (!e.fitted || !n.fitted) return "wind not determined: these data have too little fast flight to show it";
     if (!e.determined || !n.determined) {
-      return "wind not determined: with drag area " + pm(a) +
-             " m^2 the air speed hardly changes the modelled power, so these data say nothing about the wind";
+      return "wind not determined: these data do not separate it from the drag and the hover power (the notes say "
+             "why), drag area " + pm(a) + " m^2";
     }
     const double sig = std::isfinite(e.sigma) && std::isfinite(n.sigma) ? std::hypot(e.sigma, n.sigma) / std::sqrt(2.0)
                                                                         : std::numeric_limits<double>::quiet_NaN();
@@ -110,7 +110,8 @@ std::string describeEffect(const std::string& effect, const std::vector<FittedCo
   for (const auto& x : c) {
     if (x.effect != effect || x.determined) continue;
     s += "; " + x.name + " NOT DETERMINED by the data" +
-         (x.fitted ? " (its value is arbitrary)" : " (not fitted: kept at its starting value)");
+         (x.fitted ? (x.at_bound ? " (at its physical bound: not a measurement)" : " (its value is not a measurement: the note says why)")
+                   : " (not fitted: kept at its starting value)");
   }
   return s;
 }
@@ -178,6 +179,29 @@ double rmsOf(const std::vector<double>& r) {
 /// [-] samples below which a diagnosis gives no verdict.
 constexpr double kMinDiagnosisSamples = 30.0;
 
+// The candidates none of whose coefficients these data could fit (they lack the excitation each
+// needs), listed in d.untested and returned in words ("wind (0 of 278 ...) and ..."); empty when
+// every candidate was tested.
+std::string untestedText(Diagnosis& d) {
+  std::vector<std::pair<std::string, std::string>> by_lack;  // (what the data lack, effects), in order
+  for (const auto& c : d.candidates) {
+    if (c.coefficients.empty()) continue;
+    bool any_fitted = false;
+    for (const auto& k : c.coefficients) any_fitted = any_fitted || k.fitted;
+    if (any_fitted) continue;
+    std::string why = c.coefficients.front().why_not_determined;
+    if (const auto cut = why.find("; kept at"); cut != std::string::npos) why.erase(cut);
+    d.untested.push_back(c.effect + ": " + why);
+    const std::string lack = why.substr(0, why.find(": "));  // "0 of 278 airborne samples faster than ..."
+    auto it = std::find_if(by_lack.begin(), by_lack.end(), [&](const auto& x) { return x.first == lack; });
+    if (it == by_lack.end()) by_lack.push_back({lack, c.effect});
+    else it->second += ", " + c.effect;
+  }
+  std::string text;
+  for (const auto& [lack, effects] : by_lack) text += (text.empty() ? "" : "; ") + effects + " (" + lack + ")";
+  return text;
+}
+
 // The verdict from the found effects and the structure the final residual keeps: a significant
 // signature, or a variance above the white noise's by more than about 4 standard errors of the
 // noise estimate (6 / sqrt(n) relative: the median-difference estimate has about 1.5 / sqrt(n)).
@@ -206,12 +230,20 @@ void conclude(Diagnosis& d) {
                             " W (" + num(ratio, 3) + "x)";
   std::string found;
   for (const auto& f : d.found) found += (found.empty() ? "" : " and ") + f.effect;
+  const std::string untested = untestedText(d);
+  if (sig.empty() && !excess && ratio <= kExplainedRatio && d.found.empty() && !untested.empty()) {
+    d.verdict = "cannot_tell";
+    d.conclusion = "The data cannot tell: no candidate they can test improves the held-out error significantly and the "
+                   "residual carries none of the tested signals (" + noise + "), but they cannot test " + untested +
+                   ". Give a log that flies what those need.";
+    return;
+  }
   if (sig.empty() && !excess && ratio <= kExplainedRatio) {
     d.verdict = d.found.empty() ? "nothing_missing" : "missing_effect";
     d.conclusion = d.found.empty() ? "Nothing is missing: no candidate improves the held-out error significantly and "
                                      "the residual carries none of the tested signals (" + noise + ")."
                                    : "Missing: " + found + ". With it the residual carries none of the tested signals (" +
-                                         noise + ").";
+                                         noise + ")." + (untested.empty() ? "" : " These data cannot test " + untested + ".");
     return;
   }
   d.verdict = "unexplained";

@@ -373,6 +373,38 @@ void addUncertainty(FitResult& out, const Blocks& b, const Points& pts, double h
   }
 }
 
+// A fitted coefficient the data do not narrow is marked not determined, with the reason: one that
+// stopped at a physical bound (its value is the bound and its +- the curvature of a fit that wanted
+// to go past it, not a measurement); a magnitude (lower bound >= 0) whose uncertainty is as large as
+// its value (the data do not tell it from none); a signed one (a wind component) whose uncertainty
+// spans a quarter of its physical range. The covariance alone only drops directions that are
+// numerically flat: a wind of 15 +- 1e3 m/s and a hover power of 204 +- 1.5e3 W passed.
+void markUnresolved(FitResult& out) {
+  size_t i = 0;
+  for (const auto& e : out.model.effects()) {
+    for (const auto& cf : e->coefficients()) {
+      auto& c = out.coefficients[i++];
+      if (!c.fitted || !c.determined) continue;
+      std::string why;
+      if (c.at_bound) {
+        why = "it stopped at its physical bound, " + num(c.value) + " " + c.unit +
+              ": the data push it past the bound, so the value is the bound, not a measurement";
+        c.sigma = std::numeric_limits<double>::quiet_NaN();
+      } else if (std::isfinite(c.sigma) && cf.lower >= 0.0 && c.sigma >= std::abs(c.value)) {
+        why = "its uncertainty +- " + num(c.sigma, 2) + " " + c.unit + " is as large as its value " + num(c.value) +
+              ": the data do not tell it from none";
+      } else if (std::isfinite(c.sigma) && cf.lower < 0.0 && c.sigma > 0.25 * (cf.upper - cf.lower)) {
+        why = "its uncertainty +- " + num(c.sigma, 2) + " " + c.unit + " spans more than a quarter of its physical range [" +
+              num(cf.lower) + ", " + num(cf.upper) + "] " + c.unit;
+      }
+      if (why.empty()) continue;
+      c.determined = false;
+      c.why_not_determined = why;
+      out.notes.push_back(c.effect + "." + c.name + " is not determined by the data (" + why + ")");
+    }
+  }
+}
+
 }  // namespace
 
 FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data, const FitSettings& s) {
@@ -397,8 +429,9 @@ FitResult fitModel(const EnergyModel& start, const std::vector<SampleSet>& data,
   listCoefficients(out, held);
   if (b.any_free) addUncertainty(out, b, pts, s.huber_w, final_cost);
   for (const auto& c : out.coefficients) {
-    if (c.at_bound) out.notes.push_back(c.effect + "." + c.name + " stopped at a bound (" + num(c.value) + " " + c.unit + ")");
+    if (c.at_bound && !c.determined) out.notes.push_back(c.effect + "." + c.name + " stopped at a bound (" + num(c.value) + " " + c.unit + ")");
   }
+  markUnresolved(out);
   return out;
 }
 

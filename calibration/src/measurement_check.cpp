@@ -108,6 +108,37 @@ bool constantReading(const std::vector<double>& x, double relative, double& at) 
   return x.size() >= 3 && *hi - *lo <= relative * std::max(std::abs(*lo), std::abs(*hi));
 }
 
+// The voltage of the samples `idx` against the vehicle battery's full voltage (nothing when the
+// vehicle has no battery). Beyond [1 / unit_factor, unit_factor] x it the voltage's unit is wrong (a
+// voltage logged in millivolts read as a power a thousand times too high, blamed on the current
+// sensor): returned as the problem. Beyond [min_voltage_fraction, max_voltage_multiple] x it the
+// battery is another (a 6S log with a 3S vehicle file): a note in `c`, as the power is measured
+// either way but the battery model's figures are not this vehicle's.
+std::string voltageProblem(const logs::FlightLog& log, const std::vector<size_t>& idx, const energy::Vehicle& v,
+                           const MeasurementLimits& l, MeasurementCheck& c) {
+  if (!v.battery) return {};
+  std::vector<double> volts;
+  for (size_t i : idx)
+    if (std::isfinite(log.samples[i].voltage)) volts.push_back(log.samples[i].voltage);
+  const double med = median(volts), full = v.battery->voltageFull();
+  if (!(full > 0.0) || !std::isfinite(med)) return {};
+  if (med <= l.max_voltage_multiple * full && med >= l.min_voltage_fraction * full) return {};
+  const double ratio = med / full;
+  const std::string seen = "the battery voltage while airborne (median " + num(med, 4) +
+                           " V) is not that of the vehicle file's battery (fully charged at " + num(full, 4) + " V, '" +
+                           v.name + "')";
+  if (ratio < l.unit_factor && ratio > 1.0 / l.unit_factor) {
+    c.notes.push_back(seen + ": the power is measured either way, but the battery figures of the vehicle file (state "
+                      "of charge, endurance) are not this vehicle's");
+    return {};
+  }
+  const std::string hint = ratio > 300.0 && ratio < 3000.0 ? " (about 1000 times: logged in millivolts?)"
+                           : ratio > 30.0 && ratio < 300.0 ? " (about 100 times: logged in centivolts?)"
+                                                           : "";
+  return seen + "; " + num(ratio, 3) + " times it" + hint + ": the voltage's unit is wrong, or the vehicle file is not "
+         "the logged vehicle";
+}
+
 // Why the measured power of the samples `idx` cannot be a flying multirotor's (empty: it can).
 std::string powerProblem(const logs::FlightLog& log, const std::vector<size_t>& idx, const energy::Vehicle& v,
                          const MeasurementLimits& l, MeasurementCheck& c) {
@@ -154,6 +185,7 @@ std::string powerProblem(const logs::FlightLog& log, const std::vector<size_t>& 
   } else if (constantReading(pw, l.constant_relative, at)) {
     return "the measured power is constant at " + num(at, 6) + " W in all " + n + ": a fixed value, not a measurement";
   }
+  if (const std::string volt = voltageProblem(log, idx, v, l, c); !volt.empty()) return volt;
   const std::string seen = "median " + num(c.median_power_w, 4) + " W" +
                            (std::isfinite(c.median_current_a) ? " (battery current median " + num(c.median_current_a, 3) + " A)" : "");
   const std::string physics = " against " + num(c.hover_power_w, 4) + " W that '" + v.name + "' needs to hover (physics, marinsHoverPowerW)";
@@ -186,6 +218,9 @@ void validate(const MeasurementLimits& l) {
   checkSettingRange("MeasurementLimits", "max_altitude_change", l.max_altitude_change, 1e-9, inf);
   checkSettingRange("MeasurementLimits", "airborne_height", l.airborne_height, 0.0, inf);
   checkSettingRange("MeasurementLimits", "min_kept_s", l.min_kept_s, 0.0, inf);
+  checkSettingRange("MeasurementLimits", "min_voltage_fraction", l.min_voltage_fraction, 0.0, 1.0);
+  checkSettingRange("MeasurementLimits", "max_voltage_multiple", l.max_voltage_multiple, 1.0, inf);
+  checkSettingRange("MeasurementLimits", "unit_factor", l.unit_factor, 1.0, inf);
 }
 
 namespace {

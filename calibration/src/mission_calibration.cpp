@@ -316,24 +316,38 @@ struct BehaviourProblem {
 // Fits the behaviour: for each corner and speed-change variant (the autopilot's own rules, a stop at
 // every waypoint, speed changes a waypoint late, or both) the parameters by Nelder-Mead; the variant
 // with the least time misfit wins. Returns the parameters; sets the variant and its text in `r`.
-std::vector<double> fitBehaviour(const BehaviourProblem& bp, int max_evaluations, CalibrationResult& r, int& chosen) {
+std::vector<double> fitBehaviour(const BehaviourProblem& bp, int max_evaluations, double share, CalibrationResult& r,
+                                 int& chosen) {
   const char* kVariants[4] = {"the autopilot's own rules", "a stop at every waypoint",
                               "DO_CHANGE_SPEED one waypoint late", "a stop at every waypoint and DO_CHANGE_SPEED one waypoint late"};
   const std::vector<double> x0 = bp.start();
-  std::vector<double> x;
-  double best = 1e300;
+  std::vector<std::vector<double>> xs;
+  std::vector<double> cost;
   chosen = 0;
   std::ostringstream misfits;
   for (int variant = 0; variant < 4; ++variant) {
-    const auto xv = nelderMead([&](const std::vector<double>& p) { return bp.cost(p, variant); }, x0, max_evaluations);
-    const double c = bp.cost(xv, variant);
-    misfits << (variant ? "; " : "") << kVariants[variant] << " " << c;
-    if (c < best) best = c, x = xv, chosen = variant;
+    xs.push_back(nelderMead([&](const std::vector<double>& p) { return bp.cost(p, variant); }, x0, max_evaluations));
+    cost.push_back(bp.cost(xs.back(), variant));
+    misfits << (variant ? "; " : "") << kVariants[variant] << " " << num(cost.back(), 4);
+    if (cost.back() < cost[static_cast<std::size_t>(chosen)]) chosen = variant;
+  }
+  // Variants that fit within `share` of the best cannot be told apart by these flights (all four
+  // tie when no waypoint is flown through and no speed changes): the autopilot's own rules stay when
+  // they are among them, as a behaviour parameter the flights do not call to change stays.
+  const double best = cost[static_cast<std::size_t>(chosen)];
+  std::string tied;
+  for (int variant = 0; variant < 4; ++variant)
+    if (variant != chosen && cost[static_cast<std::size_t>(variant)] <= (1.0 + share) * best)
+      tied += (tied.empty() ? "" : ", ") + std::string(kVariants[variant]);
+  if (!tied.empty()) {
+    if (cost[0] <= (1.0 + share) * best) chosen = 0;
+    r.notes.push_back("these flights cannot tell the behaviours apart: " + std::string(kVariants[chosen]) + " and " + tied +
+                      " fit their times within " + num(100.0 * share) + " % of each other; " + kVariants[chosen] + " kept");
   }
   r.stop_at_waypoints = chosen & 1;
   r.speed_change_late = chosen & 2;
   r.fitted.push_back(std::string("behaviour: ") + kVariants[chosen] + " (time misfit: " + misfits.str() + ")");
-  return x;
+  return xs[static_cast<std::size_t>(chosen)];
 }
 
 // The behaviour parameters the flights do not call to change, returned to their starting values one
@@ -482,6 +496,17 @@ std::vector<FlightComparison> predictAll(const std::vector<Prepared>& prepared, 
   return out;
 }
 
+// The prediction settings a calibration found: take-off delay, corner and speed-change behaviour,
+// tracking error.
+mission::PredictSettings afterSettings(const CalibrationResult& r) {
+  mission::PredictSettings after;
+  after.flight.takeoff_delay_s = r.takeoff_delay_s;
+  after.flight.stop_at_waypoints = r.stop_at_waypoints;
+  after.flight.speed_change_late = r.speed_change_late;
+  after.flight.tracking_error = r.tracking.error;
+  return after;
+}
+
 }  // namespace
 
 CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, const energy::Vehicle& v,
@@ -513,17 +538,16 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
   for (const auto& fp : free) r.behaviour_before[fp.name] = autopilot.get(fp.name);
   const BehaviourProblem bp{prepared, autopilot, free, mission::airframeOfVehicle(v, v.name), s.sim_dt, r.tracking.error};
   int chosen = 0;
-  std::vector<double> x = fitBehaviour(bp, s.max_evaluations, r, chosen);
+  std::vector<double> x = fitBehaviour(bp, s.max_evaluations, s.keep_share, r, chosen);
   if (s.keep_share > 0.0 || s.keep_significance > 0.0)
     x = keepUnneededChanges(bp, x, chosen, s.max_evaluations, s.keep_share, s.keep_significance, r);
   bp.apply(x, r.autopilot, r.takeoff_delay_s);
   reportBehaviour(free, autopilot, r);
   if (prepared.size() >= 2 && !free.empty()) {
-    // The other behaviour parameters at their starting values (fitted jointly they would absorb the
-    // flights' differences), the take-off delay at the joint fit.
-    std::vector<double> base = bp.start();
-    base.back() = x.back();
-    base.front() = x.front();
+    // The other behaviour parameters and the take-off delay held at the joint fit (re-fitted per
+    // flight they would absorb the flights' differences; at their starting values, two copies of one
+    // flight each gave 90.6 cm/s/s where the joint fit, WPNAV_SPEED_DN moved, gave 83.8).
+    const std::vector<double>& base = x;
     checkAgreement(prepared, free.front(), base, [&](const std::vector<double>& xf, const Prepared& p) {
       return bp.flightCost(xf, chosen, p);
     }, s.keep_share, r);
@@ -531,12 +555,7 @@ CalibrationResult calibrateMissions(const std::vector<MissionFlight>& flights, c
       r.per_flight[i].kind = missionKind(prepared[i].steps, autopilot);
   }
   if (s.fit_energy) fitEnergy(flights, model, s.fit, r);
-  mission::PredictSettings after;
-  after.flight.takeoff_delay_s = r.takeoff_delay_s;
-  after.flight.stop_at_waypoints = r.stop_at_waypoints;
-  after.flight.speed_change_late = r.speed_change_late;
-  after.flight.tracking_error = r.tracking.error;
-  r.after = predictAll(prepared, v, r.model, r.autopilot, after);
+  r.after = predictAll(prepared, v, r.model, r.autopilot, afterSettings(r));
   return r;
 }
 

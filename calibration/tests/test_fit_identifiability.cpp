@@ -4,6 +4,8 @@
 // drag area of 12.5 m^2 fitted to hover noise.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "test_util.hpp"
 #include "wattswath/calibration/diagnose.hpp"
 
@@ -86,6 +88,59 @@ TEST(FitIdentifiability, NothingToFitStillAnswers) {
   ASSERT_EQ(r.coefficients.size(), 1u);
   EXPECT_FALSE(r.coefficients[0].determined);
   EXPECT_TRUE(std::isfinite(r.train_rmse_w));
+}
+
+// A straight cruise in one direction at one speed: drag and hover power (and a wind along the
+// track) change the power alike, so the fit can only give their sum. Each used to come back
+// "determined" with an uncertainty many times its value (a hover power of 204 +- 1.5e3 W, a wind
+// of 15 +- 1e3 m/s ready to paste into replay --wind); now none is.
+TEST(FitIdentifiability, AnUncertaintyLargerThanTheValueIsNotDetermined) {
+  const std::vector<std::string> effects = {"hover", "wind"};
+  SimulationSettings s;
+  s.rate_hz = 5.0;
+  s.power_noise_w = 10.0;
+  s.hover_s = 0.0;
+  const auto full = simulateFlight({{0, 0, 10}, {1500, 0, 10}}, buildModel(iris(), kPaper), s);
+  FlightLog cruise = full;  // the constant-speed middle only
+  cruise.samples.clear();
+  for (const auto& x : full.samples)
+    if (x.position.x() > 200 && x.position.x() < 1300) cruise.samples.push_back(x);
+  cruise.airborne = {{cruise.samples.front().t, cruise.samples.back().t}};
+  const PreparedLog log = prepareLog(cruise);
+  const FitResult r = fitModel(buildModel(iris(), effects), {{&log, {}}});
+  int undetermined = 0;
+  for (const auto& c : r.coefficients) {
+    if (!c.fitted) continue;
+    if (c.determined) {  // what stays determined is known to better than its own size
+      EXPECT_LT(c.sigma, std::abs(c.value)) << c.effect << "." << c.name;
+    } else {
+      ++undetermined;
+      EXPECT_FALSE(c.why_not_determined.empty());
+    }
+  }
+  EXPECT_GE(undetermined, 2) << describeEffect("wind", r.coefficients);
+  EXPECT_NE(describeEffect("wind", r.coefficients).find("wind not determined"), std::string::npos)
+      << describeEffect("wind", r.coefficients);
+}
+
+// A coefficient that stops at its physical bound is the bound, not a measurement: no +-, not
+// determined (fit printed "effective_mass 0 +- 0.96 kg", determined, where calibrate said "at its
+// bound ... not a measurement").
+TEST(FitIdentifiability, ACoefficientAtItsBoundIsNotDetermined) {
+  const PreparedLog log = fly({{0, 0, 0}, {0, 0, 15}, {160, 0, 15}, {160, 25, 15}, {0, 25, 15}, {0, 0, 0}}, {"hover"});
+  // The data have no kinetic power at all, and noise: the effective mass is pushed to 0 or near it.
+  const FitResult r = fitModel(buildModel(iris(), kPaper), {{&log, {}}});
+  const auto& m = find(r, "kinetic", "effective_mass");
+  if (m.at_bound) {
+    EXPECT_FALSE(m.determined);
+    EXPECT_TRUE(std::isnan(m.sigma));
+    EXPECT_NE(m.why_not_determined.find("stopped at its physical bound"), std::string::npos) << m.why_not_determined;
+  } else {
+    EXPECT_FALSE(m.determined && m.sigma >= m.value) << m.value << " +- " << m.sigma;
+  }
+  for (const auto& c : r.coefficients) {
+    EXPECT_FALSE(c.at_bound && c.determined) << c.effect << "." << c.name;
+  }
 }
 
 TEST(FitIdentifiability, SettingsAreValidated) {

@@ -51,6 +51,32 @@ TEST(MeasurementCheck, SimulatedFlightOfTheVehicleIsPlausible) {
   EXPECT_NEAR(c.median_power_w / c.hover_power_w, 1.0, 0.3);
 }
 
+// A voltage logged in millivolts read as a power a thousand times hover's and was blamed on the
+// current sensor; it is now named, with the likely unit. Another battery (4S for a 3S vehicle
+// file) is a note only: the power is measured either way.
+TEST(MeasurementCheck, AVoltageInMillivoltsIsNamedNotTheCurrent) {
+  FlightLog log = flight();
+  for (auto& x : log.samples) {
+    x.voltage *= 1000.0;
+    x.power *= 1000.0;
+  }
+  const auto c = checkMeasurement(log, iris());
+  EXPECT_TRUE(contains(c.power_problem, "battery voltage while airborne")) << c.power_problem;
+  EXPECT_TRUE(contains(c.power_problem, "logged in millivolts?")) << c.power_problem;
+  EXPECT_FALSE(contains(c.power_problem, "current sensor")) << c.power_problem;
+  FlightLog four = flight();
+  for (auto& x : four.samples) {
+    x.voltage *= 4.0 / 3.0 * 1.5;  // 2x: another pack, not another unit
+    x.power *= 4.0 / 3.0 * 1.5;
+    x.current /= 4.0 / 3.0 * 1.5;
+    x.power /= 4.0 / 3.0 * 1.5;
+  }
+  const auto n = checkMeasurement(four, iris());
+  EXPECT_TRUE(n.power_problem.empty()) << n.power_problem;
+  ASSERT_FALSE(n.notes.empty());
+  EXPECT_TRUE(contains(n.notes.back(), "not that of the vehicle file's battery")) << n.notes.back();
+}
+
 TEST(MeasurementCheck, CurrentStuckAtZeroIsRefusedNamingTheCurrent) {
   FlightLog log = scaled(0.0);
   const auto c = checkMeasurement(log, iris());

@@ -140,7 +140,8 @@ struct Diagnosis {
   std::vector<ResidualTable> residuals;     ///< residual tables of the model as given
   /// "missing_effect" (found effects leave no structure), "nothing_missing" (no effect kept, no
   /// structure), "unexplained" (a structure remains that no candidate explains) or "cannot_tell"
-  /// (too few independent samples, or no signal could be tested: no verdict)
+  /// (too few independent samples, no signal could be tested, or nothing found among the
+  /// candidates tested while others could not be tested: no verdict)
   std::string verdict;
   std::vector<CandidateResult> found;       ///< the kept effects in the order they were added
   std::vector<std::string> search;          ///< the greedy search step by step, in words
@@ -156,6 +157,10 @@ struct Diagnosis {
   /// parasitic_drag, being drag at air speed, so the two never appear together)
   std::vector<std::string> final_effects;
   std::string conclusion;                   ///< the verdict in one or two sentences
+  /// Candidates these data cannot test (none of their coefficients could be fitted), each as
+  /// "effect: why" (e.g. "wind: 0 of 278 airborne samples faster than 3 m/s ..."): a verdict of
+  /// nothing missing is then "cannot_tell"
+  std::vector<std::string> untested;
 };
 
 /// Greedy search with a stopping rule (issue 18): each round tries the effects not in the model,

@@ -33,6 +33,13 @@ struct MeasurementLimits {
   double max_altitude_change = 2000.0;  ///< [m] farther up or down from the first sample is diverged; > 0
   double airborne_height = 1.0;         ///< [m] above the lowest sample counts as airborne when the log has no windows; >= 0
   double min_kept_s = 10.0;             ///< [s] a cut leaving less than this refuses the log instead; >= 0
+  /// [-] airborne median voltage below this x the vehicle battery's full voltage is another battery (a note); 0..1
+  double min_voltage_fraction = 0.5;
+  /// [-] airborne median voltage above this x the vehicle battery's full voltage is another battery (a note); >= 1
+  double max_voltage_multiple = 1.6;
+  /// [-] airborne median voltage beyond this factor of the full voltage either way is a wrong unit
+  /// (the log is refused, unless --trust-power); within it, a note only; >= 1
+  double unit_factor = 5.0;
 };
 
 /// What checkMeasurement() found in one log.

@@ -180,7 +180,7 @@ struct CalibrationResult {
   energy::EnergyModel model;              ///< with fitted coefficients
   std::vector<std::string> fitted;        ///< "NAME: before -> after unit" per parameter
   std::vector<FlightComparison> before;   ///< per flight, uncalibrated
-  std::vector<FlightComparison> after;    ///< per flight, calibrated
+  std::vector<FlightComparison> after;    ///< per flight, calibrated on all flights (in-sample)
   std::vector<std::string> notes;         ///< what could not be determined, and why
   std::vector<std::string> kept_at_start;  ///< behaviour parameters the flights do not call to change (keep_share)
   std::string acceleration_parameter;     ///< the acceleration parameter of per_flight (empty: one flight)
