@@ -68,7 +68,8 @@ json diagnosisJson(const calibration::Diagnosis& d) {
     const auto& g = d.signatures[k];
     tested.push_back(signatureJson(g));
     // With no significant signal, the three strongest are given as leads (significant: false).
-    if (d.verdict == "unexplained" && (g.significant || (!any && k < 3))) sigs.push_back(signatureJson(g));
+    if (d.verdict == "unexplained" && (g.significant || (!any && k < 3 && g.strength >= calibration::kMinLeadStrength)))
+      sigs.push_back(signatureJson(g));
   }
   for (const auto& st : d.staircase) {
     stair.push_back({{"label", st.label},
@@ -115,7 +116,7 @@ void printDiagnosis(const calibration::Diagnosis& d) {
     for (const auto& g : d.signatures) any = any || g.significant;
     for (size_t k = 0; k < d.signatures.size(); ++k) {
       const auto& g = d.signatures[k];
-      if (!g.significant && (any || k >= 3)) continue;
+      if (!g.significant && (any || k >= 3 || g.strength < calibration::kMinLeadStrength)) continue;
       std::cout << "  " << g.signal << " (" << fixedText(100.0 * g.strength, 1) << " % of its variance, " << g.form
                 << (g.significant ? "" : ", not significant: a lead") << "): " << g.sentence << "\n";
     }

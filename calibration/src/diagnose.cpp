@@ -251,8 +251,14 @@ void conclude(Diagnosis& d) {
                                   : "Found " + found + ", but a structure remains that no candidate explains") +
                  " (" + noise + ", correlated in time).";
   if (sig.empty()) {
-    d.conclusion += " No single tested signal carries it significantly; the strongest are listed as leads.";
-    for (size_t k = 0; k < d.signatures.size() && k < 3; ++k) sig.push_back(&d.signatures[k]);
+    // Leads only where a signal carries a visible share of the residual (the three strongest were
+    // cited at 0 % of its variance).
+    for (size_t k = 0; k < d.signatures.size() && sig.size() < 3; ++k)
+      if (d.signatures[k].strength >= kMinLeadStrength) sig.push_back(&d.signatures[k]);
+    d.conclusion += sig.empty() ? " No tested signal carries as much as " + num(100.0 * kMinLeadStrength, 2) +
+                                      " % of it: sensor noise correlated in time, or an effect none of the tested "
+                                      "signals follows."
+                                : " No single tested signal carries it significantly; the strongest are listed as leads.";
   }
   std::vector<std::string> said;  // speed and speed squared share a sentence: say it once
   for (size_t k = 0; k < sig.size() && said.size() < 3; ++k) {

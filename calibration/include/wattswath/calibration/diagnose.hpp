@@ -129,6 +129,10 @@ struct StaircaseStep {
   ErrorMetrics metrics;  ///< held-out metrics (all data for the unfitted model)
 };
 
+/// [-] Share of the residual's variance a signal that is not significant must carry to be cited as a
+/// lead of an "unexplained" verdict (at most three, strongest first).
+inline constexpr double kMinLeadStrength = 0.05;
+
 /// What the diagnosis found.
 struct Diagnosis {
   std::string validation;                   ///< "leave-one-flight-out" or "5 contiguous time blocks"
