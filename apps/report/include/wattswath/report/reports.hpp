@@ -230,7 +230,7 @@ struct TurnReportData {
   Facts facts;                                      ///< vehicle, limits, settings
   std::vector<TurnRow> rows;                        ///< grouped by angle in the plots
   std::optional<double> focus_beta;                 ///< [rad] the user's corner angle, drawn alone when angles overlap
-  double overlap_tolerance = 0.05;                  ///< relative spread across angles below which one angle is drawn
+  double overlap_tolerance = 0.05;                  ///< [-] relative spread across angles below which one angle is drawn
 };
 
 /// Builds the turn-strategy report (energy vs leg length per angle, saving, Table V).
