@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "median.hpp"
 #include "wattswath/energy/format.hpp"
 #include "wattswath/logs/local_fit.hpp"
 
@@ -14,12 +15,6 @@ namespace {
 
 void checkRange(const char* field, double v, double lo, double hi) {
   energy::detail::checkSettingRange("SegmentSettings", field, v, lo, hi);
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 // Unwraps angles so consecutive values differ by less than pi.
@@ -134,7 +129,7 @@ void classifySamples(const std::vector<LogSample>& S, const std::vector<double>&
   const int half = static_cast<int>(set.yaw_rate_window);
   double zmin = S[0].position.z();
   for (const auto& x : S) zmin = std::min(zmin, x.position.z());
-  const double pmed = median(P.measured);
+  const double pmed = detail::upperMedian(P.measured);  // P.measured has n >= 1 samples
   for (int i = 0; i < n; ++i) {
     MotionState& m = P.states[i];
     m.t = t[i];

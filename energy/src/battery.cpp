@@ -1,9 +1,9 @@
 #include "wattswath/energy/battery.hpp"
+#include "wattswath/energy/format.hpp"
 
 #include <cmath>
 #include <algorithm>
 #include <regex>
-#include <sstream>
 #include <stdexcept>
 
 namespace wattswath::energy {
@@ -11,25 +11,20 @@ namespace {
 
 constexpr double kSecondsPerHour = 3600.0;
 
-std::string fmt(double x) {
-  std::ostringstream os;
-  os.precision(10);
-  os << x;
-  return os.str();
-}
+using detail::formatNumber;
 
 void checkSettings(const DischargeSettings& s) {
   if (!(std::isfinite(s.dt_s) && s.dt_s > 0.0 && s.dt_s <= 600.0)) {
-    throw std::invalid_argument("battery discharge: dt = " + fmt(s.dt_s) + " s, expected a time step in (0, 600] s");
+    throw std::invalid_argument("battery discharge: dt = " + formatNumber(s.dt_s) + " s, expected a time step in (0, 600] s");
   }
   if (!(std::isfinite(s.max_time_s) && s.max_time_s > 0.0 && s.max_time_s <= 1e8)) {
-    throw std::invalid_argument("battery discharge: max_time = " + fmt(s.max_time_s) + " s, expected (0, 1e8] s");
+    throw std::invalid_argument("battery discharge: max_time = " + formatNumber(s.max_time_s) + " s, expected (0, 1e8] s");
   }
 }
 
 void checkPower(double power_w, const char* what) {
   if (!(std::isfinite(power_w) && power_w >= 0.0 && power_w <= 1e7)) {
-    throw std::invalid_argument(std::string("battery discharge: ") + what + " = " + fmt(power_w) +
+    throw std::invalid_argument(std::string("battery discharge: ") + what + " = " + formatNumber(power_w) +
                                 " W, expected a power in [0, 1e7] W");
   }
 }
@@ -86,7 +81,7 @@ EnduranceResult discharge(const Battery& b, PowerAt power_at, double end_s, cons
 
 double peukertCapacityAh(const Battery& b, double current_a) {
   if (!(std::isfinite(current_a) && current_a > 0.0)) {
-    throw std::invalid_argument("peukertCapacityAh: current = " + fmt(current_a) + " A, expected > 0");
+    throw std::invalid_argument("peukertCapacityAh: current = " + formatNumber(current_a) + " A, expected > 0");
   }
   const double c0 = b.capacityAh();
   const double t0_h = b.pack.rated_discharge_time_s / kSecondsPerHour;
@@ -122,7 +117,7 @@ EnduranceResult simulateProfile(const Battery& b, const std::vector<PowerStep>& 
     const auto& step = profile[k];
     if (!(std::isfinite(step.duration_s) && step.duration_s >= 0.0)) {
       throw std::invalid_argument("battery profile: step " + std::to_string(k) + " duration = " +
-                                  fmt(step.duration_s) + " s, expected >= 0");
+                                  formatNumber(step.duration_s) + " s, expected >= 0");
     }
     checkPower(step.power_w, ("step " + std::to_string(k) + " power").c_str());
     total += step.duration_s;

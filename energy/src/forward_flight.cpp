@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 // Boost 1.74's pchip.hpp calls isnan unqualified; make std::isnan visible at its definition.
@@ -16,18 +15,14 @@ using std::isnan;
 #include "coefficient_util.hpp"
 
 #include "wattswath/energy/battery.hpp"
+#include "wattswath/energy/format.hpp"
 
 namespace wattswath::energy {
 namespace {
 
 using nlohmann::json;
 
-std::string fmt(double x) {
-  std::ostringstream os;
-  os.precision(10);
-  os << x;
-  return os.str();
-}
+using detail::formatNumber;
 
 double idealHoverRotorPower(double total_thrust_n, double rho, double disk_area_m2) {
   return std::pow(total_thrust_n, 1.5) / std::sqrt(2.0 * rho * disk_area_m2);  // Eq. 4-5 at U = 0
@@ -84,7 +79,7 @@ struct EfficiencyCurve::Table {
 
 EfficiencyCurve EfficiencyCurve::constant(double eta) {
   if (!(std::isfinite(eta) && eta > 0.0 && eta <= 1.0)) {
-    throw std::invalid_argument("efficiency = " + fmt(eta) + ", expected an efficiency in (0, 1]");
+    throw std::invalid_argument("efficiency = " + formatNumber(eta) + ", expected an efficiency in (0, 1]");
   }
   EfficiencyCurve c;
   c.eta_ = eta;
@@ -108,15 +103,15 @@ EfficiencyCurve EfficiencyCurve::fromThrustPowerTable(std::vector<double> thrust
   for (size_t k = 0; k < thrust_n.size(); ++k) {
     const std::string row = where + " row " + std::to_string(k);
     if (!(std::isfinite(thrust_n[k]) && thrust_n[k] > 0.0) || (k > 0 && !(thrust_n[k] > thrust_n[k - 1]))) {
-      throw std::invalid_argument(row + ": thrust = " + fmt(thrust_n[k]) + " N, expected positive and increasing");
+      throw std::invalid_argument(row + ": thrust = " + formatNumber(thrust_n[k]) + " N, expected positive and increasing");
     }
     if (!(std::isfinite(power_w[k]) && power_w[k] > 0.0)) {
-      throw std::invalid_argument(row + ": power = " + fmt(power_w[k]) + " W, expected > 0");
+      throw std::invalid_argument(row + ": power = " + formatNumber(power_w[k]) + " W, expected > 0");
     }
     const double eta = idealHoverRotorPower(thrust_n[k] * rotors, rho, disk_area_m2) / (rotors * power_w[k]);
     if (!(eta > 0.0 && eta <= 1.0)) {
-      throw std::invalid_argument(row + ": thrust " + fmt(thrust_n[k]) + " N at " + fmt(power_w[k]) +
-                                  " W gives eta = " + fmt(eta) +
+      throw std::invalid_argument(row + ": thrust " + formatNumber(thrust_n[k]) + " N at " + formatNumber(power_w[k]) +
+                                  " W gives eta = " + formatNumber(eta) +
                                   ", expected (0, 1] (input power below ideal momentum-theory power: check units "
                                   "and that the table is per rotor)");
     }
@@ -141,7 +136,7 @@ bool EfficiencyCurve::inTableRange(double total_thrust_n) const {
 
 EfficiencyCurve EfficiencyCurve::scaled(double factor) const {
   if (!(std::isfinite(factor) && factor > 0.0)) {
-    throw std::invalid_argument("efficiency scale = " + fmt(factor) + ", expected > 0");
+    throw std::invalid_argument("efficiency scale = " + formatNumber(factor) + ", expected > 0");
   }
   EfficiencyCurve c = *this;
   c.scale_ = scale_ * factor;
@@ -177,7 +172,7 @@ HwangExtension hwangExtension(const Vehicle& v) {
 
 ForwardFlightParameters forwardFlightParameters(const Vehicle& v, double payload_kg) {
   if (!(std::isfinite(payload_kg) && payload_kg >= 0.0 && payload_kg <= 1e4)) {
-    throw std::invalid_argument("payload = " + fmt(payload_kg) + " kg, expected a mass in [0, 10000] kg");
+    throw std::invalid_argument("payload = " + formatNumber(payload_kg) + " kg, expected a mass in [0, 10000] kg");
   }
   ForwardFlightParameters p;
   p.mass_kg = v.mass_kg + payload_kg;
@@ -209,9 +204,9 @@ ForwardFlightParameters forwardFlightParameters(const Vehicle& v, double payload
     // momentum theory (docs/reproduction.md): read against it the same vehicle has half that
     // efficiency, and hovers at the power its file gives (the IRIS: 215 W, 225 W measured).
     p.efficiency = EfficiencyCurve::constant(0.5 * v.totalEfficiency());
-    p.efficiency_note = "efficiency " + fmt(0.5 * v.totalEfficiency()) +
+    p.efficiency_note = "efficiency " + formatNumber(0.5 * v.totalEfficiency()) +
                         ": the vehicle file has no extensions.hwang efficiency, and its eta_mot x eta_prop (" +
-                        fmt(v.totalEfficiency()) +
+                        formatNumber(v.totalEfficiency()) +
                         ") goes with Marins Eq. 4, which is twice ideal momentum theory, so it is halved here and the "
                         "hover power is the file's Marins hover power (docs/reproduction.md)";
   }
@@ -236,9 +231,9 @@ Vehicle withBatteryConfiguration(const Vehicle& v, int series, int parallel) {
 double inducedVelocity(double thrust_n, double speed_mps, double tilt_rad, double rho, double disk_area_m2) {
   if (!(std::isfinite(thrust_n) && thrust_n >= 0.0) || !(std::isfinite(speed_mps) && speed_mps >= 0.0) ||
       !(tilt_rad >= 0.0 && tilt_rad < 0.5 * M_PI) || !(rho > 0.0) || !(disk_area_m2 > 0.0)) {
-    throw std::invalid_argument("inducedVelocity: thrust " + fmt(thrust_n) + " N, speed " + fmt(speed_mps) +
-                                " m/s, tilt " + fmt(tilt_rad) + " rad, rho " + fmt(rho) + ", area " +
-                                fmt(disk_area_m2) + ": expected T >= 0, U >= 0, tilt in [0, pi/2), rho > 0, A > 0");
+    throw std::invalid_argument("inducedVelocity: thrust " + formatNumber(thrust_n) + " N, speed " + formatNumber(speed_mps) +
+                                " m/s, tilt " + formatNumber(tilt_rad) + " rad, rho " + formatNumber(rho) + ", area " +
+                                formatNumber(disk_area_m2) + ": expected T >= 0, U >= 0, tilt in [0, pi/2), rho > 0, A > 0");
   }
   const double c = thrust_n / (2.0 * rho * disk_area_m2);
   const double hover = std::sqrt(c);
@@ -262,7 +257,7 @@ double inducedVelocity(double thrust_n, double speed_mps, double tilt_rad, doubl
 
 ForwardFlightState forwardFlight(const ForwardFlightParameters& p, double speed_mps) {
   if (!(std::isfinite(speed_mps) && speed_mps >= 0.0 && speed_mps <= 200.0)) {
-    throw std::invalid_argument("forward flight: speed = " + fmt(speed_mps) + " m/s, expected [0, 200] m/s");
+    throw std::invalid_argument("forward flight: speed = " + formatNumber(speed_mps) + " m/s, expected [0, 200] m/s");
   }
   if (!(p.mass_kg > 0.0) || !(p.disk_area_m2 > 0.0) || !(p.drag_area_m2 >= 0.0) || !(p.air_density_kgpm3 > 0.0)) {
     throw std::invalid_argument("forward flight: mass, disk area and air density must be > 0 and drag area >= 0");

@@ -23,14 +23,6 @@ const char* toString(Phase p) {
   return "?";
 }
 
-Phase phaseFromString(const std::string& name) {
-  for (int i = 0; i < kPhaseCount; ++i) {
-    if (name == toString(static_cast<Phase>(i))) return static_cast<Phase>(i);
-  }
-  throw std::invalid_argument("unknown phase '" + name +
-                              "', expected accelerate, cruise, brake, turn, climb, descent, hover or ground");
-}
-
 MotionState stateAt(const Piece& p, double tau, double t0) {
   MotionState s;
   s.t = t0 + tau;

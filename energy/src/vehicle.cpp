@@ -1,4 +1,5 @@
 #include "wattswath/energy/vehicle.hpp"
+#include "wattswath/energy/format.hpp"
 #include "wattswath/io/strict_json.hpp"
 #include "wattswath/io/text_file.hpp"
 
@@ -7,7 +8,6 @@
 #include <cstdint>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -20,19 +20,14 @@ using nlohmann::json;
 
 std::string prefix(const std::string& source) { return source.empty() ? "" : source + ": "; }
 
-std::string fmt(double x) {
-  std::ostringstream os;
-  os.precision(10);
-  os << x;
-  return os.str();
-}
+using detail::formatNumber;
 
 void requireRange(const std::string& source, const char* field, double value, double lo, bool lo_open,
                   double hi, bool hi_open, const char* expected) {
   const bool ok = std::isfinite(value) && (lo_open ? value > lo : value >= lo) &&
                   (hi_open ? value < hi : value <= hi);
   if (!ok) {
-    throw std::invalid_argument(prefix(source) + "field '" + field + "' = " + fmt(value) +
+    throw std::invalid_argument(prefix(source) + "field '" + field + "' = " + formatNumber(value) +
                                 ", expected " + expected);
   }
 }

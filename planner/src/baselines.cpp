@@ -56,7 +56,7 @@ double lowerBound(const SurveyProblem& problem, const energy::EnergyModel& model
   for (const auto& z : problem.no_fly) free_area -= std::abs(geometry::signedArea(z));  // may overlap the outside: bound stays a bound
   free_area = std::max(free_area, 0.0);
   double approach = kInf;
-  if (insideRing(problem.home, outer)) approach = 0.0;
+  if (geometry::insideRing(outer, problem.home)) approach = 0.0;
   for (size_t i = 0; i < outer.size(); ++i)
     approach = std::min(approach, geometry::distanceToSegment(problem.home, outer[i], outer[(i + 1) % outer.size()]));
   const double swath = std::max(0.0, free_area / problem.spacing - problem.footprint);

@@ -15,6 +15,7 @@
 #include "search_context.hpp"
 #include "spiral_plan.hpp"
 #include "verification.hpp"
+#include "wattswath/geometry/check.hpp"
 #include "wattswath/planner/order.hpp"
 #include "wattswath/planner/transit.hpp"
 
@@ -31,9 +32,9 @@ void checkFlyable(const SurveyProblem& problem, const TransitRouter& router) {
   for (size_t i = 0; i < problem.no_fly.size(); ++i) {
     const auto& z = problem.no_fly[i];
     const bool area_inside = std::all_of(problem.area.outer.begin(), problem.area.outer.end(),
-                                         [&](const geometry::Point& p) { return insideRing(p, z); });
+                                         [&](const geometry::Point& p) { return geometry::insideRing(z, p); });
     const bool zone_reaches_in = std::any_of(z.begin(), z.end(), [&](const geometry::Point& p) {
-      return insideRing(p, problem.area.outer);
+      return geometry::insideRing(problem.area.outer, p);
     });
     if (area_inside && !zone_reaches_in) {
       throw std::invalid_argument("SurveyProblem.no_fly[" + std::to_string(i) +

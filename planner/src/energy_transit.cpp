@@ -16,6 +16,7 @@
 #include <ompl/util/Time.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "wattswath/geometry/check.hpp"
 #include "wattswath/planner/transit.hpp"
 
 namespace wattswath::planner {
@@ -68,8 +69,8 @@ EnergyTransit planEnergyTransit(const Point& a, const Point& b, const std::vecto
                                 RouteScorer& scorer, const EnergyTransitSettings& s) {
   s.validate();
   for (const auto& r : obstacles) {
-    if (insideRing(a, r)) throw std::invalid_argument("energy transit: the start point is inside a no-fly zone");
-    if (insideRing(b, r)) throw std::invalid_argument("energy transit: the goal point is inside a no-fly zone");
+    if (geometry::insideRing(r, a)) throw std::invalid_argument("energy transit: the start point is inside a no-fly zone");
+    if (geometry::insideRing(r, b)) throw std::invalid_argument("energy transit: the goal point is inside a no-fly zone");
   }
   static const bool seeded = [&s]() {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);  // library code never prints (set before any OMPL call)
@@ -94,7 +95,7 @@ EnergyTransit planEnergyTransit(const Point& a, const Point& b, const std::vecto
   auto si = ss.getSpaceInformation();
   ss.setStateValidityChecker([&obstacles](const ob::State* st) {
     const Point p = pointOf(st);
-    return std::none_of(obstacles.begin(), obstacles.end(), [&](const geometry::Ring& r) { return insideRing(p, r); });
+    return std::none_of(obstacles.begin(), obstacles.end(), [&](const geometry::Ring& r) { return geometry::insideRing(r, p); });
   });
   // Motions are checked exactly against the polygons, not by sampling.
   class SegmentValidator : public ob::MotionValidator {

@@ -142,7 +142,7 @@ double stopEstimate(const Route& r, const StopTable& stop, const RouteScorer& sc
 std::optional<geometry::PolygonWithHoles> areaWithZones(const SurveyProblem& pr, std::string* why) {
   geometry::PolygonWithHoles area = pr.area;
   for (const auto& z : pr.no_fly) {
-    const bool inside = std::all_of(z.begin(), z.end(), [&](const Point& p) { return insideRing(p, pr.area.outer); });
+    const bool inside = std::all_of(z.begin(), z.end(), [&](const Point& p) { return geometry::insideRing(pr.area.outer, p); });
     const bool is_hole = std::any_of(pr.area.holes.begin(), pr.area.holes.end(), [&](const Ring& h) {
       return h.size() == z.size() && std::all_of(z.begin(), z.end(), [&](const Point& p) {
                return std::any_of(h.begin(), h.end(), [&](const Point& q) { return (p - q).norm() < 1e-6; });

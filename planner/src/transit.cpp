@@ -50,8 +50,6 @@ using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS
 
 }  // namespace
 
-bool insideRing(const Point& p, const Ring& ring) { return geometry::insideRing(ring, p, 0.0); }
-
 bool segmentEntersRing(const Point& a, const Point& b, const Ring& ring) {
   const size_t n = ring.size();
   for (size_t i = 0; i < n; ++i)
@@ -69,7 +67,7 @@ bool segmentEntersRing(const Point& a, const Point& b, const Ring& ring) {
   }
   if (ts.empty()) {
     const Point m = a + 0.5 * d;
-    return insideRing(m, ring) && !onBoundary(m, ring);
+    return geometry::insideRing(ring, m) && !onBoundary(m, ring);
   }
   ts.push_back(0.0);
   ts.push_back(1.0);
@@ -77,7 +75,7 @@ bool segmentEntersRing(const Point& a, const Point& b, const Ring& ring) {
   for (size_t i = 0; i + 1 < ts.size(); ++i) {
     if (ts[i + 1] - ts[i] < 1e-12) continue;
     const Point m = a + d * (0.5 * (ts[i] + ts[i + 1]));
-    if (insideRing(m, ring) && !onBoundary(m, ring)) return true;
+    if (geometry::insideRing(ring, m) && !onBoundary(m, ring)) return true;
   }
   return false;
 }
@@ -99,7 +97,7 @@ struct TransitRouter::Impl {
   }
   bool blocked(const Point& p) const {
     for (size_t i = 0; i < obstacles.size(); ++i)
-      if (boxes[i].contains(p) && insideRing(p, obstacles[i])) return true;
+      if (boxes[i].contains(p) && geometry::insideRing(obstacles[i], p)) return true;
     return false;
   }
 };

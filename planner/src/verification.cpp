@@ -154,7 +154,7 @@ std::vector<std::string> checkPlan(const SurveyProblem& pr, const geometry::Cove
     }
     for (size_t k = 0; k + 1 < pts.size(); ++k)
       for (size_t o = 0; o < obstacles.size(); ++o)
-        if (segmentEntersRing(pts[k], pts[k + 1], obstacles[o]) || insideRing(pts[k], obstacles[o]))
+        if (segmentEntersRing(pts[k], pts[k + 1], obstacles[o]) || geometry::insideRing(obstacles[o], pts[k]))
           problems.push_back("leg " + std::to_string(i) + " enters " +
                              "no-fly zone " + std::to_string(o));
   }

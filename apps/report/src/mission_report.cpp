@@ -322,6 +322,4 @@ HtmlReport missionReport(const MissionReportData& d) {
   return r;
 }
 
-std::string missionReportHtml(const MissionReportData& d) { return missionReport(d).html(); }
-
 }  // namespace wattswath::report

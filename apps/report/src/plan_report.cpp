@@ -288,6 +288,4 @@ HtmlReport planReport(const PlanReportData& d) {
   return r;
 }
 
-std::string planReportHtml(const PlanReportData& d) { return planReport(d).html(); }
-
 }  // namespace wattswath::report

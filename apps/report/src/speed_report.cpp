@@ -81,6 +81,4 @@ HtmlReport speedReport(const SpeedReportData& d) {
   return r;
 }
 
-std::string speedReportHtml(const SpeedReportData& d) { return speedReport(d).html(); }
-
 }  // namespace wattswath::report

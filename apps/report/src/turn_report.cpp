@@ -194,6 +194,4 @@ HtmlReport turnReport(const TurnReportData& d) {
   return r;
 }
 
-std::string turnReportHtml(const TurnReportData& d) { return turnReport(d).html(); }
-
 }  // namespace wattswath::report

@@ -321,6 +321,4 @@ void addValidation(HtmlReport& r, const ValidationReportData& d) {
   if (!d.diagnosis.empty()) addDiagnosis(r, d);
 }
 
-std::string validationReportHtml(const ValidationReportData& d) { return validationReport(d).html(); }
-
 }  // namespace wattswath::report

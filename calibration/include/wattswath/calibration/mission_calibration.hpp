@@ -35,15 +35,15 @@ struct MissionFlight {
 
 /// Times [s] of a flight's parts, measured on a trajectory.
 struct FlightTimes {
-  double total_s = 0.0;             ///< first to last sample
-  double takeoff_s = 0.0;           ///< until the climb reaches 90 % of the first waypoint's height
-  double mission_s = 0.0;           ///< first to last waypoint passage
-  double return_s = 0.0;            ///< last waypoint passage to the end
+  double total_s = 0.0;             ///< [s] first to last sample
+  double takeoff_s = 0.0;           ///< [s] until the climb reaches 90 % of the first waypoint's height
+  double mission_s = 0.0;           ///< [s] first to last waypoint passage
+  double return_s = 0.0;            ///< [s] last waypoint passage to the end
   /// [s] when each waypoint is passed: the middle of the time the track spends within 2 m of its
   /// closest approach (entry and exit interpolated between samples; the closest sample when the
   /// track starts or ends inside), NaN when it never comes within the match distance
   std::vector<double> passage_s;
-  std::vector<double> leg_s;        ///< between consecutive matched passages (NaN when either is unmatched)
+  std::vector<double> leg_s;        ///< [s] between consecutive matched passages (NaN when either is unmatched)
   std::vector<double> leg_energy_j; ///< [J] energy between consecutive passages (NaN when either is unmatched)
   std::vector<double> leg_speed_mps;  ///< [m/s] mean speed along the path between consecutive passages
   /// [m/s] highest horizontal speed between consecutive passages (each speed over a 1 s window, so a

@@ -19,8 +19,8 @@ struct Coefficient {
   std::string name;     ///< identifier, e.g. "drag_area"
   double value = 0.0;   ///< current value, in `unit`
   std::string unit;     ///< SI unit, e.g. "m^2"
-  double lower = 0.0;   ///< smallest physically allowed value (sign constraint)
-  double upper = 1e9;   ///< largest physically allowed value
+  double lower = 0.0;   ///< smallest physically allowed value, in `unit` (sign constraint)
+  double upper = 1e9;   ///< largest physically allowed value, in `unit`
   std::string meaning;  ///< plain-language meaning, e.g. "drag area C_D A of the airframe"
 };
 

@@ -20,9 +20,6 @@ inline constexpr int kPhaseCount = 8;
 /// Lower-case name of a phase ("accelerate", "cruise", ...).
 const char* toString(Phase p);
 
-/// Parses a phase name as toString() writes it; throws std::invalid_argument otherwise.
-Phase phaseFromString(const std::string& name);
-
 /// One constant-acceleration piece of flight. A turn in place has zero length and a yaw angle;
 /// an arc has length and a yaw angle; a hover has zero length and a duration.
 struct Piece {

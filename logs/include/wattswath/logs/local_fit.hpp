@@ -1,6 +1,8 @@
 #pragma once
-// Private helper of energy/src: derivative of a local quadratic least-squares fit (Savitzky-Golay
-// smoothing generalised to uneven time steps). Not installed; used by log_io.cpp and replay.cpp.
+// Shared helper in logs::detail (not part of the logs API): derivative of a local quadratic
+// least-squares fit (Savitzky-Golay smoothing generalised to uneven time steps). Used by
+// logs/src/log_io.cpp (velocities and accelerations of a CSV log) and calibration/src/replay.cpp
+// (yaw rate); a public header so calibration can include it, hence installed with logs' include/.
 #include <algorithm>
 
 #include <Eigen/Dense>

@@ -19,9 +19,6 @@ struct TransitSettings {
 /// Whether the open segment a-b enters the interior of `ring` (touching its boundary is allowed).
 bool segmentEntersRing(const geometry::Point& a, const geometry::Point& b, const geometry::Ring& ring);
 
-/// Whether point `p` is strictly inside `ring` (even-odd rule) [m].
-bool insideRing(const geometry::Point& p, const geometry::Ring& ring);
-
 /// Shortest collision-free polylines between points among fixed polygonal obstacles.
 class TransitRouter {
  public:

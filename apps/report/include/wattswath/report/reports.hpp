@@ -133,8 +133,6 @@ HtmlReport planReport(const PlanReportData& data);
 /// pattern (legend), a table per sortie, the total against the one unlimited-battery flight, and
 /// the fleet's schedule when there is one.
 void addPlanSorties(HtmlReport& report, const PlanReportData& data);
-/// The plan report as one HTML page.
-std::string planReportHtml(const PlanReportData& data);
 
 // ---------------------------------------------------------------- validation report
 
@@ -212,8 +210,6 @@ HtmlReport validationReport(const ValidationReportData& data);
 /// Appends the validation report's sections (all but its title and facts) to `report`; throws
 /// like validationReport.
 void addValidation(HtmlReport& report, const ValidationReportData& data);
-/// The validation report as one HTML page.
-std::string validationReportHtml(const ValidationReportData& data);
 
 // ---------------------------------------------------------------- turn-strategy and speed reports
 
@@ -234,13 +230,11 @@ struct TurnReportData {
   Facts facts;                                      ///< vehicle, limits, settings
   std::vector<TurnRow> rows;                        ///< grouped by angle in the plots
   std::optional<double> focus_beta;                 ///< [rad] the user's corner angle, drawn alone when angles overlap
-  double overlap_tolerance = 0.05;                  ///< relative spread across angles below which one angle is drawn
+  double overlap_tolerance = 0.05;                  ///< [-] relative spread across angles below which one angle is drawn
 };
 
 /// Builds the turn-strategy report (energy vs leg length per angle, saving, Table V).
 HtmlReport turnReport(const TurnReportData& data);
-/// The turn-strategy report as one HTML page.
-std::string turnReportHtml(const TurnReportData& data);
 
 /// Optimal cruise speed against leg length for one model variant (Marins et al. Fig. 3).
 struct SpeedCurve {
@@ -270,8 +264,6 @@ struct SpeedReportData {
 
 /// Builds the optimal-speed report (v_opt vs distance, leg energy vs speed).
 HtmlReport speedReport(const SpeedReportData& data);
-/// The optimal-speed report as one HTML page.
-std::string speedReportHtml(const SpeedReportData& data);
 
 // ---------------------------------------------------------------- mission report (predict)
 
@@ -305,8 +297,6 @@ struct MissionReportData {
 /// Builds the mission report (map by phase with waypoint numbers, speed / altitude / battery over
 /// time, phase table and verdict). Throws std::invalid_argument when per-sample vectors differ in length.
 HtmlReport missionReport(const MissionReportData& data);
-/// The mission report as one HTML page.
-std::string missionReportHtml(const MissionReportData& data);
 
 // ---------------------------------------------------------------- mission replay (replay --mission)
 
