@@ -7,19 +7,14 @@
 #include <limits>
 #include <stdexcept>
 
+#include "median.hpp"
 #include "number_text.hpp"
 #include "wattswath/energy/format.hpp"
 
 namespace wattswath::calibration {
 using detail::num;
+using detail::upperMedian;
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 void appendWarning(logs::FlightLog& log, const std::string& w) {
   std::string& all = log.metadata["warnings"];
@@ -120,7 +115,7 @@ std::string voltageProblem(const logs::FlightLog& log, const std::vector<size_t>
   std::vector<double> volts;
   for (size_t i : idx)
     if (std::isfinite(log.samples[i].voltage)) volts.push_back(log.samples[i].voltage);
-  const double med = median(volts), full = v.battery->voltageFull();
+  const double med = upperMedian(volts), full = v.battery->voltageFull();
   if (!(full > 0.0) || !std::isfinite(med)) return {};
   if (med <= l.max_voltage_multiple * full && med >= l.min_voltage_fraction * full) return {};
   const double ratio = med / full;
@@ -166,8 +161,8 @@ std::string powerProblem(const logs::FlightLog& log, const std::vector<size_t>& 
                                      : std::string()) +
            "), so the power drawn there is unknown";
   }
-  c.median_power_w = median(pw);
-  c.median_current_a = cur.size() == idx.size() ? median(cur) : std::numeric_limits<double>::quiet_NaN();
+  c.median_power_w = upperMedian(pw);
+  c.median_current_a = cur.size() == idx.size() ? upperMedian(cur) : std::numeric_limits<double>::quiet_NaN();
   c.hover_power_w = energy::marinsHoverPowerW(v);
   const std::string n = std::to_string(idx.size()) + " airborne samples";
   double at = 0.0;

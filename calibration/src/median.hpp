@@ -1,7 +1,7 @@
 #pragma once
 // Internal to calibration/src: the median of the mission comparisons (mission_calibration.cpp) and
-// of the tracking error (tracking_error.cpp); the upper median of the logged power (replay.cpp).
-// measurement_check.cpp still keeps its own upper median.
+// of the tracking error (tracking_error.cpp); the upper median of the logged power (replay.cpp,
+// measurement_check.cpp).
 #include <algorithm>
 #include <limits>
 #include <vector>
