@@ -319,7 +319,10 @@ void addPredictOptions(CLI::App* cmd, PredictOptions& o) {
                   "Write the predicted trajectory (10 Hz) as CSV here: t_s, x_m, y_m, z_m (east, north, up of home), "
                   "speed_mps, phase, seq (the mission item flown), power_w (modelled, over the step ending there), "
                   "energy_j (drawn so far)");
-  cmd->add_flag("--lenient", o.lenient, "Skip unsupported mission commands that do not move the vehicle with a warning instead of an error (a navigation command is never skipped)");
+  cmd->add_flag("--lenient", o.lenient,
+                "Warnings instead of errors: skip unsupported mission commands that do not move the vehicle (a navigation "
+                "command is never skipped), and predict as written the items below home's height and, for a PX4 vehicle, "
+                "the items in a frame PX4 refuses at upload");
   addReportOptions(cmd, o.report, o.report_svg, o.force);
   addJsonFlag(cmd, o.json);
 }
@@ -332,6 +335,7 @@ void runPredict(const PredictOptions& o) {
   const en::Vehicle v = en::loadVehicle(o.vehicle);
   PredictionSetup setup = predictionSetup(v, o.vehicle, o.effects, o.reserve_pct);
   setup.settings.energy_margin = o.energy_margin_pct / 100.0;
+  setup.settings.lenient = o.lenient;
   PredictRun r = runPrediction(o, v, setup);
   addFacts(r);
   const ms::AutopilotConfig& ap = setup.autopilot;
