@@ -223,7 +223,6 @@ void writeTextFileAtomic(const std::string& path, const std::string& text) {
   if (fs::exists(fs::symlink_status(target, ec)) && !fs::is_regular_file(fs::symlink_status(target, ec))) {
     throw std::runtime_error(path + ": exists and is not a regular file; expected a file path to write");
   }
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
   fs::path tmp;
   const TemporaryGuard guard;
   const int fd = createTemporary(target, tmp);
@@ -237,7 +236,6 @@ std::string stageOutput(const std::string& path, const std::function<void(const 
   namespace fs = std::filesystem;
   const fs::path target(path);
   std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
   fs::path tmp;
   const TemporaryGuard guard;
   ::close(createTemporary(target, tmp));  // an exclusive placeholder the writer replaces
@@ -342,12 +340,29 @@ CLI::Option* addForceFlag(CLI::App* cmd, bool& force) {
   return cmd->add_flag("--force", force, "Replace output files that already exist");
 }
 
+void checkOutputFolder(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path parent = fs::path(path).parent_path();
+  if (parent.empty() || fs::is_directory(parent, ec)) return;
+  // The first folder of the path that is missing, which a typo most likely made.
+  fs::path missing = parent;
+  for (fs::path p = parent; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    missing = p;
+    if (p == p.parent_path()) break;
+  }
+  if (fs::exists(missing, ec)) throw std::runtime_error(path + ": " + missing.string() + " is not a folder, expected a folder to write into");
+  throw std::runtime_error(path + ": the folder " + missing.string() + " does not exist, expected an existing folder (output "
+                           "folders are not created, so a mistyped path is not written somewhere new: create it first)");
+}
+
 void checkWritable(const std::string& path, bool force, const std::vector<std::string>& inputs) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path target(path);
   if (path.empty()) throw std::runtime_error("output path is empty, expected a file name");
   if (fs::is_directory(target, ec)) throw std::runtime_error(path + ": is a folder, expected an output file name");
+  checkOutputFolder(path);
   // The same name twice in one run (an input, or another output not written yet): one would be lost.
   const fs::path canonical = fs::weakly_canonical(target, ec);
   for (const auto& in : inputs) {

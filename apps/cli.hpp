@@ -95,7 +95,7 @@ std::string stageOutput(const std::string& path, const std::function<void(const 
 void addReportOptions(CLI::App* cmd, std::string& html_path, std::string& svg_dir, bool& force);
 
 /// Checks before any work that the report may be written (checkWritable on `html_path`; `svg_dir`
-/// must not be a file); throws std::runtime_error naming the path.
+/// must not be a file, and the folder it is made in must exist); throws std::runtime_error naming the path.
 void checkReportWritable(const std::string& html_path, const std::string& svg_dir, bool force,
                          const std::vector<std::string>& inputs = {});
 
@@ -117,10 +117,17 @@ void addAreaSelectOptions(CLI::App* cmd, std::string& layer, std::string& where)
 CLI::Option* addForceFlag(CLI::App* cmd, bool& force);
 
 /// Checks, before any work is done, that `path` may be written: throws std::runtime_error naming
-/// the path when it is a folder, when it already exists and `force` is false ("use --force"), or
+/// the path when it is a folder, when its folder does not exist (checkOutputFolder), when it
+/// already exists and `force` is false ("use --force"), or
 /// when it is one of `inputs` (an input is never overwritten, even with --force; an output of the
 /// same run not written yet, passed among `inputs`, is refused as named twice).
 void checkWritable(const std::string& path, bool force, const std::vector<std::string>& inputs = {});
+
+/// Throws std::runtime_error naming the first missing folder of `path` when the folder `path` is
+/// to be written into does not exist (or is not a folder): output files' folders are not created
+/// (only plan's --out and a --report-svg folder are), so a mistyped path is an error. checkWritable
+/// calls it.
+void checkOutputFolder(const std::string& path);
 
 // Register functions: one per apps/cmd_*.cpp. main.cpp calls each.
 void registerEnergyCommands(CLI::App& app);    ///< hover, vopt, leg, turns (cmd_energy.cpp)

@@ -121,7 +121,32 @@ nlohmann::json toJson(const ms::MissionPrediction& p, const ms::AutopilotConfig&
   return j;
 }
 
-// The prediction as text: totals and phases, the battery, the facts in `extra` on stdout; notes on stderr.
+constexpr std::size_t kItemRows = 60;  // rows of the text output's item table; the rest are in --json and --report
+
+// The text output's table of the items as flown (one row per step: an item a DO_JUMP repeats has a
+// row each time): number, command, when reached [min:s], distance [m] and energy [kJ] while it was
+// the active item; the first kItemRows rows, then how many more.
+void printItemTable(const ms::MissionPrediction& p) {
+  std::cout << "items    (reached: min:s from the take-off command; distance and energy while the item is active)\n";
+  std::cout << "  " << std::setw(5) << "item" << "  " << std::left << std::setw(22) << "command" << std::right << std::setw(9)
+            << "reached" << std::setw(12) << "distance" << std::setw(12) << "energy" << "\n";
+  const std::size_t rows = std::min(p.items.size(), kItemRows);
+  for (std::size_t k = 0; k < rows; ++k) {
+    const ms::ItemPrediction& it = p.items[k];
+    std::cout << "  " << std::setw(5) << (it.seq >= 0 ? std::to_string(it.seq) : std::string("-")) << "  " << std::left
+              << std::setw(22) << it.command << std::right << std::setw(9)
+              << (std::isfinite(it.reached_s) ? minutesSeconds(it.reached_s) : std::string("-")) << std::setw(10)
+              << std::setprecision(0) << it.totals.distance_m << " m" << std::setw(9) << std::setprecision(2)
+              << it.totals.energy_j / 1000.0 << " kJ\n";
+  }
+  if (p.items.size() > rows) {
+    std::cout << "  ... " << p.items.size() - rows << " more, see --json (items) or --report\n";
+  }
+  std::cout << std::setprecision(1);
+}
+
+// The prediction as text: totals, phases and items, the battery, the facts in `extra` on stdout;
+// notes on stderr.
 void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap,
                const std::vector<std::pair<std::string, std::string>>& extra) {
   std::cout << std::fixed << std::setprecision(1);
@@ -134,6 +159,7 @@ void printText(const ms::MissionPrediction& p, const ms::AutopilotConfig& ap,
     std::cout << "  " << std::left << std::setw(8) << ms::toString(static_cast<ms::FlightPhase>(k)) << std::right << " "
               << minutesSeconds(t.time_s) << "  " << t.energy_j / 3600.0 << " Wh  " << t.distance_m << " m\n";
   }
+  printItemTable(p);
   std::cout << "battery: " << (p.battery.known ? p.battery.verdict : "unknown (no battery in the vehicle file)") << "\n";
   for (const auto& [label, text] : extra) std::cout << label << ": " << text << "\n";
   if (!p.flight.model.empty()) std::cout << "model: " << p.flight.model << "\n";
@@ -319,7 +345,10 @@ void addPredictOptions(CLI::App* cmd, PredictOptions& o) {
                   "Write the predicted trajectory (10 Hz) as CSV here: t_s, x_m, y_m, z_m (east, north, up of home), "
                   "speed_mps, phase, seq (the mission item flown), power_w (modelled, over the step ending there), "
                   "energy_j (drawn so far)");
-  cmd->add_flag("--lenient", o.lenient, "Skip unsupported mission commands that do not move the vehicle with a warning instead of an error (a navigation command is never skipped)");
+  cmd->add_flag("--lenient", o.lenient,
+                "Warnings instead of errors: skip unsupported mission commands that do not move the vehicle (a navigation "
+                "command is never skipped), and predict as written the items below home's height and, for a PX4 vehicle, "
+                "the items in a frame PX4 refuses at upload");
   addReportOptions(cmd, o.report, o.report_svg, o.force);
   addJsonFlag(cmd, o.json);
 }
@@ -332,6 +361,7 @@ void runPredict(const PredictOptions& o) {
   const en::Vehicle v = en::loadVehicle(o.vehicle);
   PredictionSetup setup = predictionSetup(v, o.vehicle, o.effects, o.reserve_pct);
   setup.settings.energy_margin = o.energy_margin_pct / 100.0;
+  setup.settings.lenient = o.lenient;
   PredictRun r = runPrediction(o, v, setup);
   addFacts(r);
   const ms::AutopilotConfig& ap = setup.autopilot;
@@ -360,7 +390,10 @@ void registerPredictCommand(CLI::App& app) {
       "\nThe mission is flown by the vehicle file's `autopilot` (firmware, version, parameters; firmware defaults "
       "without one): docs/autopilots.md says what each model follows. Times count from the take-off command.\n"
       "--json: energy_j, energy_wh, time_s, distance_m; phases.{takeoff,mission,return,landing}.{energy_j, time_s, "
-      "distance_m}; items[] (seq, command, reached_s, completed_s, energy_j, time_s, distance_m); breakdown (energy by "
+      "distance_m}; items[] (seq, command, reached_s: [s] from the take-off command until the autopilot declares the item "
+      "reached (NAV_RETURN_TO_LAUNCH: over home, before RTL_LOIT_TIME or RTL_LAND_DELAY and the descent; a take-off: at its "
+      "altitude, for PX4 at its position), completed_s: when it moves on (after any hold; the return: landed), energy_j, "
+      "time_s, distance_m); breakdown (energy by "
       "effect); battery (known, usable_left_at_landing, reserve_fraction, fits, energy_margin, usable_left_at_landing_with_margin, "
       "fits_with_margin, depleted, ends_in_air, verdict); autopilot; model; warnings[]; launch; wind; "
       "calibration_dispute and calibration_coverage (null when none).");

@@ -697,3 +697,37 @@ TEST(CliPredict, ReplayInTheDaysWindTakesTheDragAtAirSpeedOnBothSides) {
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.output.find("--wind"), std::string::npos) << bad.output;
 }
+
+// The text output has a table of the items (the README said "by phase and by mission item" where
+// only the phases were printed): item, command, when reached, distance and energy; a mission of
+// many items prints the first 60 rows and says where the rest are. The battery line starts as the
+// JSON's verdict does (a landing below the reserve began "Fits, but").
+TEST(CliPredict, TheTextOutputHasAnItemTableOfAtMostSixtyRows) {
+  const std::string path = tempPath("many.waypoints");
+  {
+    std::ofstream out(path);
+    out << "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t43.7160040\t10.4613040\t50\t1\n1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n";
+    for (int k = 0; k < 80; ++k)
+      out << k + 2 << "\t0\t3\t16\t0\t0\t0\t0\t" << 43.716004 + 0.0002 * (k % 2) << "\t" << 10.461304 + 0.0001 * (k + 1) << "\t10\t1\n";
+    out << "82\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  }
+  const RunResult r = run(cli("predict " + path + " --vehicle " + sourcePath("data/vehicles/iris.json")) + " 2>/dev/null");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("items    (reached: min:s from the take-off command"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("      1  NAV_TAKEOFF"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("     60  NAV_WAYPOINT"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("     61  NAV_WAYPOINT"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("  ... 22 more, see --json (items) or --report"), std::string::npos) << r.output;
+  std::remove(path.c_str());
+  // A short mission lists every item, the return included, and no "more".
+  const RunResult s = run(cli("predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
+                              sourcePath("tests/data/iris-small-battery.json")) + " 2>/dev/null");
+  ASSERT_EQ(s.status, 0) << s.output;
+  EXPECT_NE(s.output.find("NAV_RETURN_TO_LAUNCH"), std::string::npos) << s.output;
+  EXPECT_EQ(s.output.find("more, see --json"), std::string::npos) << s.output;
+  const json j = runJson("predict " + sourcePath("tests/data/good/mission_survey.plan") + " --vehicle " +
+                         sourcePath("tests/data/iris-small-battery.json") + " --json");
+  const std::string verdict = j["battery"]["verdict"].get<std::string>();
+  EXPECT_NE(s.output.find("battery: " + verdict), std::string::npos) << s.output;
+  if (!j["battery"]["fits"].get<bool>()) EXPECT_EQ(verdict.rfind("Does not fit", 0), 0u) << verdict;
+}

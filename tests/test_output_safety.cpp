@@ -76,10 +76,39 @@ TEST_F(OutputSafety, SimulateReplacesExistingOutWithForce) {
 }
 
 TEST_F(OutputSafety, SimulateWritesNewOutWithoutForce) {
-  const Outcome r = runCli({"simulate", "--vehicle", kVehicle, "--out", path("sub/new.csv")});
+  const Outcome r = runCli({"simulate", "--vehicle", kVehicle, "--out", path("new.csv")});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_TRUE(fs::exists(path("sub/new.csv")));
+  EXPECT_TRUE(fs::exists(path("new.csv")));
   EXPECT_FALSE(temporaryLeft());
+}
+
+// An output's folder is not created: a typo in a path (predict --samples-out /nonexistent/dir/s.csv,
+// --report) made the folders and wrote there; it is an error naming the first missing folder, before
+// any work. plan's --out folder, which a run is meant to make, still is made (PlanNeverOverwrites...).
+TEST_F(OutputSafety, AnOutputIntoAMissingFolderIsAnErrorNamingTheFolder) {
+  const std::string mission = "tests/data/good/mission_survey.plan";
+  for (const std::string& option : {std::string("--samples-out"), std::string("--report")}) {
+    const std::string out = path("typo/deeper/out.file");
+    const Outcome r = runCli({"predict", mission, "--vehicle", kVehicle, option, out});
+    EXPECT_NE(r.status, 0) << option;
+    EXPECT_NE(r.err.find(out + ": the folder " + path("typo") + " does not exist"), std::string::npos) << option << ": " << r.err;
+    EXPECT_FALSE(fs::exists(path("typo"))) << option;
+  }
+  const Outcome sim = runCli({"simulate", "--vehicle", kVehicle, "--out", path("sub/new.csv")});
+  EXPECT_NE(sim.status, 0);
+  EXPECT_NE(sim.err.find("the folder " + path("sub") + " does not exist"), std::string::npos) << sim.err;
+  EXPECT_FALSE(fs::exists(path("sub")));
+  // --report-svg makes its own folder, not a missing parent.
+  const Outcome svg = runCli({"predict", mission, "--vehicle", kVehicle, "--report-svg", path("figs")});
+  ASSERT_EQ(svg.status, 0) << svg.err;
+  EXPECT_TRUE(fs::is_directory(path("figs")));
+  const Outcome svg2 = runCli({"predict", mission, "--vehicle", kVehicle, "--report-svg", path("no/figs")});
+  EXPECT_NE(svg2.status, 0);
+  EXPECT_NE(svg2.err.find("the folder " + path("no") + " does not exist"), std::string::npos) << svg2.err;
+  // An existing folder is written into.
+  const Outcome ok = runCli({"predict", mission, "--vehicle", kVehicle, "--samples-out", path("s.csv")});
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_TRUE(fs::exists(path("s.csv")));
 }
 
 TEST_F(OutputSafety, SimulateNeverOverwritesItsPathInputEvenWithForce) {

@@ -78,13 +78,15 @@ using detail::numberText;
 
 constexpr int kMaxJumpRepeat = 1000;  // DO_JUMP repeat counts accepted, [0, kMaxJumpRepeat]
 
-/// "WHERE: NAV_WAYPOINT FIELD = VALUE, expected EXPECTED".
-[[noreturn]] void badField(const MissionItem& it, const std::string& field, double v, const std::string& expected) {
-  fail(it.where, commandName(it.command) + " " + field + " = " + numberText(v) + ", expected " + expected);
+/// "WHERE: NAV_WAYPOINT FIELD = VALUE, expected EXPECTED"; in a .plan (`plan`) NaN is written as
+/// "null (unset)", the JSON null it was read from.
+[[noreturn]] void badField(const MissionItem& it, const std::string& field, double v, const std::string& expected, bool plan = false) {
+  fail(it.where, commandName(it.command) + " " + field + " = " + (plan && std::isnan(v) ? "null (unset)" : numberText(v)) +
+                     ", expected " + expected);
 }
 
-void atLeastZero(const MissionItem& it, double v, const std::string& field, const std::string& what) {
-  if (!(std::isfinite(v) && v >= 0.0)) badField(it, field, v, what);
+void atLeastZero(const MissionItem& it, double v, const std::string& field, const std::string& what, bool plan) {
+  if (!(std::isfinite(v) && v >= 0.0)) badField(it, field, v, what, plan);
 }
 
 void checkFrame(const MissionItem& it) {
@@ -101,77 +103,77 @@ void checkFrame(const MissionItem& it) {
   }
 }
 
-void checkPosition(const MissionItem& it) {
+void checkPosition(const MissionItem& it, bool plan) {
   if (!isPositional(it.command)) return;
   // Take-off and land may leave lat/lon empty (NaN in a .plan) or 0, 0: "where the vehicle is".
   const bool inPlace = it.command == static_cast<int>(Command::NavTakeoff) || it.command == static_cast<int>(Command::NavLand);
   const bool unset = std::isnan(it.lat_deg) && std::isnan(it.lon_deg);
   if (!(inPlace && unset)) {
     if (!(std::isfinite(it.lat_deg) && it.lat_deg >= -90.0 && it.lat_deg <= 90.0))
-      badField(it, "latitude", it.lat_deg, "a latitude in [-90, 90] deg");
+      badField(it, "latitude", it.lat_deg, "a latitude in [-90, 90] deg", plan);
     if (!(std::isfinite(it.lon_deg) && it.lon_deg >= -180.0 && it.lon_deg <= 180.0))
-      badField(it, "longitude", it.lon_deg, "a longitude in [-180, 180] deg");
+      badField(it, "longitude", it.lon_deg, "a longitude in [-180, 180] deg", plan);
   }
   if (it.command != static_cast<int>(Command::NavLand) && !std::isfinite(it.alt_m))
-    badField(it, "altitude", it.alt_m, "a finite altitude [m]");
+    badField(it, "altitude", it.alt_m, "a finite altitude [m]", plan);
 }
 
-void checkSpeed(const MissionItem& it) {
+void checkSpeed(const MissionItem& it, bool plan) {
   const double type = it.param[0], v = it.param[1];
   if (!(type == 0.0 || type == 1.0 || type == 2.0 || type == 3.0))
-    badField(it, "param1 (speed type)", type, "0 (airspeed), 1 (ground speed), 2 (climb) or 3 (descent)");
+    badField(it, "param1 (speed type)", type, "0 (airspeed), 1 (ground speed), 2 (climb) or 3 (descent)", plan);
   if (isSpeedSentinel(v)) return;  // MAVLink: no change, or back to the default
   if (!(std::isfinite(v) && v > 0.0)) {
-    badField(it, "param2 (speed)", v, "a speed > 0 m/s, -1 for no change or -2 for the default speed");
+    badField(it, "param2 (speed)", v, "a speed > 0 m/s, -1 for no change or -2 for the default speed", plan);
   }
 }
 
-void checkJump(const MissionItem& it) {
+void checkJump(const MissionItem& it, bool plan = false) {
   const double target = it.param[0], repeat = it.param[1];
   if (!(std::isfinite(target) && target >= 1.0 && target == std::floor(target) && target <= 65535.0))
-    badField(it, "param1 (target item)", target, "an item number >= 1");
+    badField(it, "param1 (target item)", target, "an item number >= 1", plan);
   if (repeat == -1.0)
-    badField(it, "param2 (repeat count)", repeat, "a repeat count in [0, 1000] (-1 repeats forever: the mission never ends)");
+    badField(it, "param2 (repeat count)", repeat, "a repeat count in [0, 1000] (-1 repeats forever: the mission never ends)", plan);
   if (!(std::isfinite(repeat) && repeat >= 0.0 && repeat <= kMaxJumpRepeat && repeat == std::floor(repeat)))
-    badField(it, "param2 (repeat count)", repeat, "a whole repeat count in [0, 1000]");
+    badField(it, "param2 (repeat count)", repeat, "a whole repeat count in [0, 1000]", plan);
 }
 
 // ArduPilot's AP_Mission keeps a LOITER_TURNS' turns and radius as whole numbers in one byte each
 // (radii above 255 m divided by 10, and not in every version): more than 255 turns, or a radius
 // below 1 m (0: a turn on the spot, whose behaviour changes between versions) or above 255 m, is
 // refused rather than flown by a guess.
-void checkLoiterTurns(const MissionItem& it) {
+void checkLoiterTurns(const MissionItem& it, bool plan) {
   const double turns = it.param[0], radius = it.param[2];
   if (!(std::isfinite(turns) && turns >= 0.0 && turns < 256.0))
-    badField(it, "param1 (turns)", turns, "a number of turns in [0, 255] (ArduPilot keeps whole turns in one byte)");
+    badField(it, "param1 (turns)", turns, "a number of turns in [0, 255] (ArduPilot keeps whole turns in one byte)", plan);
   if (!(std::isfinite(radius) && std::abs(radius) >= 1.0 && std::abs(radius) < 256.0))
     badField(it, "param3 (radius)", radius,
              "a radius of 1 to 255 m, negative for counter-clockwise (0, a turn on the spot, and radii above 255 m, "
-             "which ArduPilot stores divided by 10, are not modelled)");
+             "which ArduPilot stores divided by 10, are not modelled)", plan);
 }
 
-void checkParams(const MissionItem& it) {
+void checkParams(const MissionItem& it, bool plan) {
   switch (static_cast<Command>(it.command)) {
     case Command::NavWaypoint:
     case Command::NavSplineWaypoint:
-      return atLeastZero(it, it.param[0], "param1 (hold time)", "a hold time >= 0 s");
+      return atLeastZero(it, it.param[0], "param1 (hold time)", "a hold time >= 0 s", plan);
     case Command::NavLoiterTime:
-      return atLeastZero(it, it.param[0], "param1 (loiter time)", "a time >= 0 s");
+      return atLeastZero(it, it.param[0], "param1 (loiter time)", "a time >= 0 s", plan);
     case Command::NavLoiterTurns:
-      return checkLoiterTurns(it);
+      return checkLoiterTurns(it, plan);
     case Command::NavDelay:
-      return atLeastZero(it, it.param[0], "param1 (delay)", "a delay >= 0 s (time-of-day delays, param1 = -1, are not supported)");
+      return atLeastZero(it, it.param[0], "param1 (delay)", "a delay >= 0 s (time-of-day delays, param1 = -1, are not supported)", plan);
     case Command::ConditionDelay:
-      return atLeastZero(it, it.param[0], "param1 (delay)", "a delay >= 0 s");
+      return atLeastZero(it, it.param[0], "param1 (delay)", "a delay >= 0 s", plan);
     case Command::ConditionYaw:
-      if (!std::isfinite(it.param[0])) badField(it, "param1 (angle)", it.param[0], "a heading [deg]");
+      if (!std::isfinite(it.param[0])) badField(it, "param1 (angle)", it.param[0], "a heading [deg]", plan);
       return;
     case Command::DoChangeSpeed:
-      return checkSpeed(it);
+      return checkSpeed(it, plan);
     case Command::DoSetCamTriggDist:
-      return atLeastZero(it, it.param[0], "param1 (distance)", "a trigger distance >= 0 m");
+      return atLeastZero(it, it.param[0], "param1 (distance)", "a trigger distance >= 0 m", plan);
     case Command::DoJump:
-      return checkJump(it);
+      return checkJump(it, plan);
     default:
       return;
   }
@@ -233,13 +235,18 @@ void checkCommands(Mission& m, const ReadOptions& o) {
   m.items = std::move(kept);
 }
 
-void checkHome(Mission& m) {
+// A file without a home (a .waypoints home row or a .plan plannedHomePosition at 0, 0): the first
+// position is home, and the warning says to give the launch point (predict --launch) unless given.
+void checkHome(Mission& m, const ReadOptions& o) {
   if (m.home_known) return detail::checkHomePoint(m.home, m.source);
   for (const auto& it : m.items) {
     if (!hasPosition(it)) continue;
     m.home = {it.lat_deg, it.lon_deg, 0.0};
-    m.warnings.push_back(m.source + ": no home position; the first position (" + it.where +
-                         ") is used as home, at altitude 0 m");
+    m.warnings.push_back(m.source + ": no home position; the first position (" + it.where + ") is used as home, at altitude 0 m" +
+                         (o.distances_from ? std::string()
+                                           : ": the autopilot sets home where the vehicle arms, so give that point with "
+                                             "predict --launch LAT,LON (or LAT,LON,ALT) for the return and the distances "
+                                             "from home to be right"));
     return;
   }
 }
@@ -299,10 +306,10 @@ void checkMission(Mission& m, const ReadOptions& o) {
   checkCommands(m, o);
   for (const auto& it : m.items) {
     checkFrame(it);
-    checkPosition(it);
-    checkParams(it);
+    checkPosition(it, m.format == "plan");
+    checkParams(it, m.format == "plan");
   }
-  checkHome(m);
+  checkHome(m, o);
   checkDistances(m, o);
   unrollJumps(m, o);
 }

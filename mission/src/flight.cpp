@@ -167,6 +167,7 @@ FlownMission flyMission(const std::vector<NavStep>& steps, const AutopilotConfig
     std::vector<NavStep> late = steps;
     for (std::size_t k = late.size(); k-- > 1;) {
       late[k].speed_xy = steps[k - 1].speed_xy;
+      late[k].speed_xy_3x = steps[k - 1].speed_xy_3x;
       late[k].speed_up = steps[k - 1].speed_up;
       late[k].speed_down = steps[k - 1].speed_down;
       late[k].speed_xy_41 = steps[k - 1].speed_xy_41;

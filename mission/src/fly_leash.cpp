@@ -456,10 +456,16 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
   double speed = P.speed;  // DO_CHANGE_SPEED overwrites WPNAV_SPEED in memory (RTL inherits it)
   SplineCarry carry;
   Eigen::Vector3d straight_in = Eigen::Vector3d::Zero();  // the last straight leg, when flown through
+  // Copter::do_change_speed of 3.2-3.6 sets the horizontal speed from any DO_CHANGE_SPEED, whatever
+  // its type; 4.0's ModeAuto::do_change_speed sends types 2 and 3 to the climb and descent speeds.
+  const bool any_type = !versionAtLeast(ap.version, 4, 0);
+  bool vertical_asked = false;  // 4.0: a climb or descent speed was asked for (not modelled)
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const NavStep& st = steps[k];
     const int ki = static_cast<int>(k);
-    if (st.speed_xy >= 1.0) speed = st.speed_xy;  // 3.x ignores requests below 1 m/s
+    const double asked = any_type ? st.speed_xy_3x : st.speed_xy;
+    if (asked >= 1.0) speed = asked;  // AC_WPNav::set_speed_xy ignores requests below 1 m/s
+    vertical_asked = vertical_asked || st.speed_up > 0.0 || st.speed_down > 0.0;
     if (st.kind == NavStep::Kind::Takeoff) {
       const Eigen::Vector3d top(target.x(), target.y(), std::max(st.target.z(), 1.0));
       f.leg(target, top, speed, false, FlightPhase::Takeoff, ki);
@@ -516,6 +522,11 @@ FlownMission flyArduCopterLeash(const std::vector<NavStep>& steps, const Autopil
       straight_in.setZero();
     }
     rec.completed(ki);
+  }
+  if (vertical_asked && !any_type) {
+    rec.note("a DO_CHANGE_SPEED of type 2 or 3 (climb or descent): ArduCopter " + ap.version + " sets WPNAV's climb or "
+             "descent speed from it (ModeAuto::do_change_speed), which the leash model does not follow: it climbs and "
+             "descends at WPNAV_SPEED_UP and WPNAV_SPEED_DN");
   }
   if (f.late_increases > 0) {
     rec.note(std::to_string(f.late_increases) + " leg(s) are commanded faster than the leg before: ArduCopter " + ap.version +

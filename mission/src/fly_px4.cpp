@@ -307,6 +307,14 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
       const double tko_alt = std::max(st.target.z(), 0.5);
       f.vertical(tko_alt, std::min(P.alt_rad, 0.5 * tko_alt), limits, FlightPhase::Takeoff, ki);
       f.prev_wp = f.p;
+      // Mission::set_mission_items: after the climb the take-off item becomes a waypoint ("navigate
+      // to the actual waypoint now") at its latitude and longitude, reached within NAV_ACC_RAD; a
+      // mission leg, as a landing's approach is.
+      if (st.takeoff_xy.allFinite() && (st.takeoff_xy - f.p.head<2>()).norm() > P.acc_rad) {
+        const Eigen::Vector3d to(st.takeoff_xy.x(), st.takeoff_xy.y(), tko_alt);
+        const bool stop = k + 1 >= steps.size() || !steps[k + 1].has_position || !isFlownTo(steps[k + 1]);
+        f.flyTo(to, stop ? to : steps[k + 1].target, cruise, P.acc_rad, FlightPhase::Mission, ki);
+      }
     } else if (isFlownTo(st)) {
       const Eigen::Vector3d to = st.has_position ? st.target : f.p;
       const double rad = st.accept_radius_m > 0.0 ? st.accept_radius_m : P.acc_rad;
@@ -338,6 +346,7 @@ FlownMission flyPx4(const std::vector<NavStep>& steps, const AutopilotConfig& ap
         f.prev_wp = f.p;
         const Eigen::Vector3d over_home{0.0, 0.0, ret};
         f.flyTo(over_home, over_home, P.cruise, P.acc_rad, ph, ki);
+        rec.reached(ki);  // over home (within NAV_ACC_RAD), before the descent to RTL_DESCEND_ALT and RTL_LAND_DELAY
         const Eigen::Vector3d descended{0.0, 0.0, P.rtl_descend};
         if (f.p.z() > P.rtl_descend) f.flyTo(descended, descended, P.cruise, P.acc_rad, ph, ki);
         f.holdAt({0.0, 0.0, f.p.z()}, P.cruise, P.rtl_delay, ph, ki);

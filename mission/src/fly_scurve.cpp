@@ -255,7 +255,9 @@ Eigen::Vector3d flyChain(Flight& fl, const std::vector<LegSpec>& legs, Eigen::Ve
     }
     const bool passed = next.started && next.t >= cur.remaining();
     if (passed || arrived()) {
-      rec.reached(legs[i].step);
+      // A step flown as several legs (RTL: the climb, then the leg home) is reached at the end of
+      // its last leg: RTL over home, not where its climb ends.
+      if (i + 1 >= legs.size() || legs[i + 1].step != legs[i].step) rec.reached(legs[i].step);
       if (passed) {
         rec.completed(legs[i].step);
         prev = cur;

@@ -32,30 +32,41 @@ double usableLeft(const energy::Battery& b, const energy::EnduranceResult& r) {
   return r.series.empty() ? 0.0 : energy::countedUsableLeft(b, r.series.back());
 }
 
-// One plain sentence on the reserve, with and without the margin for the prediction's error. A
-// flight that ends in the air (no RTL or LAND) is judged where it ends, and says so.
-std::string verdictText(const BatteryPrediction& out, double endurance_s) {
+// One plain sentence on the reserve, with and without the margin for the prediction's error. Its
+// first words match the JSON's fits / fits_with_margin ("Does not fit", "Too close to call", "Fits").
+// A flight that ends in the air (no RTL or LAND) is judged where it ends, and says so.
+// `margin_depleted`: with the margin's extra energy the battery reaches its cut-off.
+std::string verdictText(const BatteryPrediction& out, double endurance_s, bool margin_depleted) {
   std::ostringstream v;
   v.precision(3);
   const double margin_pct = 100.0 * out.energy_margin;
   const std::string lands = out.ends_in_air ? "ends the mission in the air (return and landing not counted) with" : "lands with";
+  std::ostringstream wm;
+  wm.precision(3);
+  wm << " with " << margin_pct << " % more energy";
+  const std::string with_margin = wm.str();
   if (out.depleted) {
     v << "Does not fit: the battery reaches its cut-off " << endurance_s << " s into the flight.";
   } else if (!out.fits) {
-    v << "Fits, but " << lands << " " << 100.0 * out.usable_left_end << " % of the usable charge, below the "
-      << 100.0 * out.reserve_fraction << " % reserve.";
+    v << "Does not fit the reserve: " << lands << " " << 100.0 * out.usable_left_end << " % of the usable charge, below the "
+      << 100.0 * out.reserve_fraction << " % reserve";
+    if (out.energy_margin <= 0.0) v << ".";
+    else if (margin_depleted) v << ";" << with_margin << " (the prediction's error margin, --energy-margin) the battery reaches its cut-off.";
+    else v << ";" << with_margin << " (the prediction's error margin, --energy-margin) " << 100.0 * out.usable_left_end_with_margin << " %.";
   } else if (out.energy_margin <= 0.0) {
     v << "Fits: " << lands << " " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
       << 100.0 * out.reserve_fraction << " %).";
   } else if (!out.fits_with_margin) {
     v << "Too close to call: as predicted it " << lands << " " << 100.0 * out.usable_left_end
-      << " % of the usable charge (reserve " << 100.0 * out.reserve_fraction << " %), but with " << margin_pct
-      << " % more energy (the prediction's error margin, --energy-margin) only " << 100.0 * out.usable_left_end_with_margin
-      << " %. Shorten the mission, or calibrate the model on your own logs (wattswath calibrate).";
+      << " % of the usable charge (reserve " << 100.0 * out.reserve_fraction << " %), but" << with_margin
+      << " (the prediction's error margin, --energy-margin) ";
+    if (margin_depleted) v << "the battery reaches its cut-off";
+    else v << "only " << 100.0 * out.usable_left_end_with_margin << " %";
+    v << ". Shorten the mission, or calibrate the model on your own logs (wattswath calibrate).";
   } else {
     v << "Fits: " << lands << " " << 100.0 * out.usable_left_end << " % of the usable charge (reserve "
-      << 100.0 * out.reserve_fraction << " %), " << 100.0 * out.usable_left_end_with_margin << " % with " << margin_pct
-      << " % more energy for the prediction's error.";
+      << 100.0 * out.reserve_fraction << " %), " << 100.0 * out.usable_left_end_with_margin << " %" << with_margin
+      << " for the prediction's error.";
   }
   return v.str();
 }
@@ -79,7 +90,7 @@ void batteryAlong(const energy::Battery& b, const std::vector<energy::PowerStep>
   const energy::EnduranceResult rm = margin > 0.0 ? discharge(b, profile, 1.0 + margin) : r;
   out.usable_left_end_with_margin = usableLeft(b, rm);
   out.fits_with_margin = !rm.depleted && out.usable_left_end_with_margin >= reserve;
-  out.verdict = verdictText(out, r.endurance_s);
+  out.verdict = verdictText(out, r.endurance_s, rm.depleted);
 }
 
 // [m] Distance of `p` from the segment from `a` to `b`.
@@ -231,6 +242,36 @@ std::string px4Rejects(const Mission& m) {
          "rejected: item N: unsupported cmd\"); older versions' lists differ. The prediction flies it as if accepted";
 }
 
+// The frames PX4 takes an item in at upload (MavlinkMissionManager::parse_mavlink_mission_item): a
+// position only in MAV_FRAME_GLOBAL (0) or GLOBAL_RELATIVE_ALT (3), or their _INT variants (5, 6) in
+// an INT upload, as QGroundControl's is; a command without a position only in MAV_FRAME_MISSION (2),
+// except the region of interest at a location (DO_SET_ROI_LOCATION, DO_SET_ROI), read in a global
+// frame. Another frame is answered MAV_MISSION_UNSUPPORTED_FRAME (10, 11: terrain), a known frame
+// with a command it does not take there MAV_MISSION_UNSUPPORTED, and nothing of the upload is kept.
+// Empty when PX4 takes `it`, else what it answers and why.
+std::string px4FrameRefusal(const MissionItem& it) {
+  const int f = it.frame;
+  const bool global = f == 0 || f == 3 || f == 5 || f == 6;
+  const bool roi = it.command == 195 || it.command == static_cast<int>(Command::DoSetRoi);  // DO_SET_ROI_LOCATION, DO_SET_ROI
+  const std::string frame = " in MAV_FRAME " + std::to_string(f);
+  if (!global && f != 2) {
+    return frame + ": PX4 refuses the upload (MavlinkMissionManager::parse_mavlink_mission_item answers "
+           "MAV_MISSION_UNSUPPORTED_FRAME and keeps no item): it takes frames 0 and 3 (5 and 6 in an INT upload) for a "
+           "position, and 2 (MAV_FRAME_MISSION) for a command without one" +
+           (f == 10 || f == 11 ? std::string("; it has no terrain frame, so write the altitude relative to home (frame 3)") : "");
+  }
+  if (isPositional(it.command) && !global) {
+    return frame + ": PX4 refuses the upload (parse_mavlink_mission_item answers MAV_MISSION_UNSUPPORTED): it takes a "
+           "positional command only in frame 0 or 3 (5 or 6 in an INT upload); write the item in frame 3 for a PX4 vehicle";
+  }
+  if (!isPositional(it.command) && !roi && global) {
+    return frame + ": PX4 refuses the upload (parse_mavlink_mission_item answers MAV_MISSION_UNSUPPORTED): it takes a "
+           "command without a position only in MAV_FRAME_MISSION (2), where QGroundControl writes it (Mission Planner "
+           "often writes frame 3); write the item in frame 2 for a PX4 vehicle";
+  }
+  return {};
+}
+
 // Notes on the take-off and landing rules of PX4's feasibility check (FeasibilityChecker::
 // checkTakeoff and checkMissionItemValidity, 1.15): a take-off at or below home, a take-off after an
 // item with a position, and a mission that starts with a landing are each rejected.
@@ -248,6 +289,72 @@ void px4TakeoffRules(const Mission& m, std::vector<std::string>& notes) {
       positioned = true;
     }
   }
+}
+
+// [m] Above this height above home a note asks to check the altitude: 120 m (400 ft) is the usual
+// ceiling of open-category drone flight (EU 2019/947, US 14 CFR 107.51).
+constexpr double kHighAboveHome = 120.0;
+
+// The heights of the items flown to (waypoints, loiters), checked against home: an item below
+// home's height is flown into the ground, an error naming it (a note with `lenient`; PX4's
+// FeasibilityChecker::checkIfBelowHomeAltitude warns "Waypoint N below home" and flies it, ArduPilot
+// flies it without a word); an item more than kHighAboveHome above home is noted, as is, for PX4,
+// an altitude of 0 (PX4 flies to it as written, down to home's height; ArduPilot reads it as the
+// previous target's altitude, noted in the flight). Take-off and landing items have their own rules.
+void checkHeights(const Mission& m, const AutopilotConfig& a, bool lenient, std::vector<std::string>& notes) {
+  const bool px4 = a.family == AutopilotFamily::PX4;
+  int high = 0;
+  std::string high_first;
+  double highest = 0.0;
+  for (const MissionItem& it : m.items) {
+    const auto cmd = static_cast<Command>(it.command);
+    if (!isPositional(it.command) || cmd == Command::NavTakeoff || cmd == Command::NavLand) continue;
+    // ArduPilot reads an altitude of 0 as the previous target's (ModeAuto::loc_from_cmd), in any frame.
+    if (it.alt_m == 0.0 && !px4) continue;
+    const double above = detail::altitudeAboveHome(it, m);
+    const std::string height = commandName(it.command) + " at " + detail::numberText(above) + " m above home (altitude " +
+                               detail::numberText(it.alt_m) + " m in MAV_FRAME " + std::to_string(it.frame) +
+                               (it.frame == 0 || it.frame == 5 ? ", home at " + detail::numberText(m.home.alt_m) + " m" : "") + ")";
+    if (above < 0.0) {
+      const std::string what = it.where + ": " + height + ", expected at or above home's height: the vehicle would fly "
+                               "into the ground (PX4's mission check warns \"Waypoint below home\" and flies it, "
+                               "ArduPilot flies it without a word)";
+      if (!lenient) throw MissionError(what + "; correct the altitude or its frame, or use --lenient to predict it as written");
+      notes.push_back(what + "; predicted as written (--lenient)");
+    } else if (px4 && it.alt_m == 0.0 && it.frame != 0 && it.frame != 5) {
+      notes.push_back(it.where + ": " + commandName(it.command) + " at altitude 0 above home: PX4 flies to it as written, "
+                      "down to home's height (FeasibilityChecker does not warn, as it is not below home), where ArduPilot "
+                      "keeps the previous target's altitude; the prediction flies it as PX4 does");
+    }
+    if (above > kHighAboveHome) {
+      if (high++ == 0) high_first = it.where + ": " + height;
+      highest = std::max(highest, above);
+    }
+  }
+  if (high > 0) {
+    notes.push_back(high_first + ": " + std::to_string(high) + " item(s) more than " + detail::numberText(kHighAboveHome) +
+                    " m above home, up to " + detail::numberText(std::round(highest)) + " m: above the usual ceiling of "
+                    "open-category drone flight (120 m); check the altitudes, their frame (0: above sea level) and home's "
+                    "altitude");
+  }
+}
+
+// The note on a take-off the prediction added (the mission does not start with one), as the
+// vehicle's autopilot starts such a mission on the ground: ArduCopter refuses it ("Auto: Missing
+// Takeoff Cmd", ModeAuto::init), so the prediction assumes it started in the air; PX4 takes off
+// vertically to the first item's altitude (Mission::do_need_vertical_takeoff, at least
+// MIS_TAKEOFF_ALT above the ground) unless MIS_TKO_LAND_REQ asks for a take-off item.
+std::string assumedTakeoffNote(const Mission& m, const NavStep& takeoff, const AutopilotConfig& a) {
+  const std::string climb = "a vertical climb to " + detail::num(takeoff.target.z()) + " m" +
+                            (takeoff.alt_given ? " (the first item's altitude)" : " (a default: the first item gives no altitude to climb to)");
+  if (a.family == AutopilotFamily::PX4) {
+    return m.source + ": no NAV_TAKEOFF first: PX4 starts such a mission on the ground with a vertical take-off to the first "
+           "item's altitude, at least MIS_TAKEOFF_ALT above the ground (Mission::do_need_vertical_takeoff), unless "
+           "MIS_TKO_LAND_REQ requires a take-off item (\"Mission rejected: Takeoff waypoint required\"); the prediction "
+           "starts with " + climb;
+  }
+  return m.source + ": no NAV_TAKEOFF first: ArduCopter will not start such a mission on the ground (\"Auto: Missing "
+         "Takeoff Cmd\", ModeAuto::init); the prediction assumes it is started in the air after " + climb;
 }
 
 }  // namespace
@@ -270,6 +377,7 @@ MissionPrediction predictMission(const Mission& given, const energy::Vehicle& v,
   if (!(s.energy_margin >= 0.0 && s.energy_margin <= 1.0)) {
     throw std::invalid_argument("energy margin " + std::to_string(s.energy_margin) + ", expected 0..1");
   }
+  std::vector<std::string> frame_notes;  // items PX4 refuses for their frame, predicted with --lenient
   // PX4 has no NAV_SPLINE_WAYPOINT: its mission upload answers MAV_MISSION_UNSUPPORTED and keeps
   // nothing (mavlink_mission.cpp, parse_mavlink_mission_item), so such a mission is never flown.
   if (autopilot.family == AutopilotFamily::PX4) {
@@ -278,6 +386,11 @@ MissionPrediction predictMission(const Mission& given, const energy::Vehicle& v,
         throw MissionError(it.where + ": NAV_LOITER_TURNS (18) is not modelled for a PX4 vehicle (the mission feasibility "
                            "check of some PX4 versions rejects it as \"not yet supported\", and how the others fly it was not "
                            "read); the ArduCopter models fly it (docs/autopilots.md)");
+      }
+      if (const std::string r = px4FrameRefusal(it); !r.empty()) {
+        const std::string what = it.where + ": " + commandName(it.command) + r;
+        if (!s.lenient) throw MissionError(what + ", or use --lenient to predict the mission as if accepted");
+        frame_notes.push_back(what + "; predicted as if accepted (--lenient)");
       }
       if (it.command != static_cast<int>(Command::NavSplineWaypoint)) continue;
       throw MissionError(it.where + ": NAV_SPLINE_WAYPOINT (82): PX4 refuses a mission that holds one (the upload is answered "
@@ -293,6 +406,7 @@ MissionPrediction predictMission(const Mission& given, const energy::Vehicle& v,
                          autopilot.version + " (the " + toString(autopilot.family) + " model); set autopilot.version, "
                          "since ArduCopter before 4.1 flies the leash model and its parameters differ");
   }
+  p.warnings.insert(p.warnings.end(), frame_notes.begin(), frame_notes.end());
   if (!stop_note.empty()) p.warnings.push_back(stop_note);
   if (std::string n = missionSizeNote(given.items.size(), autopilot, m.source); !n.empty()) p.warnings.push_back(std::move(n));
   if (autopilot.family != AutopilotFamily::PX4) {
@@ -307,7 +421,9 @@ MissionPrediction predictMission(const Mission& given, const energy::Vehicle& v,
     if (const std::string r = px4Rejects(m); !r.empty()) p.warnings.push_back(r);
     px4TakeoffRules(m, p.warnings);
   }
+  checkHeights(m, autopilot, s.lenient, p.warnings);
   const std::vector<NavStep> steps = sequenceMission(m, &p.warnings);
+  if (steps.front().item < 0) p.warnings.push_back(assumedTakeoffNote(m, steps.front(), autopilot));
   FlightSettings fs = s.flight;
   if (s.airframe_from_vehicle) fs.airframe = airframeOfVehicle(v, v.name);
   fs.airframe.wind = s.wind;

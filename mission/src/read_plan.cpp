@@ -175,7 +175,15 @@ void complexItem(const json& it, const std::string& where, PlanItems& out) {
       fail(where, "survey field 'version' = " + std::to_string(version) + " (QGroundControl 3): its items are not stored "
                   "in the file, expected version 4 or 5 (open and save the plan in a current QGroundControl)");
     if (version != 4 && version != 5) fail(where, "survey field 'version' = " + std::to_string(version) + ", expected 4 or 5");
-  } else if (kind != "CorridorScan") {
+  } else if (kind == "CorridorScan") {
+    // CorridorScanComplexItem::load refuses any version but 2 ("CorridorScan complex item version N
+    // not supported"); version 1, of QGroundControl's first corridor scans, stored no items.
+    const long version = integerOf(required(it, "version", where, "a number"), where, "version", 0, 1000);
+    if (version != 2)
+      fail(where, "CorridorScan field 'version' = " + std::to_string(version) + ", expected 2 (QGroundControl's "
+                  "CorridorScanComplexItem::load refuses any other: \"complex item version " + std::to_string(version) +
+                  " not supported\"; open and save the plan in a current QGroundControl)");
+  } else {
     fail(where, "complexItemType \"" + kind + notStored);
   }
   transectItems(it, where, out);

@@ -96,6 +96,28 @@ Row parseRow(const std::string& line, const std::string& where) {
   return r;
 }
 
+/// The warning for a data row `line` (line end removed) that QGroundControl's MissionItem::load
+/// (QTextStream) cannot read: it splits a line on single tabs and needs exactly 12 fields (a space
+/// separator, a trailing or doubled tab fail it, and the whole file with it). Mission Planner
+/// (WaypointFile) splits on tabs and commas, so a space-separated row fails there too. Empty when
+/// QGroundControl reads the line.
+std::string unsplitRow(const std::string& line, const std::string& where) {
+  const auto tabs = static_cast<std::size_t>(std::count(line.begin(), line.end(), '\t'));
+  if (tabs + 1 == 12) return {};
+  bool tabs_only = true;
+  splitFields(line, tabs_only);
+  const std::string read = " (this program reads it; pymavlink splits on any white space), so save the file with one tab "
+                           "between columns and none at the end of a line before loading it in a ground station";
+  if (!tabs_only) {
+    return where + ": columns separated by spaces: QGroundControl and Mission Planner would not read this file "
+           "(QGroundControl's MissionItem::load splits a line on tabs only and needs exactly 12 fields; Mission Planner "
+           "splits on tabs and commas)" + read;
+  }
+  return where + ": " + std::to_string(tabs + 1) + " tab-separated fields" +
+         (!line.empty() && line.back() == '\t' ? std::string(" (a tab at the end of the line)") : std::string()) +
+         ": QGroundControl would not read this file (MissionItem::load splits a line on tabs and needs exactly 12 fields)" + read;
+}
+
 void checkHeader(const std::string& first, const std::string& source) {
   std::istringstream in(first);
   std::vector<std::string> words;
@@ -164,6 +186,7 @@ Mission parseQgcWpl(const std::string& text, const std::string& source, const Re
   int number = 0, row = 0;
   bool home_row = false;
   std::string first_comma;  // the first line read with decimal commas
+  std::string first_unsplit;  // the first row QGroundControl would not split into 12 fields, and why
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -176,7 +199,9 @@ Mission parseQgcWpl(const std::string& text, const std::string& source, const Re
     const std::string where = source + ":" + std::to_string(number);
     addRow(m, parseRow(t, where), row++, home_row, where);
     if (first_comma.empty() && t.find(',') != std::string::npos) first_comma = where;
+    if (first_unsplit.empty()) first_unsplit = unsplitRow(line, where);
   }
+  if (!first_unsplit.empty()) m.warnings.push_back(first_unsplit);
   if (!first_comma.empty()) {
     m.warnings.push_back(first_comma + ": decimal commas read as decimal points (an older Mission Planner in a comma "
                          "locale); QGroundControl reads such a number as 0 and a current Mission Planner splits it into two "

@@ -46,6 +46,9 @@ struct Sequencer {
   // PX4's rule (Navigator's VEHICLE_CMD_DO_CHANGE_SPEED): param2 > 0 is the cruise speed whatever
   // the speed type in param1, anything else returns to the default.
   double speed_xy_px4 = 0.0;
+  // ArduCopter 3.x's rule (Copter::do_change_speed up to 3.6): any speed > 0 is the horizontal speed,
+  // whatever the type; the type check came with ArduPilot PR 9535 (October 2018, in 4.0).
+  double speed_xy_3x = 0.0;
   // ArduCopter 4.1-4.4 (ArduPilot issue 21080): after a take-off or a circle the waypoint controller
   // is idle, and the next wp_start re-initialises it at the default speeds. Of the DO items before
   // that waypoint, AP_Mission runs the first as the previous navigation item completes (before
@@ -124,6 +127,7 @@ struct Sequencer {
                                   " m/s, expected > 0 (or -1 for no change, -2 for the default speed)");
     }
     speed_xy_px4 = v;
+    speed_xy_3x = v;
     if (type == 2) speed_up = v;
     else if (type == 3) speed_down = v;
     else speed_xy = v;
@@ -143,6 +147,7 @@ struct Sequencer {
     if (index >= 0 && index < static_cast<int>(m.items.size())) s.where = m.items[index].where;
     s.speed_xy = speed_xy;
     s.speed_xy_px4 = speed_xy_px4;
+    s.speed_xy_3x = speed_xy_3x;
     s.speed_up = speed_up;
     s.speed_down = speed_down;
     s.speed_xy_41 = speed_xy_41;
@@ -170,6 +175,7 @@ struct Sequencer {
       case Command::NavTakeoff: {
         NavStep s = step(NavStep::Kind::Takeoff, index);
         s.target = {0.0, 0.0, altitudeAboveHome(it, m)};
+        if (hasLatLon(it)) s.takeoff_xy = position(it).head<2>();
         steps.push_back(s);
         return true;
       }
@@ -275,21 +281,22 @@ void groundDelays(Sequencer& q) {
 }
 
 // A mission that does not start with a take-off: a vertical climb to the first item's altitude
-// (10 m when it has none) is put before it, and said.
+// (10 m when it gives none: a landing, a return, an item without an altitude) is put before it, as
+// an added step (item -1) whose alt_given says whether the altitude is the first item's. The note
+// depends on the autopilot, so predictMission gives it (assumedTakeoffNote).
 void assumeTakeoff(Sequencer& q) {
   const NavStep& first = q.steps.front();
-  const bool has_alt = first.has_position || (first.alt_given && first.kind != NavStep::Kind::Delay);
-  const double z = has_alt && first.target.z() > 0.0 ? first.target.z() : 10.0;
+  const bool positioned = first.kind != NavStep::Kind::Delay && first.kind != NavStep::Kind::Land &&
+                          first.kind != NavStep::Kind::ReturnToLaunch;
+  const bool from_item = positioned && (first.has_position || first.alt_given) && first.target.z() > 0.0;
   NavStep t = first;
   t.kind = NavStep::Kind::Takeoff;
-  t.target = {0.0, 0.0, z};
+  t.target = {0.0, 0.0, from_item ? first.target.z() : 10.0};
+  t.alt_given = from_item;
   t.hold_s = 0.0;
   t.item = -1;
   t.where.clear();
   q.steps.insert(q.steps.begin(), t);
-  q.warn(q.m.source + ": no NAV_TAKEOFF first: ArduCopter will not start such a mission on the ground (\"Auto: Missing "
-         "Takeoff Cmd\", ModeAuto::init); the prediction assumes it is started in the air after a vertical climb to " +
-         detail::num(z) + " m" + (has_alt ? " (the first item's altitude)" : ""));
 }
 }  // namespace
 

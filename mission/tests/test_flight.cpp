@@ -748,10 +748,10 @@ TEST(ArduCopterLeash, SpeedIncreaseTakesEffectOneWaypointLateADecreaseAtOnce) {
   const AutopilotConfig ac3 = parseAutopilot(R"({"firmware":"ArduCopter","version":"3.3"})", "test");
   auto steps = sequenceMission(localMission({{200, 0, 10}, {400, 0, 10}, {600, 0, 10}, {800, 0, 10}}));
   ASSERT_EQ(steps.size(), 6u);
-  steps[1].speed_xy = 3.0;  // 3 m/s from the take-off point
-  steps[2].speed_xy = 8.0;  // raised before the second leg: flown at 3 m/s
-  steps[3].speed_xy = 8.0;  // the third leg flies 8 m/s
-  steps[4].speed_xy = 2.0;  // lowered before the fourth leg: 2 m/s at once
+  steps[1].speed_xy = steps[1].speed_xy_3x = 3.0;  // 3 m/s from the take-off point
+  steps[2].speed_xy = steps[2].speed_xy_3x = 8.0;  // raised before the second leg: flown at 3 m/s
+  steps[3].speed_xy = steps[3].speed_xy_3x = 8.0;  // the third leg flies 8 m/s
+  steps[4].speed_xy = steps[4].speed_xy_3x = 2.0;  // lowered before the fourth leg: 2 m/s at once
   const FlownMission f = flyMission(steps, ac3);
   const auto& e = f.events;
   EXPECT_LT(maxSpeedBetween(f, e[1].reached_s, e[2].reached_s), 3.3);
@@ -761,6 +761,51 @@ TEST(ArduCopterLeash, SpeedIncreaseTakesEffectOneWaypointLateADecreaseAtOnce) {
   bool said = false;
   for (const auto& n : f.notes) said = said || n.rfind("1 leg(s) are commanded faster than the leg before", 0) == 0;
   EXPECT_TRUE(said);
+}
+
+// Copter::do_change_speed of 3.2-3.6 reads param2 only: a DO_CHANGE_SPEED of type 2 (climb) sets
+// the horizontal speed, in the mission and in RTL (WPNAV_SPEED overwritten in memory). The type
+// check came with ArduPilot PR 9535 (October 2018): 4.0 leaves the horizontal speed alone, and the
+// prediction says it does not follow the climb speed. Types 2 and 3 had no effect on 3.x before.
+TEST(ArduCopterLeash, ClimbOrDescentSpeedSetsTheHorizontalSpeedBefore40) {
+  Mission m = localMission({{300, 0, 10}}, 0.0, 3.0);
+  m.items[1].param[0] = 2.0;  // DO_CHANGE_SPEED type 2 (climb), 3 m/s
+  for (const char* version : {"3.3", "3.6"}) {
+    const AutopilotConfig ac3 = parseAutopilot(std::string(R"({"firmware":"ArduCopter","version":")") + version + "\"}", "test");
+    const FlownMission f = flyMission(sequenceMission(m), ac3);
+    EXPECT_LT(maxSpeedBetween(f, f.events[1].completed_s, f.events[2].reached_s), 3.1) << version;
+    double rtl = 0.0;
+    for (const auto& s : f.samples)
+      if (s.phase == FlightPhase::Return) rtl = std::max(rtl, s.velocity.head<2>().norm());
+    EXPECT_LT(rtl, 3.1) << version;  // RTL at the speed in memory
+  }
+  const AutopilotConfig ac40 = parseAutopilot(R"({"firmware":"ArduCopter","version":"4.0.7"})", "test");
+  ASSERT_EQ(ac40.family, AutopilotFamily::ArduCopterLeash);
+  const FlownMission f = flyMission(sequenceMission(m), ac40);
+  EXPECT_GT(maxSpeedBetween(f, f.events[1].completed_s, f.events[2].reached_s), 4.5);  // WPNAV_SPEED 5 m/s
+  EXPECT_TRUE(std::any_of(f.notes.begin(), f.notes.end(), [](const std::string& n) {
+    return n.find("a DO_CHANGE_SPEED of type 2 or 3 (climb or descent): ArduCopter 4.0.7 sets WPNAV's climb") != std::string::npos;
+  }));
+}
+
+// predict --json's reached_s of NAV_RETURN_TO_LAUNCH is when the vehicle is over home (before the
+// loiter and the descent) in every model: the S-curve model gave the end of the return climb, 300 m
+// from home, and PX4's the end of RTL_LAND_DELAY.
+TEST(Sequence, TheReturnIsReachedOverHomeInEveryModel) {
+  const Mission m = localMission({{300, 0, 10}});
+  for (const char* ap : {R"({"firmware":"ArduCopter","version":"4.5"})", R"({"firmware":"ArduCopter","version":"3.3"})",
+                         R"({"firmware":"PX4","version":"1.14","parameters":{"RTL_LAND_DELAY":3}})"}) {
+    const AutopilotConfig a = parseAutopilot(ap, "test");
+    const FlownMission f = flyMission(sequenceMission(m), a);
+    const StepEvent& rtl = f.events.back();
+    ASSERT_TRUE(std::isfinite(rtl.reached_s)) << ap;
+    const auto at = std::min_element(f.samples.begin(), f.samples.end(), [&](const FlightSample& x, const FlightSample& y) {
+      return std::abs(x.t - rtl.reached_s) < std::abs(y.t - rtl.reached_s);
+    });
+    EXPECT_LT(at->position.head<2>().norm(), 10.5) << ap;  // within NAV_ACC_RAD (PX4) or WPNAV_RADIUS of home
+    EXPECT_GT(at->position.z(), 5.0) << ap;                 // not yet landed
+    EXPECT_LT(rtl.reached_s, rtl.completed_s - 3.0) << ap;  // the loiter or delay and the descent follow
+  }
 }
 
 // Mean horizontal speed [m/s] of the samples between x0 and x1 [m] east.

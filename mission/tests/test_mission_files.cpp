@@ -76,6 +76,35 @@ TEST(MissionFiles, CorridorScanAndOldCoordinateItemsRead) {
   EXPECT_DOUBLE_EQ(m.plan_cruise_speed_mps, 0.0);  // absent
   EXPECT_EQ(m.items[2].seq, 3);
   EXPECT_FALSE(hasPosition(m.items[3]));  // land in place: lat/lon null
+  // QGroundControl's CorridorScanComplexItem::load refuses any version but 2 (version 1 stored no
+  // items); the version was not checked.
+  for (const char* version : {"1", "3"}) {
+    std::string v = plan;
+    v.replace(v.find("\"CorridorScan\", \"version\": 2"), std::string("\"CorridorScan\", \"version\": 2").size(),
+              std::string("\"CorridorScan\", \"version\": ") + version);
+    const std::string e = errorOf([&] { parseQgcPlan(v, "corridor.plan"); });
+    EXPECT_NE(e.find(std::string("corridor.plan: mission.items[1]: CorridorScan field 'version' = ") + version + ", expected 2"),
+              std::string::npos) << e;
+  }
+}
+
+// A JSON null latitude in a .plan was reported as "latitude = nan": it is "null (unset)", as written.
+TEST(MissionFiles, ANullInAPlanIsNamedNullNotNan) {
+  const std::string plan = R"({"fileType": "Plan", "version": 1, "groundStation": "QGroundControl",
+    "mission": {"version": 2, "firmwareType": 3, "plannedHomePosition": [43.716004, 10.461304, 50],
+      "items": [
+        {"type": "SimpleItem", "command": 22, "frame": 3, "autoContinue": true, "doJumpId": 1, "params": [0, 0, 0, null, null, null, 10]},
+        {"type": "SimpleItem", "command": 16, "frame": 3, "autoContinue": true, "doJumpId": 2, "params": [0, 0, 0, null, null, null, 10]},
+        {"type": "SimpleItem", "command": 20, "frame": 2, "autoContinue": true, "doJumpId": 3, "params": [0, 0, 0, 0, 0, 0, 0]}]},
+    "geoFence": {"version": 2, "circles": [], "polygons": []}, "rallyPoints": {"version": 2, "points": []}})";
+  const std::string e = errorOf([&] { parseQgcPlan(plan, "null.plan"); });
+  EXPECT_NE(e.find("null.plan: mission.items[1]: NAV_WAYPOINT latitude = null (unset), expected a latitude in [-90, 90] deg"),
+            std::string::npos) << e;
+  // A .waypoints "nan" is a number that was written: named so.
+  const std::string w = errorOf([&] {
+    parseQgcWpl("QGC WPL 110\n" + kHome + "1\t0\t3\t16\t0\t0\t0\t0\tnan\t10.46\t10\t1\n", "nan.waypoints");
+  });
+  EXPECT_NE(w.find("nan.waypoints:3: NAV_WAYPOINT latitude = nan"), std::string::npos) << w;
 }
 
 TEST(MissionFiles, PlanDoJumpTargetIsTheDoJumpIdAndBecomesTheSeq) {
@@ -122,7 +151,21 @@ TEST(MissionFiles, WaypointsAcceptSpacesCommentsBlankLinesAndCrLf) {
   const Mission m = parseQgcWpl(text, "h.waypoints");
   ASSERT_EQ(m.items.size(), 2u);
   EXPECT_EQ(m.items[1].where, "h.waypoints:6");
-  EXPECT_TRUE(m.warnings.empty());
+  // Read as pymavlink reads them, but QGroundControl's MissionItem::load(QTextStream) splits on tabs
+  // only and needs 12 fields, and Mission Planner splits on tabs and commas: said (it was silent).
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("h.waypoints:4: columns separated by spaces: QGroundControl and Mission Planner would not read "
+                               "this file"),
+            std::string::npos) << m.warnings[0];
+  // A tab at the end of a row makes 13 fields for QGroundControl.
+  const Mission trailing = parseQgcWpl("QGC WPL 110\n" + kHome + kTakeoff.substr(0, kTakeoff.size() - 1) + "\t\n", "t.waypoints");
+  ASSERT_EQ(trailing.items.size(), 1u);
+  ASSERT_EQ(trailing.warnings.size(), 1u);
+  EXPECT_NE(trailing.warnings[0].find("t.waypoints:3: 13 tab-separated fields (a tab at the end of the line): QGroundControl "
+                                      "would not read this file"),
+            std::string::npos) << trailing.warnings[0];
+  // Tab-separated rows, as the ground stations write them: nothing to say.
+  EXPECT_TRUE(parseQgcWpl("QGC WPL 110\r\n" + kHome + kTakeoff, "ok.waypoints").warnings.empty());
 }
 
 TEST(MissionFiles, HomeRowVariants) {
@@ -136,6 +179,19 @@ TEST(MissionFiles, HomeRowVariants) {
   m = parseQgcWpl("QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t0\t0\t0\t1\n" + kTakeoff, "zero.waypoints");
   EXPECT_FALSE(m.home_known);
   EXPECT_DOUBLE_EQ(m.home.lat_deg, 43.716004);
+  // The warning says how to give the real home: predict's --launch (it said nothing of it); not
+  // when the launch point is given.
+  const auto says_launch = [](const Mission& x) {
+    return std::any_of(x.warnings.begin(), x.warnings.end(), [](const std::string& w) {
+      return w.find("zero.waypoints: no home position; the first position (zero.waypoints:3) is used as home, at altitude 0 m: "
+                    "the autopilot sets home where the vehicle arms, so give that point with predict --launch LAT,LON") !=
+             std::string::npos;
+    });
+  };
+  EXPECT_TRUE(says_launch(m));
+  ReadOptions launched;
+  launched.distances_from = wattswath::geometry::GeoPoint{43.716, 10.461, 0.0};
+  EXPECT_FALSE(says_launch(parseQgcWpl("QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t0\t0\t0\t1\n" + kTakeoff, "zero.waypoints", launched)));
   // No home row (Mission Planner: a first row numbered 1): every row is an item.
   m = parseQgcWpl("QGC WPL 110\n" + kTakeoff + "2\t0\t3\t16\t0\t0\t0\t0\t43.7161\t10.4614\t10\t1\n", "nohome.waypoints");
   EXPECT_FALSE(m.home_known);

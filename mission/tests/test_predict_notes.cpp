@@ -294,3 +294,174 @@ TEST(PredictNotes, AMissionLongerThanPx4KeepsIsSaid) {
   wps.pop_back();
   EXPECT_EQ(notesOf(localMission(wps), px4()).find("items: PX4"), std::string::npos);
 }
+
+// The verdict's first words follow fits / fits_with_margin: a landing below the reserve began
+// "Fits, but lands with 24.6 % ..." while the JSON said fits: false (the reviewer's jr2.waypoints
+// on the 1.3 Ah IRIS). It now says it does not fit, and gives the charge with the margin too.
+TEST(PredictNotes, AVerdictBelowTheReserveSaysItDoesNotFitAndGivesTheMarginFigure) {
+  const wattswath::energy::Vehicle v =
+      wattswath::energy::loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/tests/data/iris-small-battery.json");
+  const wattswath::energy::EnergyModel model = wattswath::energy::buildModel(v, {"hover", "kinetic"});
+  const Mission m = parseQgcWpl(kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n2\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.461304\t10\t1\n"
+                                           "3\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.462547\t10\t1\n4\t0\t3\t20\t0\t0\t0\t0\t0\t0\t0\t1\n",
+                                "jr.waypoints");
+  PredictSettings s;
+  const double left = predictMission(m, v, model, AutopilotConfig{}, s).battery.usable_left_end;
+  s.reserve_fraction = std::min(0.9, left + 0.05);  // 5 points more than it lands with
+  const BatteryPrediction b = predictMission(m, v, model, AutopilotConfig{}, s).battery;
+  ASSERT_FALSE(b.fits);
+  ASSERT_FALSE(b.depleted);
+  EXPECT_EQ(b.verdict.rfind("Does not fit the reserve: lands with ", 0), 0u) << b.verdict;
+  EXPECT_NE(b.verdict.find("; with 10 % more energy (the prediction's error margin, --energy-margin) "), std::string::npos)
+      << b.verdict;
+  EXPECT_EQ(b.verdict.find("Fits"), std::string::npos) << b.verdict;
+  s.energy_margin = 0.0;
+  const BatteryPrediction none = predictMission(m, v, model, AutopilotConfig{}, s).battery;
+  EXPECT_EQ(none.verdict.rfind("Does not fit the reserve: ", 0), 0u) << none.verdict;
+  EXPECT_EQ(none.verdict.find("more energy"), std::string::npos) << none.verdict;
+}
+
+// A waypoint below home's height was flown underground without a word (the reviewer's
+// below.waypoints: samples at z = -30 m, "Fits"), and one 530 m up (frame 0 with home at 0 m) got
+// no note. Below home is an error naming the item and its height (PX4's FeasibilityChecker::
+// checkIfBelowHomeAltitude warns "Waypoint N below home"), a note with --lenient; more than 120 m
+// above home is noted.
+TEST(PredictNotes, AWaypointBelowHomeIsAnErrorOrWithLenientANoteAndOneHighUpIsNoted) {
+  const std::string route = "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n2\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.461304\t-5\t1\n"
+                            "3\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const Mission below = parseQgcWpl(kWplHome + route, "below.waypoints");
+  for (const AutopilotConfig& ap : {AutopilotConfig{}, px4()}) {
+    try {
+      irisPrediction(below, ap);
+      ADD_FAILURE() << "a waypoint below home was flown";
+    } catch (const MissionError& e) {
+      EXPECT_NE(std::string(e.what()).find("below.waypoints:4: NAV_WAYPOINT at -5 m above home (altitude -5 m in MAV_FRAME 3), "
+                                           "expected at or above home's height"),
+                std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("--lenient"), std::string::npos) << e.what();
+    }
+  }
+  const wattswath::energy::Vehicle v =
+      wattswath::energy::loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json");
+  PredictSettings lenient;
+  lenient.lenient = true;
+  const MissionPrediction p = predictMission(below, v, wattswath::energy::buildModel(v, {"hover", "kinetic"}), {}, lenient);
+  EXPECT_NE(joined(p.warnings).find("below.waypoints:4: NAV_WAYPOINT at -5 m above home"), std::string::npos) << joined(p.warnings);
+  EXPECT_NE(joined(p.warnings).find("predicted as written (--lenient)"), std::string::npos);
+  // Absolute (frame 0) altitudes count from home's: 40 m above sea level with home at 7.15 m is 32.85 m up.
+  const std::string absolute = "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n2\t0\t0\t16\t0\t0\t0\t0\t43.716904\t10.461304\t5\t1\n"
+                               "3\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  EXPECT_THROW(predictText(kWplHome + absolute, "amsl.waypoints"), MissionError);
+  // 530 m above sea level with home at 7.15 m: noted, not refused.
+  const std::string high = "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n2\t0\t0\t16\t0\t0\t0\t0\t43.716904\t10.461304\t530\t1\n"
+                           "3\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const std::string notes = joined(predictText(kWplHome + high, "high.waypoints").warnings);
+  EXPECT_NE(notes.find("high.waypoints:4: NAV_WAYPOINT at 522.85 m above home (altitude 530 m in MAV_FRAME 0, home at 7.15 m): "
+                       "1 item(s) more than 120 m above home, up to 523 m"),
+            std::string::npos) << notes;
+  EXPECT_EQ(joined(predictText(kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n"
+                               "2\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.461304\t119\t1\n3\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n",
+                               "ok.waypoints").warnings).find("above home, up to"),
+            std::string::npos);
+}
+
+// An altitude of 0 is the previous target's for ArduPilot (ModeAuto::loc_from_cmd, noted in the
+// flight); PX4 takes it as written and flies down to home's height, which its FeasibilityChecker
+// does not flag (not below home): noted for a PX4 vehicle, and flown so.
+TEST(PredictNotes, AnAltitudeOfZeroIsFlownDownToHomeByPx4AndSaid) {
+  const std::string text = kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t20\t1\n2\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.461304\t20\t1\n"
+                           "3\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.462547\t0\t1\n4\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const MissionPrediction p = predictText(text, "alt0.waypoints", px4());
+  EXPECT_NE(joined(p.warnings).find("alt0.waypoints:5: NAV_WAYPOINT at altitude 0 above home: PX4 flies to it as written, down "
+                                    "to home's height"),
+            std::string::npos) << joined(p.warnings);
+  const MissionPrediction a = predictText(text, "alt0.waypoints");
+  EXPECT_EQ(joined(a.warnings).find("PX4 flies to it as written"), std::string::npos);
+  EXPECT_NE(joined(a.warnings).find("altitude 0 is the previous target's for ArduPilot (20 m)"), std::string::npos) << joined(a.warnings);
+}
+
+// PX4's upload (MavlinkMissionManager::parse_mavlink_mission_item) takes a position only in frames
+// 0/3 (5/6 in an INT upload) and a command without one only in MAV_FRAME_MISSION (2); anything else
+// is answered MAV_MISSION_UNSUPPORTED(_FRAME) and nothing is kept. A PX4 vehicle's prediction
+// refuses such a mission naming the item and its frame (a note with --lenient); ArduCopter's flies it.
+TEST(PredictNotes, APx4VehicleRefusesItemsInFramesPx4DoesNotTakeThem) {
+  const std::string speed_in_3 = kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n2\t0\t3\t178\t1\t3\t-1\t0\t0\t0\t0\t1\n"
+                                 "3\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.461304\t10\t1\n4\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const std::string terrain = kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t10\t1\n2\t0\t10\t16\t0\t0\t0\t0\t43.716904\t10.461304\t10\t1\n"
+                              "3\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const auto refusal = [&](const std::string& text, const std::string& name) {
+    try {
+      predictText(text, name, px4());
+    } catch (const MissionError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string speed = refusal(speed_in_3, "speed.waypoints");
+  EXPECT_NE(speed.find("speed.waypoints:4: DO_CHANGE_SPEED in MAV_FRAME 3: PX4 refuses the upload (parse_mavlink_mission_item "
+                       "answers MAV_MISSION_UNSUPPORTED): it takes a command without a position only in MAV_FRAME_MISSION (2)"),
+            std::string::npos) << speed;
+  EXPECT_NE(speed.find("--lenient"), std::string::npos) << speed;
+  const std::string ground = refusal(terrain, "terrain.waypoints");
+  EXPECT_NE(ground.find("terrain.waypoints:4: NAV_WAYPOINT in MAV_FRAME 10: PX4 refuses the upload"), std::string::npos) << ground;
+  EXPECT_NE(ground.find("MAV_MISSION_UNSUPPORTED_FRAME"), std::string::npos) << ground;
+  // ArduCopter takes both; the RTL in frame 3, as Mission Planner writes it, too.
+  EXPECT_NO_THROW(predictText(speed_in_3, "speed.waypoints"));
+  EXPECT_NO_THROW(predictText(terrain, "terrain.waypoints"));
+  // --lenient: predicted as if accepted, with the note.
+  const wattswath::energy::Vehicle v =
+      wattswath::energy::loadVehicle(std::string(WATTSWATH_SOURCE_DIR) + "/data/vehicles/iris.json");
+  PredictSettings lenient;
+  lenient.lenient = true;
+  const MissionPrediction p =
+      predictMission(parseQgcWpl(speed_in_3, "speed.waypoints"), v, wattswath::energy::buildModel(v, {"hover", "kinetic"}), px4(), lenient);
+  EXPECT_NE(joined(p.warnings).find("speed.waypoints:4: DO_CHANGE_SPEED in MAV_FRAME 3: PX4 refuses the upload"), std::string::npos);
+  EXPECT_NE(joined(p.warnings).find("predicted as if accepted (--lenient)"), std::string::npos);
+}
+
+// PX4 turns the take-off item into a waypoint after the climb (Mission::set_mission_items: "navigate
+// to the actual waypoint now"), so a take-off 100 m north of home is flown to; the model climbed in
+// place and a prediction with it there equalled one with it at home. ArduCopter climbs where it is
+// (ModeAuto::takeoff_start takes the altitude only), so its predictions stay equal.
+TEST(PredictNotes, Px4FliesToTheTakeOffItemsPositionAfterTheClimbAndArduCopterDoesNot) {
+  const auto text = [](const char* lat) {
+    return kWplHome + "1\t0\t3\t22\t0\t0\t0\t0\t" + lat + "\t10.4613040\t10\t1\n2\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.462547\t10\t1\n"
+           "3\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  };
+  const std::string at_home = text("43.7160040"), north = text("43.716904");  // 100 m north
+  const MissionPrediction px4_home = predictText(at_home, "home.waypoints", px4());
+  const MissionPrediction px4_north = predictText(north, "north.waypoints", px4());
+  EXPECT_GT(px4_north.total.distance_m - px4_home.total.distance_m, 30.0);
+  // After the climb the vehicle reaches the take-off's position (within NAV_ACC_RAD) before item 2.
+  const ItemPrediction& takeoff = px4_north.items[0];
+  bool over = false;
+  for (const FlightSample& s : px4_north.flight.samples)
+    if (s.step == 0 && s.t <= takeoff.reached_s + 1e-9) over = over || s.position.y() > 85.0;
+  EXPECT_TRUE(over);
+  const MissionPrediction ac_home = predictText(at_home, "home.waypoints"), ac_north = predictText(north, "north.waypoints");
+  EXPECT_NEAR(ac_north.total.energy_j, ac_home.total.energy_j, 1e-6);
+  EXPECT_NEAR(ac_north.total.time_s, ac_home.total.time_s, 1e-9);
+}
+
+// Without a take-off item ArduCopter refuses to start on the ground, PX4 takes off vertically to
+// the first item's altitude (Mission::do_need_vertical_takeoff): the note follows the autopilot (it
+// said ArduCopter's rule for a PX4 vehicle). A first item that gives no altitude (a landing at 0 m)
+// climbs to 10 m, said as a default (it said "the first item's altitude").
+TEST(PredictNotes, TheAssumedTakeOffNoteFollowsTheAutopilotAndSaysWhenItsHeightIsADefault) {
+  const std::string waypoint_first = kWplHome + "1\t0\t3\t16\t0\t0\t0\t0\t43.716904\t10.461304\t15\t1\n2\t0\t2\t20\t0\t0\t0\t0\t0\t0\t0\t1\n";
+  const std::string on_px4 = joined(predictText(waypoint_first, "wp.waypoints", px4()).warnings);
+  EXPECT_NE(on_px4.find("wp.waypoints: no NAV_TAKEOFF first: PX4 starts such a mission on the ground with a vertical take-off "
+                        "to the first item's altitude"),
+            std::string::npos) << on_px4;
+  EXPECT_NE(on_px4.find("MIS_TKO_LAND_REQ"), std::string::npos);
+  EXPECT_NE(on_px4.find("a vertical climb to 15 m (the first item's altitude)"), std::string::npos) << on_px4;
+  EXPECT_EQ(on_px4.find("Missing Takeoff Cmd"), std::string::npos) << on_px4;
+  const std::string on_ac = joined(predictText(waypoint_first, "wp.waypoints").warnings);
+  EXPECT_NE(on_ac.find("\"Auto: Missing Takeoff Cmd\""), std::string::npos) << on_ac;
+  const MissionPrediction land = predictText(kWplHome + "1\t0\t3\t21\t0\t0\t0\t0\t0\t0\t0\t1\n", "land_first.waypoints");
+  EXPECT_DOUBLE_EQ(land.flight.steps.front().target.z(), 10.0);
+  const std::string notes = joined(land.warnings);
+  EXPECT_NE(notes.find("a vertical climb to 10 m (a default: the first item gives no altitude to climb to)"), std::string::npos)
+      << notes;
+  EXPECT_EQ(notes.find("(the first item's altitude)"), std::string::npos) << notes;
+}

@@ -7,6 +7,7 @@
 /// integrate. docs/autopilots.md states what each model follows and leaves out.
 
 #include <optional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct NavStep {
   /// [m/s] horizontal speed in force by PX4's rule, where every DO_CHANGE_SPEED sets it whatever
   /// its speed type and -1 returns to the default (ArduPilot: no change); 0: default
   double speed_xy_px4 = 0.0;
+  /// [m/s] horizontal speed in force by ArduCopter 3.x's rule (Copter::do_change_speed of 3.2-3.6
+  /// reads param2 only: a climb or descent speed, type 2 or 3, sets the horizontal speed too); 0: default
+  double speed_xy_3x = 0.0;
   double speed_up = 0.0;                                   ///< [m/s] climb speed in force (0: default)
   double speed_down = 0.0;                                 ///< [m/s] descent speed in force (0: default)
   /// [m/s] horizontal speed in force (0: default) as ArduCopter 4.1-4.4 has it: the first waypoint
@@ -50,6 +54,10 @@ struct NavStep {
   double speed_up_41 = 0.0;    ///< [m/s] climb speed in force by the same 4.1-4.4 rule (0: default)
   double speed_down_41 = 0.0;  ///< [m/s] descent speed in force by the same 4.1-4.4 rule (0: default)
   double accept_radius_m = 0.0;                            ///< [m] item acceptance radius (0: default)
+  /// [m] Takeoff: the item's horizontal position (ENU east, north), which PX4 flies to after the
+  /// climb (Mission::set_mission_items: "navigate to the actual waypoint now"); ArduCopter climbs in
+  /// place and ignores it (ModeAuto::takeoff_start). NaN when the item gives none (lat/lon 0 or unset)
+  Eigen::Vector2d takeoff_xy = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
   /// LoiterTurns: the number of turns and the radius [m] as ArduPilot keeps them (whole numbers),
   /// circled clockwise seen from above unless `loiter_ccw`; `target` is the centre
   double loiter_turns = 0.0;

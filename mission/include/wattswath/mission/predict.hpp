@@ -29,6 +29,9 @@ struct PredictSettings {
   /// ArduCopter models fly against the drag at air speed; the energy model's drag is taken at air
   /// speed (its parasitic_drag becomes the wind effect with the same drag area)
   Eigen::Vector2d wind = Eigen::Vector2d::Zero();
+  /// true (predict --lenient): an item PX4 or ArduPilot would not fly as predicted (below home,
+  /// a frame PX4 refuses) is a warning in MissionPrediction::warnings instead of a MissionError
+  bool lenient = false;
 };
 
 /// The airframe of vehicle `v`: its file's `extensions.airframe` object ({"drag_linear_per_s",
@@ -50,7 +53,7 @@ struct ItemPrediction {
   int item = -1;             ///< index into Mission::items (-1: added by the model, e.g. a take-off)
   int seq = -1;              ///< the item's number in the file (-1 when added)
   std::string command;       ///< MAVLink command name
-  double reached_s = 0.0;    ///< [s] since the take-off command, when the autopilot declares it reached
+  double reached_s = 0.0;    ///< [s] since the take-off command, when the autopilot declares it reached (RTL: over home, before its loiter and descent)
   double completed_s = 0.0;  ///< [s] when it moves on (after any hold)
   Totals totals;             ///< energy, time and distance flown while this step was active
 };
