@@ -729,5 +729,7 @@ TEST(CliPredict, TheTextOutputHasAnItemTableOfAtMostSixtyRows) {
                          sourcePath("tests/data/iris-small-battery.json") + " --json");
   const std::string verdict = j["battery"]["verdict"].get<std::string>();
   EXPECT_NE(s.output.find("battery: " + verdict), std::string::npos) << s.output;
-  if (!j["battery"]["fits"].get<bool>()) EXPECT_EQ(verdict.rfind("Does not fit", 0), 0u) << verdict;
+  if (!j["battery"]["fits"].get<bool>()) {
+    EXPECT_EQ(verdict.rfind("Does not fit", 0), 0u) << verdict;
+  }
 }
