@@ -2,6 +2,7 @@
 #include "log_inputs.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -69,14 +70,21 @@ std::vector<calibration::PreparedLog> readCheckedLogs(const std::vector<std::str
 }
 
 void checkDistinctLogs(const std::vector<std::string>& paths, std::size_t test_from) {
-  std::vector<std::string> bytes;
-  for (const auto& p : paths) {
+  namespace fs = std::filesystem;
+  // Only files of one size are read and compared: the logs are read again for use right after.
+  const auto bytesOf = [](const std::string& p) {
     std::ifstream in(p, std::ios::binary);
-    bytes.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  std::vector<std::uintmax_t> size;
+  for (const auto& p : paths) {
+    std::error_code ec;
+    size.push_back(fs::file_size(p, ec));
+    if (ec) size.back() = static_cast<std::uintmax_t>(-1);  // unreadable: the reader names it
   }
   for (std::size_t a = 0; a < paths.size(); ++a) {
     for (std::size_t b = a + 1; b < paths.size(); ++b) {
-      if (bytes[a] != bytes[b]) continue;
+      if (size[a] != size[b] || size[a] == static_cast<std::uintmax_t>(-1) || bytesOf(paths[a]) != bytesOf(paths[b])) continue;
       const bool test = b >= test_from && a < test_from;
       throw std::runtime_error(paths[a] + " and " + paths[b] + " are the same file" +
                                (paths[a] == paths[b] ? "" : " (identical bytes)") + ": " +

@@ -230,6 +230,29 @@ TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValues) {
   std::remove(out.c_str());
 }
 
+// An energy coefficient that stops at its bound (the October flight alone: effective mass and drag
+// area at 0) gets calibrate's note with what to do, once: the fit's own "not determined" note for
+// it is not repeated.
+TEST(CliPredict, ACoefficientAtItsBoundGetsCalibratesAdviceOnce) {
+  const std::string f = "2017-10-18_1436_energy14";
+  const std::string out = tempPath("calibrated_1436.json");
+  std::remove(out.c_str());
+  const json c = runJson("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " +
+                         sharedData("iris-flights/" + f + ".csv") + " --mission " +
+                         sharedData("iris-flights/mission__" + f + ".waypoints") + " --out " + out + " --json");
+  int advice = 0;
+  for (const auto& n : c["notes"]) {
+    const std::string t = n.get<std::string>();
+    if (t.find("kinetic.effective_mass stopped at its bound") != std::string::npos &&
+        t.find("the vehicle file stores the bound") != std::string::npos)
+      ++advice;
+    EXPECT_EQ(t.find("stopped at its physical bound"), std::string::npos) << t;
+  }
+  EXPECT_EQ(advice, 1) << c["notes"].dump();
+  EXPECT_TRUE(c["held_out"].is_null());  // one flight
+  std::remove(out.c_str());
+}
+
 // On the IRIS+ November flight alone, POS_XY_P's fitted value lowers the time misfit by 9 % of it:
 // more than the 1 % share, but not significantly by the F-test of the two fits (F 2.1 against 4.3
 // at 95 %), so it keeps its 3.2 default and the note says why.

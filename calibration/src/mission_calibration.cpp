@@ -456,15 +456,13 @@ void fitEnergy(const std::vector<MissionFlight>& flights, const energy::EnergyMo
   r.model = fit.model;
   for (const auto& c : fit.coefficients) {
     std::string line = c.effect + "." + c.name + ": " + num(c.value, 4) + " " + c.unit;
-    if (!c.determined) {
+    if (!c.determined) {  // fitModel marks one at its bound not determined
       line += " (not determined: " + (c.why_not_determined.empty() ? std::string("kept") : c.why_not_determined) + ")";
-    } else if (c.at_bound) {
-      line += " (at its bound)";
     } else if (std::isfinite(c.sigma)) {
       line += " +- " + num(c.sigma, 2);
     }
     r.fitted.push_back(line);
-    if (c.at_bound && c.determined) {
+    if (c.at_bound) {
       r.notes.push_back(c.effect + "." + c.name + " stopped at its bound (" + num(c.value) + " " + c.unit +
                         "): these logs fit best beyond what the effect allows, so its value is not a measurement of the "
                         "vehicle; the vehicle file stores the bound (refit with more varied flights, or leave the effect "
@@ -473,7 +471,8 @@ void fitEnergy(const std::vector<MissionFlight>& flights, const energy::EnergyMo
   }
   // The fit's own findings: what the data do not determine and why, correlated pairs.
   for (const auto& n : fit.notes) {
-    if (n.find("stopped at a bound") != std::string::npos) continue;  // said above, with what it means
+    // Said above, with what it means.
+    if (n.find("stopped at a bound") != std::string::npos || n.find("stopped at its physical bound") != std::string::npos) continue;
     if (std::find(r.notes.begin(), r.notes.end(), n) == r.notes.end()) r.notes.push_back(n);
   }
 }
