@@ -233,13 +233,19 @@ TEST(CliPredict, CalibratingOnSitlFlightsKeepsTheLoggedValues) {
 // An energy coefficient that stops at its bound (the October flight alone: effective mass and drag
 // area at 0) gets calibrate's note with what to do, once: the fit's own "not determined" note for
 // it is not repeated.
-TEST(CliPredict, ACoefficientAtItsBoundGetsCalibratesAdviceOnce) {
-  const std::string f = "2017-10-18_1436_energy14";
-  const std::string out = tempPath("calibrated_1436.json");
+// `calibrate --json` of the IRIS+ flight `f` alone (with `extra` options), written to a temporary file.
+json calibrateIrisFlight(const std::string& f, const std::string& extra) {
+  const std::string out = tempPath("calibrated_" + f + ".json");
   std::remove(out.c_str());
   const json c = runJson("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " +
                          sharedData("iris-flights/" + f + ".csv") + " --mission " +
-                         sharedData("iris-flights/mission__" + f + ".waypoints") + " --out " + out + " --json");
+                         sharedData("iris-flights/mission__" + f + ".waypoints") + " --out " + out + extra + " --json");
+  std::remove(out.c_str());
+  return c;
+}
+
+TEST(CliPredict, ACoefficientAtItsBoundGetsCalibratesAdviceOnce) {
+  const json c = calibrateIrisFlight("2017-10-18_1436_energy14", "");
   int advice = 0;
   for (const auto& n : c["notes"]) {
     const std::string t = n.get<std::string>();
@@ -250,19 +256,13 @@ TEST(CliPredict, ACoefficientAtItsBoundGetsCalibratesAdviceOnce) {
   }
   EXPECT_EQ(advice, 1) << c["notes"].dump();
   EXPECT_TRUE(c["held_out"].is_null());  // one flight
-  std::remove(out.c_str());
 }
 
 // On the IRIS+ November flight alone, POS_XY_P's fitted value lowers the time misfit by 9 % of it:
 // more than the 1 % share, but not significantly by the F-test of the two fits (F 2.1 against 4.3
 // at 95 %), so it keeps its 3.2 default and the note says why.
 TEST(CliPredict, ACalibrationKeepsAStartTheFlightsDoNotSignificantlyImproveOn) {
-  const std::string f = "2017-11-20_1610_energy14";
-  const std::string out = tempPath("calibrated_1610.json");
-  std::remove(out.c_str());
-  const json c = runJson("calibrate --vehicle " + sourcePath("data/vehicles/iris-plus-arducopter3.json") + " --log " +
-                         sharedData("iris-flights/" + f + ".csv") + " --mission " +
-                         sharedData("iris-flights/mission__" + f + ".waypoints") + " --out " + out + " --keep-energy --json");
+  const json c = calibrateIrisFlight("2017-11-20_1610_energy14", " --keep-energy");
   const auto kept = c["kept_at_start"].get<std::vector<std::string>>();
   EXPECT_NE(std::find(kept.begin(), kept.end(), "POS_XY_P"), kept.end()) << c["notes"].dump();
   bool said = false;
@@ -271,7 +271,6 @@ TEST(CliPredict, ACalibrationKeepsAStartTheFlightsDoNotSignificantlyImproveOn) {
     said = said || (t.rfind("POS_XY_P kept", 0) == 0 && t.find("not significantly (F = ") != std::string::npos);
   }
   EXPECT_TRUE(said) << c["notes"].dump();
-  std::remove(out.c_str());
 }
 
 TEST(CliPredict, CalibrationIsWrittenReadBackAndComparedLegByLeg) {
